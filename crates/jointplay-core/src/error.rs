@@ -1,0 +1,160 @@
+//! Error types of the core: problems found while compiling a model
+//! description ([`ModelErrors`]) and failures during a simulation
+//! ([`SimulationError`]).
+
+use std::fmt;
+
+/// One problem in a model description, located by a path such as
+/// `joints[2].bearing`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelError {
+    /// Where the problem is (`joints[2].clearance`, `bodies[0].mass`).
+    pub location: String,
+    /// What is wrong, naming the offending value.
+    pub message: String,
+}
+
+impl fmt::Display for ModelError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.location, self.message)
+    }
+}
+
+/// Every problem found in a model description, one entry per problem.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ModelErrors(pub Vec<ModelError>);
+
+impl ModelErrors {
+    /// Records one problem at `location`.
+    pub fn push(&mut self, location: impl Into<String>, message: impl Into<String>) {
+        self.0.push(ModelError { location: location.into(), message: message.into() });
+    }
+
+    /// True when no problem was recorded.
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+
+    /// `Ok(value)` when no problem was recorded, otherwise the problems.
+    pub fn into_result<T>(self, value: T) -> Result<T, ModelErrors> {
+        if self.is_empty() { Ok(value) } else { Err(self) }
+    }
+}
+
+impl fmt::Display for ModelErrors {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (k, e) in self.0.iter().enumerate() {
+            if k > 0 {
+                writeln!(f)?;
+            }
+            write!(f, "{e}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ModelErrors {}
+
+/// Why a simulation stopped early. Every variant names the time [s]; those
+/// raised by an element name it too.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SimulationError {
+    /// The step size controller asked for a step below the smallest allowed.
+    #[error("step size {step:.3e} s fell below the minimum at t = {time:.6e} s{}", element_hint(element))]
+    StepSizeUnderflow {
+        /// Time reached [s].
+        time: f64,
+        /// Step size that was refused [s].
+        step: f64,
+        /// Element most likely responsible (for example the clearance joint with the deepest penetration), if known.
+        element: Option<String>,
+    },
+    /// More steps than allowed were taken.
+    #[error("maximum number of steps ({max_steps}) reached at t = {time:.6e} s")]
+    TooManySteps {
+        /// Time reached [s].
+        time: f64,
+        /// The limit that was hit.
+        max_steps: usize,
+    },
+    /// A quantity became NaN or infinite.
+    #[error("non-finite value in {element} at t = {time:.6e} s")]
+    NonFinite {
+        /// Time [s].
+        time: f64,
+        /// Element whose output was not finite (or `state` when the state itself was).
+        element: String,
+    },
+    /// The constraint Jacobian lost rank: a locked or singular configuration.
+    #[error("singular constraint Jacobian at t = {time:.6e} s near {element}: {cause}")]
+    SingularConfiguration {
+        /// Time [s].
+        time: f64,
+        /// Constraint (joint or driver) where the rank was lost.
+        element: String,
+        /// Explanation.
+        cause: String,
+    },
+    /// Newton iteration on the constraints did not converge.
+    #[error("constraints could not be satisfied at t = {time:.6e} s (residual {residual:.3e} in {element})")]
+    ConstraintViolation {
+        /// Time [s].
+        time: f64,
+        /// Constraint with the largest residual.
+        element: String,
+        /// Largest residual after the iteration [m or rad].
+        residual: f64,
+    },
+    /// A contact penetrated further than the sanity bound allows.
+    #[error("penetration {penetration:.3e} m in {element} at t = {time:.6e} s exceeds the bound {bound:.3e} m; the contact is too soft or the step too large")]
+    ExcessivePenetration {
+        /// Time [s].
+        time: f64,
+        /// Clearance joint.
+        element: String,
+        /// Penetration depth [m].
+        penetration: f64,
+        /// The bound [m].
+        bound: f64,
+    },
+    /// The run was interrupted from outside (for example Ctrl-C).
+    #[error("interrupted at t = {time:.6e} s")]
+    Interrupted {
+        /// Time reached [s].
+        time: f64,
+    },
+}
+
+fn element_hint(element: &Option<String>) -> String {
+    match element {
+        Some(name) => format!(" (likely cause: {name})"),
+        None => String::new(),
+    }
+}
+
+impl SimulationError {
+    /// Time at which the simulation stopped [s].
+    pub fn time(&self) -> f64 {
+        match self {
+            Self::StepSizeUnderflow { time, .. }
+            | Self::TooManySteps { time, .. }
+            | Self::NonFinite { time, .. }
+            | Self::SingularConfiguration { time, .. }
+            | Self::ConstraintViolation { time, .. }
+            | Self::ExcessivePenetration { time, .. }
+            | Self::Interrupted { time } => *time,
+        }
+    }
+
+    /// Element named by the error, if any.
+    pub fn element(&self) -> Option<&str> {
+        match self {
+            Self::StepSizeUnderflow { element, .. } => element.as_deref(),
+            Self::NonFinite { element, .. }
+            | Self::SingularConfiguration { element, .. }
+            | Self::ConstraintViolation { element, .. }
+            | Self::ExcessivePenetration { element, .. } => Some(element),
+            Self::TooManySteps { .. } | Self::Interrupted { .. } => None,
+        }
+    }
+}

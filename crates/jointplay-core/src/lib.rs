@@ -1,0 +1,37 @@
+//! # jointplay-core
+//!
+//! The numerical core of jointplay: planar mechanisms with ideal joints,
+//! dry revolute clearance joints, drivers and force elements, integrated by
+//! adaptive Runge-Kutta or Adams predictor-corrector methods with contact
+//! events.
+//!
+//! The folders read as a table of contents of the physics:
+//!
+//! - [`contact`]: normal contact force laws and contact stiffness laws;
+//! - [`friction`]: tangential friction laws;
+//! - [`motion`]: prescribed functions of time for drivers and loads;
+//! - [`joint`]: ideal joints as constraints, the clearance revolute joint as a force element;
+//! - [`force`]: springs, dampers, applied loads, gravity;
+//! - [`dynamics`]: model, state, workspace, equations of motion, assembly, projection;
+//! - [`integrate`]: time integrators with dense output and event location;
+//! - [`linalg`]: the small dense factorisations the hot loop uses without allocating;
+//! - [`spec`]: the plain-data model description that the front ends produce.
+//!
+//! Data flows one way: a [`spec::ModelSpec`] is compiled into an immutable
+//! [`dynamics::Model`]; [`dynamics::simulate`] advances a
+//! [`dynamics::State`] with a reusable [`dynamics::Workspace`] and returns a
+//! [`dynamics::Trajectory`] of named channels in SI units.
+#![warn(missing_docs)]
+
+pub mod contact;
+pub mod dynamics;
+pub mod error;
+pub mod force;
+pub mod friction;
+pub mod integrate;
+pub mod joint;
+pub mod linalg;
+pub mod motion;
+pub mod spec;
+
+pub use error::{ModelError, ModelErrors, SimulationError};
