@@ -1,1 +1,31 @@
-//! (module under construction)
+//! Multibody dynamics in absolute coordinates: the compiled [`Model`]
+//! (constant), the [`State`] (coordinates, velocities, contact memory), the
+//! [`Workspace`] (scratch reused every evaluation), the equations of motion,
+//! assembly of consistent initial conditions, drift projection, and the
+//! simulation loop that produces a [`Trajectory`].
+
+mod assembly;
+mod channels;
+mod compile;
+mod equations;
+pub mod frame;
+mod model;
+mod progress;
+mod projection;
+mod simulate;
+mod state;
+mod system;
+mod workspace;
+
+pub use assembly::assemble;
+pub use channels::{ChannelInfo, Trajectory};
+pub use compile::compile;
+pub use equations::{accelerations, update_frames, Stabilization};
+pub use model::{Body, ElementKind, IdealElement, Model};
+pub use progress::Progress;
+pub use simulate::{simulate, Diagnostics, SimulationOptions, SimulationOutcome};
+pub use state::{ContactMemory, State};
+pub use workspace::Workspace;
+
+#[cfg(test)]
+mod tests;

@@ -1,1 +1,15 @@
-//! (module under construction)
+//! Small dense linear algebra used inside the right-hand side.
+//!
+//! The systems solved per evaluation are tiny (the constraint count of a
+//! planar mechanism, typically below 50), change every evaluation, and must
+//! be solved without allocating. nalgebra's decompositions consume or
+//! allocate their matrices, so the one factorisation the hot loop needs, a
+//! Cholesky factorisation of the symmetric positive (semi)definite matrix
+//! `Phi_q M^-1 Phi_q^T` in a caller-owned buffer, lives here. nalgebra is
+//! used for fixed-size 2D vectors and, in tests, as the independent check.
+
+mod cholesky;
+mod dense;
+
+pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency};
+pub use dense::DenseMatrix;

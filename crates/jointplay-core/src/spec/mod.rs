@@ -1,1 +1,239 @@
-//! (module under construction)
+//! The plain-data model description, in SI units, that the front ends
+//! (Python builder, TOML model files) produce and [`crate::dynamics::compile`]
+//! turns into a [`crate::dynamics::Model`].
+//!
+//! Names refer to bodies and points as strings; `ground` is the fixed frame.
+//! A point is written `"body.point"` (for example `"crank.A"`), or
+//! `"ground.O"` for a point of the ground.
+
+mod laws;
+
+pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
+use serde::{Deserialize, Serialize};
+
+/// Name of the fixed frame.
+pub const GROUND: &str = "ground";
+
+/// A whole mechanism.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ModelSpec {
+    /// Name of the mechanism.
+    #[serde(default)]
+    pub name: String,
+    /// Gravitational acceleration vector [m/s^2].
+    #[serde(default)]
+    pub gravity: [f64; 2],
+    /// Points of the ground frame, by name: global coordinates [m].
+    #[serde(default)]
+    pub ground_points: Vec<PointSpec>,
+    /// Rigid bodies.
+    #[serde(default)]
+    pub bodies: Vec<BodySpec>,
+    /// Ideal and clearance joints.
+    #[serde(default)]
+    pub joints: Vec<JointSpec>,
+    /// Drivers prescribing joint coordinates over time.
+    #[serde(default)]
+    pub drivers: Vec<DriverSpec>,
+    /// Force elements.
+    #[serde(default)]
+    pub forces: Vec<ForceSpec>,
+}
+
+/// A named point: coordinates in the frame of its body [m].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PointSpec {
+    /// Name, unique within its body.
+    pub name: String,
+    /// Coordinates in the body frame (global for ground points) [m].
+    pub position: [f64; 2],
+}
+
+/// A planar rigid body with its reference frame at the centre of mass.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodySpec {
+    /// Name, unique in the model.
+    pub name: String,
+    /// Mass [kg].
+    pub mass: f64,
+    /// Moment of inertia about the centre of mass [kg m^2].
+    pub inertia: f64,
+    /// Approximate initial position of the centre of mass [m].
+    #[serde(default)]
+    pub position: [f64; 2],
+    /// Approximate initial orientation [rad].
+    #[serde(default)]
+    pub angle: f64,
+    /// Approximate initial velocity of the centre of mass [m/s].
+    #[serde(default)]
+    pub velocity: [f64; 2],
+    /// Approximate initial angular velocity [rad/s].
+    #[serde(default)]
+    pub angular_velocity: f64,
+    /// Named points in body coordinates.
+    #[serde(default)]
+    pub points: Vec<PointSpec>,
+}
+
+/// A joint between two bodies, each side given as a point `"body.point"`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum JointSpec {
+    /// Ideal pin: the two points coincide.
+    Revolute {
+        /// Name of the joint.
+        name: String,
+        /// Point on the first body.
+        first: String,
+        /// Point on the second body.
+        second: String,
+    },
+    /// Ideal slider: no relative rotation, the second point moves on the
+    /// line through the first point along `axis`.
+    Translational {
+        /// Name of the joint.
+        name: String,
+        /// Point on the first body, on the sliding line.
+        first: String,
+        /// Point on the second body, on the sliding line.
+        second: String,
+        /// Sliding direction in the first body's frame [-] (normalised on compile).
+        axis: [f64; 2],
+    },
+    /// Ideal weld: the points coincide and the relative angle is held.
+    Fixed {
+        /// Name of the joint.
+        name: String,
+        /// Point on the first body.
+        first: String,
+        /// Point on the second body.
+        second: String,
+    },
+    /// Dry revolute joint with radial clearance: a bearing (bore) on the first
+    /// body, a journal (pin) on the second, and contact forces between them.
+    ClearanceRevolute(ClearanceJointSpec),
+}
+
+/// A dry revolute clearance joint.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ClearanceJointSpec {
+    /// Name of the joint.
+    pub name: String,
+    /// Bearing centre `"body.point"`.
+    pub bearing: String,
+    /// Journal centre `"body.point"`.
+    pub journal: String,
+    /// Bore radius R_b [m].
+    pub bearing_radius: f64,
+    /// Radial clearance c = R_b - R_j [m].
+    pub clearance: f64,
+    /// Axial length of the bearing [m] (line-contact stiffness laws).
+    #[serde(default)]
+    pub length: Option<f64>,
+    /// Bearing material.
+    pub bearing_material: MaterialSpec,
+    /// Journal material.
+    pub journal_material: MaterialSpec,
+    /// Normal force law (dissipation).
+    pub contact: ContactSpec,
+    /// Contact stiffness law.
+    #[serde(default)]
+    pub stiffness: StiffnessSpec,
+    /// Friction law.
+    #[serde(default)]
+    pub friction: FrictionSpec,
+    /// Initial eccentricity vector of the journal centre from the bearing centre, global frame [m].
+    #[serde(default)]
+    pub initial_eccentricity: [f64; 2],
+    /// Smallest contact-onset velocity used in the damping term [m/s]; guards grazing entries.
+    #[serde(default = "default_onset_velocity_floor")]
+    pub onset_velocity_floor: f64,
+    /// Penetration at which the simulation stops as unphysical [m]; default 5 % of the journal radius.
+    #[serde(default)]
+    pub max_penetration: Option<f64>,
+}
+
+/// Default onset velocity floor [m/s]: small against the impact velocities
+/// of machinery (0.01-1 m/s) yet keeps `delta_dot / delta_dot_minus` bounded
+/// for grazing entries.
+pub fn default_onset_velocity_floor() -> f64 {
+    1e-4
+}
+
+/// A driver: a joint coordinate prescribed as a function of time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DriverSpec {
+    /// Name of the driver.
+    pub name: String,
+    /// Revolute joint (relative angle, second minus first [rad]) or
+    /// translational joint (displacement along the axis [m]) it drives.
+    pub joint: String,
+    /// The prescribed coordinate over time.
+    pub function: FunctionSpec,
+}
+
+/// A force element.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum ForceSpec {
+    /// Linear spring and damper between two points, tension positive.
+    SpringDamper {
+        /// Name.
+        name: String,
+        /// Point on the first body.
+        first: String,
+        /// Point on the second body.
+        second: String,
+        /// Stiffness [N/m].
+        #[serde(default)]
+        stiffness: f64,
+        /// Damping coefficient [N s/m].
+        #[serde(default)]
+        damping: f64,
+        /// Free length [m].
+        free_length: f64,
+    },
+    /// Torsional spring and damper on the relative angle of two bodies.
+    RotationalSpringDamper {
+        /// Name.
+        name: String,
+        /// First body (`ground` allowed).
+        first: String,
+        /// Second body.
+        second: String,
+        /// Stiffness [N m/rad].
+        #[serde(default)]
+        stiffness: f64,
+        /// Damping coefficient [N m s/rad].
+        #[serde(default)]
+        damping: f64,
+        /// Relative angle (second minus first) at which the spring is relaxed [rad].
+        #[serde(default)]
+        free_angle: f64,
+    },
+    /// A force at a point, given in the global frame as functions of time.
+    PointForce {
+        /// Name.
+        name: String,
+        /// Point of application `"body.point"`.
+        point: String,
+        /// x component [N].
+        fx: FunctionSpec,
+        /// y component [N].
+        fy: FunctionSpec,
+    },
+    /// A torque on a body as a function of time.
+    Torque {
+        /// Name.
+        name: String,
+        /// Body it acts on.
+        body: String,
+        /// Torque, counter-clockwise positive [N m].
+        torque: FunctionSpec,
+    },
+}

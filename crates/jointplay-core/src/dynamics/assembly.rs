@@ -1,0 +1,31 @@
+//! Consistent initial conditions from the approximate input: Newton on the
+//! constraints (driver equations included, so driven coordinates are held
+//! at their prescribed values) with every clearance joint locked at its
+//! initial eccentricity, then the velocities of that locked (ideal)
+//! mechanism.
+
+use super::projection::{project_positions, project_velocities};
+use super::state::{ContactMemory, State};
+use super::{Model, Workspace};
+use crate::error::SimulationError;
+
+/// Largest constraint residual accepted at assembly [m or rad].
+pub const ASSEMBLY_TOLERANCE: f64 = 1e-12;
+
+/// Newton iterations allowed at assembly: from a rough sketch of the
+/// mechanism Newton needs a handful; fifty means the input is far off.
+const ASSEMBLY_ITERATIONS: usize = 50;
+
+/// Consistent initial state at time `t0` from the model's approximate input.
+pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, SimulationError> {
+    let n = model.n_coordinates();
+    let all = model.constraints.len();
+    let mut q = model.initial_coordinates.clone();
+    let mut qdot = model.initial_velocities.clone();
+    project_positions(model, all, t0, &mut q, ASSEMBLY_TOLERANCE, ASSEMBLY_ITERATIONS, ws)?;
+    project_velocities(model, all, t0, &q, &mut qdot, ws)?;
+    let mut y = Vec::with_capacity(2 * n);
+    y.extend_from_slice(&q);
+    y.extend_from_slice(&qdot);
+    Ok(State { time: t0, y, contacts: vec![ContactMemory::default(); model.clearance_joints.len()] })
+}

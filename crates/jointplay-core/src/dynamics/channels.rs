@@ -1,0 +1,202 @@
+//! Output channels `"<element>.<quantity>"` in SI units, and the
+//! trajectory they fill.
+
+use super::frame::cross;
+use super::model::ElementKind;
+use super::{Model, Workspace};
+use crate::force::gravity_potential_energy;
+
+/// Name, unit and meaning of one channel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ChannelInfo {
+    /// `"<element>.<quantity>"`, e.g. `slider.ax`.
+    pub name: String,
+    /// SI unit (`m`, `m/s^2`, `N`, `1` for dimensionless).
+    pub unit: &'static str,
+    /// One-line description.
+    pub description: String,
+}
+
+/// Where a channel's value comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Source {
+    /// Coordinate `k` of `q` (position or angle).
+    Coordinate(usize),
+    /// Rate of coordinate `k`.
+    Velocity(usize),
+    /// Acceleration of coordinate `k`.
+    Acceleration(usize),
+    /// Reaction of an ideal element: 0 fx, 1 fy, 2 |f|, 3 moment.
+    Reaction(usize, u8),
+    /// Driver effort (torque or force along the axis).
+    DriverEffort(usize),
+    /// Clearance joint quantity (see `clearance_value`).
+    Clearance(usize, u8),
+    /// Force element: 0 primary, 1 secondary.
+    Force(usize, u8),
+    /// 0 kinetic, 1 potential, 2 total mechanical energy.
+    Energy(u8),
+}
+
+/// A channel and its source.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Channel {
+    pub info: ChannelInfo,
+    pub source: Source,
+}
+
+/// Recorded channels over time.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Trajectory {
+    /// Sample times [s].
+    pub time: Vec<f64>,
+    /// Channel descriptions.
+    pub channels: Vec<ChannelInfo>,
+    /// `values[c][k]`: channel `c` at `time[k]`.
+    pub values: Vec<Vec<f64>>,
+}
+
+impl Trajectory {
+    /// Empty trajectory with the model's channels.
+    pub fn new(model: &Model) -> Self {
+        Self { time: Vec::new(), channels: model.channel_infos(), values: vec![Vec::new(); model.channels.len()] }
+    }
+
+    /// Values of the channel named `name`, if present.
+    pub fn channel(&self, name: &str) -> Option<&[f64]> {
+        self.channels.iter().position(|c| c.name == name).map(|k| self.values[k].as_slice())
+    }
+
+    /// Appends one sample from an evaluated workspace.
+    pub(crate) fn push(&mut self, model: &Model, t: f64, y: &[f64], ws: &Workspace) {
+        self.time.push(t);
+        for (k, channel) in model.channels.iter().enumerate() {
+            self.values[k].push(value(model, channel.source, y, ws));
+        }
+    }
+}
+
+fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace) -> f64 {
+    let n = model.n_coordinates();
+    match source {
+        Source::Coordinate(k) => y[k],
+        Source::Velocity(k) => y[n + k],
+        Source::Acceleration(k) => ws.accelerations[k],
+        Source::Reaction(e, which) => reaction_value(model, e, which, ws),
+        Source::DriverEffort(e) => driver_effort(model, e, ws),
+        Source::Clearance(j, which) => clearance_value(model, j, which, ws),
+        Source::Force(f, 0) => ws.force_outputs[f].primary,
+        Source::Force(f, _) => ws.force_outputs[f].secondary,
+        Source::Energy(which) => energy(model, which, y, ws),
+    }
+}
+
+/// Generalised constraint force `(fx, fy, moment about the centre of mass)`
+/// that element `e` exerts on its second body (`-Phi_q^T lambda` over its rows).
+fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 3] {
+    let element = &model.elements[e];
+    let (body, sign) = if element.second.is_ground() { (element.first, -1.0) } else { (element.second, 1.0) };
+    let Some(c) = body.coordinate() else { return [0.0; 3] };
+    let mut g = [0.0; 3];
+    for k in element.constraints.clone() {
+        for r in model.row_offsets[k]..model.row_offsets[k + 1] {
+            for (i, gi) in g.iter_mut().enumerate() {
+                *gi -= sign * ws.jacobian.get(r, c + i) * ws.multipliers[r];
+            }
+        }
+    }
+    g
+}
+
+fn reaction_value(model: &Model, e: usize, which: u8, ws: &Workspace) -> f64 {
+    let [fx, fy, moment] = constraint_force_on_second(model, e, ws);
+    match which {
+        0 => fx,
+        1 => fy,
+        2 => fx.hypot(fy),
+        _ => {
+            // moment about the element's point on the second body
+            let element = &model.elements[e];
+            let frame = &ws.frames[element.second.0];
+            moment - cross(frame.rotate(element.second_point), nalgebra::Vector2::new(fx, fy))
+        }
+    }
+}
+
+fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
+    let element = &model.elements[e];
+    let [fx, fy, moment] = constraint_force_on_second(model, e, ws);
+    match element.kind {
+        ElementKind::DisplacementDriver => ws.frames[element.first.0].rotate(element.axis).dot(&nalgebra::Vector2::new(fx, fy)),
+        _ => moment,
+    }
+}
+
+fn clearance_value(model: &Model, j: usize, which: u8, ws: &Workspace) -> f64 {
+    let c = &ws.contacts[j];
+    let joint = &model.clearance_joints[j];
+    match which {
+        0 => c.eccentricity.x,
+        1 => c.eccentricity.y,
+        2 => c.eccentricity.norm() / joint.clearance,
+        3 => c.penetration.max(0.0),
+        4 => c.normal_force,
+        5 => c.friction_force,
+        6 => c.force_on_journal.x,
+        7 => c.force_on_journal.y,
+        8 => c.force_on_journal.norm(),
+        9 => if c.in_contact { c.penetration_rate } else { relative_radial_velocity(model, j, ws) },
+        10 => c.sliding_velocity,
+        _ => f64::from(u8::from(c.in_contact)),
+    }
+}
+
+/// `d|e|/dt` while the journal is free [m/s].
+fn relative_radial_velocity(model: &Model, j: usize, ws: &Workspace) -> f64 {
+    let joint = &model.clearance_joints[j];
+    let (fi, fj) = (&ws.frames[joint.bearing.body.0], &ws.frames[joint.journal.body.0]);
+    let e = ws.contacts[j].eccentricity;
+    let distance = e.norm();
+    if distance == 0.0 {
+        return 0.0;
+    }
+    let e_dot = fj.point_velocity(joint.journal.local) - fi.point_velocity(joint.bearing.local);
+    e_dot.dot(&e) / distance
+}
+
+fn energy(model: &Model, which: u8, y: &[f64], ws: &Workspace) -> f64 {
+    let n = model.n_coordinates();
+    let kinetic: f64 = model
+        .bodies
+        .iter()
+        .enumerate()
+        .map(|(k, b)| {
+            let v = &y[n + 3 * k..n + 3 * k + 3];
+            0.5 * (b.mass * (v[0] * v[0] + v[1] * v[1]) + b.inertia * v[2] * v[2])
+        })
+        .sum();
+    let potential = gravity_potential_energy(&model.masses, model.gravity, &y[..n])
+        + ws.force_outputs.iter().map(|f| f.potential_energy).sum::<f64>()
+        + model.clearance_joints.iter().zip(&ws.contacts).map(|(j, c)| j.stiffness.elastic_energy(c.penetration.max(0.0))).sum::<f64>();
+    match which {
+        0 => kinetic,
+        1 => potential,
+        _ => kinetic + potential,
+    }
+}
+
+/// Names of the quantities of a clearance joint, by `Source::Clearance` index.
+pub(crate) const CLEARANCE_QUANTITIES: [(&str, &str, &str); 12] = [
+    ("ex", "m", "eccentricity x (journal centre from bearing centre)"),
+    ("ey", "m", "eccentricity y"),
+    ("eccentricity_ratio", "1", "|e| / clearance"),
+    ("penetration", "m", "penetration depth |e| - c while in contact, else 0"),
+    ("fn", "N", "normal contact force"),
+    ("ft", "N", "friction force along the tangent t = perp(n), on the journal"),
+    ("fx", "N", "contact force on the journal, x"),
+    ("fy", "N", "contact force on the journal, y"),
+    ("f", "N", "contact force magnitude"),
+    ("vn", "m/s", "normal relative velocity d|e|/dt (positive when approaching the wall)"),
+    ("vt", "m/s", "sliding velocity of the journal surface on the bore"),
+    ("contact", "1", "1 while in contact, 0 while free"),
+];

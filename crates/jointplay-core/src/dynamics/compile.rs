@@ -1,0 +1,452 @@
+//! Compiling a [`ModelSpec`] into a [`Model`]: names resolved, laws built,
+//! every problem reported with its location.
+
+use std::collections::HashMap;
+
+use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES};
+use super::frame::{perp, BodyIndex, BodyPoint, Vec2};
+use super::model::{Body, ElementKind, IdealElement, Model};
+use crate::error::ModelErrors;
+use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
+use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
+use crate::spec::{ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, GROUND};
+
+#[path = "compile/laws.rs"]
+mod laws;
+
+use laws::{build_friction, build_function, build_normal_force_law, build_stiffness};
+
+/// Default bound on penetration as a fraction of the journal radius: far
+/// beyond elastic contact of metals, so reaching it means a wrong input.
+const MAX_PENETRATION_FRACTION_OF_RADIUS: f64 = 0.05;
+
+/// Compiles a model description; returns every problem found.
+pub fn compile(spec: &ModelSpec) -> Result<Model, ModelErrors> {
+    let mut c = Compiler::new(spec);
+    c.bodies();
+    c.joints();
+    c.drivers();
+    c.forces();
+    c.locks();
+    c.finish()
+}
+
+struct Compiler<'s> {
+    spec: &'s ModelSpec,
+    errors: ModelErrors,
+    body_index: HashMap<&'s str, BodyIndex>,
+    points: HashMap<String, BodyPoint>,
+    model: Model,
+    /// joint name -> (kind, element index) for drivers
+    joint_index: HashMap<&'s str, (ElementKind, usize)>,
+    /// clearance joint indices and their spec, for the assembly locks
+    clearance_specs: Vec<&'s ClearanceJointSpec>,
+    names: HashMap<String, String>,
+}
+
+impl<'s> Compiler<'s> {
+    fn new(spec: &'s ModelSpec) -> Self {
+        let model = Model {
+            name: spec.name.clone(),
+            bodies: Vec::new(),
+            points: Vec::new(),
+            gravity: Vec2::new(spec.gravity[0], spec.gravity[1]),
+            masses: Vec::new(),
+            inverse_mass: Vec::new(),
+            constraints: Vec::new(),
+            n_dynamic_constraints: 0,
+            row_offsets: vec![0],
+            row_owner: Vec::new(),
+            elements: Vec::new(),
+            clearance_joints: Vec::new(),
+            clearance_names: Vec::new(),
+            forces: Vec::new(),
+            force_names: Vec::new(),
+            initial_coordinates: Vec::new(),
+            initial_velocities: Vec::new(),
+            channels: Vec::new(),
+        };
+        Self {
+            spec,
+            errors: ModelErrors::default(),
+            body_index: HashMap::new(),
+            points: HashMap::new(),
+            model,
+            joint_index: HashMap::new(),
+            clearance_specs: Vec::new(),
+            names: HashMap::new(),
+        }
+    }
+
+    /// Element names share one namespace (channels are `<name>.<quantity>`).
+    fn claim_name(&mut self, name: &str, location: &str) {
+        if name.is_empty() || name.contains('.') || name == GROUND {
+            self.errors.push(location, format!("must be a non-empty name without '.', other than 'ground', got {name:?}"));
+        } else if let Some(previous) = self.names.insert(name.to_string(), location.to_string()) {
+            self.errors.push(location, format!("name {name:?} is already used by {previous}"));
+        }
+    }
+
+    fn positive(&mut self, value: f64, location: String, what: &str) {
+        if !(value.is_finite() && value > 0.0) {
+            self.errors.push(location, format!("{what} must be > 0, got {value}"));
+        }
+    }
+
+    fn bodies(&mut self) {
+        self.body_index.insert(GROUND, BodyIndex::GROUND);
+        for (k, p) in self.spec.ground_points.iter().enumerate() {
+            self.add_point(BodyIndex::GROUND, GROUND, &p.name, p.position, format!("ground_points[{k}]"));
+        }
+        for (k, b) in self.spec.bodies.iter().enumerate() {
+            let loc = format!("bodies[{k}]");
+            self.claim_name(&b.name, &format!("{loc}.name"));
+            self.positive(b.mass, format!("{loc}.mass"), "mass");
+            self.positive(b.inertia, format!("{loc}.inertia"), "inertia");
+            let index = BodyIndex(k + 1);
+            self.body_index.insert(&b.name, index);
+            self.model.bodies.push(Body { name: b.name.clone(), mass: b.mass, inertia: b.inertia });
+            self.model.masses.push(b.mass);
+            self.model.inverse_mass.extend([1.0 / b.mass, 1.0 / b.mass, 1.0 / b.inertia]);
+            self.model.initial_coordinates.extend([b.position[0], b.position[1], b.angle]);
+            self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity]);
+            for (i, p) in b.points.iter().enumerate() {
+                self.add_point(index, &b.name, &p.name, p.position, format!("{loc}.points[{i}]"));
+            }
+            self.body_channels(k, &b.name);
+        }
+    }
+
+    fn add_point(&mut self, body: BodyIndex, body_name: &str, name: &str, position: [f64; 2], location: String) {
+        let full = format!("{body_name}.{name}");
+        if name.is_empty() || name.contains('.') {
+            self.errors.push(format!("{location}.name"), format!("must be a non-empty name without '.', got {name:?}"));
+        } else if position.iter().any(|v| !v.is_finite()) {
+            self.errors.push(format!("{location}.position"), format!("must be finite, got {position:?}"));
+        }
+        let point = BodyPoint { body, local: Vec2::new(position[0], position[1]) };
+        if self.points.insert(full.clone(), point).is_some() {
+            self.errors.push(format!("{location}.name"), format!("point {full:?} is defined twice"));
+        }
+        self.model.points.push((full, body, point.local));
+    }
+
+    fn point(&mut self, reference: &str, location: String) -> Option<BodyPoint> {
+        let found = self.points.get(reference).copied();
+        if found.is_none() {
+            let hint = match reference.split_once('.') {
+                None => "a point is written \"body.point\"".to_string(),
+                Some((body, _)) if !self.body_index.contains_key(body) => format!("no body named {body:?}"),
+                Some((body, _)) => format!("body {body:?} has no such point"),
+            };
+            self.errors.push(location, format!("unknown point {reference:?} ({hint})"));
+        }
+        found
+    }
+
+    fn body(&mut self, name: &str, location: String) -> Option<BodyIndex> {
+        let found = self.body_index.get(name).copied();
+        if found.is_none() {
+            self.errors.push(location, format!("unknown body {name:?}"));
+        }
+        found
+    }
+
+    fn initial_angle(&self, body: BodyIndex) -> f64 {
+        body.coordinate().map_or(0.0, |c| self.model.initial_coordinates[c + 2])
+    }
+
+    /// Adds an element owning `kinds`; returns its index.
+    fn add_element(&mut self, name: &str, kind: ElementKind, first: BodyPoint, second: BodyPoint, axis: Vec2, kinds: Vec<ConstraintKind>) -> usize {
+        let owner = self.model.elements.len();
+        let start = self.model.constraints.len();
+        for k in kinds {
+            let rows = k.n_equations();
+            let last = *self.model.row_offsets.last().unwrap();
+            self.model.row_offsets.push(last + rows);
+            self.model.row_owner.extend(std::iter::repeat_n(owner, rows));
+            self.model.constraints.push(Constraint { kind: k, owner });
+        }
+        self.model.elements.push(IdealElement {
+            name: name.to_string(),
+            kind,
+            first: first.body,
+            second: second.body,
+            second_point: second.local,
+            axis,
+            constraints: start..self.model.constraints.len(),
+        });
+        owner
+    }
+
+    fn joints(&mut self) {
+        for (k, joint) in self.spec.joints.iter().enumerate() {
+            let loc = format!("joints[{k}]");
+            match joint {
+                JointSpec::Revolute { name, first, second } => self.ideal_joint(&loc, name, first, second, ElementKind::RevoluteJoint, None),
+                JointSpec::Fixed { name, first, second } => self.ideal_joint(&loc, name, first, second, ElementKind::FixedJoint, None),
+                JointSpec::Translational { name, first, second, axis } => {
+                    self.ideal_joint(&loc, name, first, second, ElementKind::TranslationalJoint, Some(*axis))
+                }
+                JointSpec::ClearanceRevolute(c) => self.clearance_joint(&loc, c),
+            }
+        }
+    }
+
+    fn distinct_bodies(&mut self, loc: &str, a: BodyPoint, b: BodyPoint) -> bool {
+        if a.body == b.body {
+            self.errors.push(loc.to_string(), format!("connects body {:?} to itself", self.model.body_name(a.body)));
+            return false;
+        }
+        true
+    }
+
+    fn ideal_joint(&mut self, loc: &str, name: &'s str, first: &str, second: &str, kind: ElementKind, axis: Option<[f64; 2]>) {
+        self.claim_name(name, &format!("{loc}.name"));
+        let a = self.point(first, format!("{loc}.first"));
+        let b = self.point(second, format!("{loc}.second"));
+        let (Some(a), Some(b)) = (a, b) else { return };
+        if !self.distinct_bodies(loc, a, b) {
+            return;
+        }
+        let relative_angle = self.initial_angle(b.body) - self.initial_angle(a.body);
+        let lock_rotation = ConstraintKind::RelativeAngle(RelativeAngle { first: a.body, second: b.body, target: Target::Fixed(relative_angle) });
+        let coincide = ConstraintKind::PointCoincidence(PointCoincidence { first: a, second: b, offset: Vec2::zeros() });
+        let mut unit_axis = Vec2::zeros();
+        let kinds = match kind {
+            ElementKind::RevoluteJoint => vec![coincide],
+            ElementKind::FixedJoint => vec![coincide, lock_rotation],
+            _ => {
+                let axis = axis.unwrap_or([0.0, 0.0]);
+                let v = Vec2::new(axis[0], axis[1]);
+                if !(v.norm() > 0.0 && v.norm().is_finite()) {
+                    self.errors.push(format!("{loc}.axis"), format!("must be a non-zero direction, got {axis:?}"));
+                    return;
+                }
+                unit_axis = v / v.norm();
+                let normal = AxialProjection { first: a, second: b, direction: perp(unit_axis), target: Target::Fixed(0.0) };
+                vec![lock_rotation, ConstraintKind::AxialProjection(normal)]
+            }
+        };
+        let element = self.add_element(name, kind, a, b, unit_axis, kinds);
+        self.joint_index.insert(name, (kind, element));
+        self.reaction_channels(element, name, kind != ElementKind::RevoluteJoint);
+    }
+
+    fn clearance_joint(&mut self, loc: &str, c: &'s ClearanceJointSpec) {
+        self.claim_name(&c.name, &format!("{loc}.name"));
+        let a = self.point(&c.bearing, format!("{loc}.bearing"));
+        let b = self.point(&c.journal, format!("{loc}.journal"));
+        self.positive(c.bearing_radius, format!("{loc}.bearing_radius"), "bearing radius");
+        self.positive(c.clearance, format!("{loc}.clearance"), "clearance");
+        if c.clearance.is_finite() && c.bearing_radius.is_finite() && c.clearance >= c.bearing_radius && c.clearance > 0.0 {
+            self.errors.push(
+                format!("{loc}.clearance"),
+                format!("must be smaller than the bearing radius {} m (the journal radius would be <= 0), got {} m", c.bearing_radius, c.clearance),
+            );
+        }
+        if !(c.onset_velocity_floor.is_finite() && c.onset_velocity_floor > 0.0) {
+            self.errors.push(format!("{loc}.onset_velocity_floor"), format!("must be > 0, got {}", c.onset_velocity_floor));
+        }
+        let journal_radius = c.bearing_radius - c.clearance;
+        let stiffness = build_stiffness(c, journal_radius, loc, &mut self.errors);
+        let law = build_normal_force_law(&c.contact, &format!("{loc}.contact"), &mut self.errors);
+        let friction = build_friction(&c.friction, &format!("{loc}.friction"), &mut self.errors);
+        let (Some(a), Some(b), Some(stiffness), Some(law), Some(friction)) = (a, b, stiffness, law, friction) else { return };
+        if !self.distinct_bodies(loc, a, b) {
+            return;
+        }
+        let e0 = Vec2::new(c.initial_eccentricity[0], c.initial_eccentricity[1]);
+        if !(e0.norm() <= c.clearance) {
+            self.errors.push(format!("{loc}.initial_eccentricity"), format!("must lie within the clearance {} m, got {:?} m", c.clearance, c.initial_eccentricity));
+        }
+        let max_penetration = c.max_penetration.unwrap_or(MAX_PENETRATION_FRACTION_OF_RADIUS * journal_radius);
+        self.positive(max_penetration, format!("{loc}.max_penetration"), "maximum penetration");
+        let index = self.model.clearance_joints.len();
+        self.model.clearance_joints.push(ClearanceRevolute {
+            bearing: a,
+            journal: b,
+            bearing_radius: c.bearing_radius,
+            journal_radius,
+            clearance: c.clearance,
+            stiffness,
+            normal_force_law: law,
+            friction,
+            onset_velocity_floor: c.onset_velocity_floor,
+            max_penetration,
+            initial_eccentricity: e0,
+        });
+        self.model.clearance_names.push(c.name.clone());
+        self.clearance_specs.push(c);
+        for (q, (quantity, unit, description)) in CLEARANCE_QUANTITIES.iter().enumerate() {
+            self.channel(&c.name, quantity, unit, description.to_string(), Source::Clearance(index, q as u8));
+        }
+    }
+
+    fn drivers(&mut self) {
+        for (k, d) in self.spec.drivers.iter().enumerate() {
+            self.driver(&format!("drivers[{k}]"), d);
+        }
+    }
+
+    fn driver(&mut self, loc: &str, d: &'s DriverSpec) {
+        self.claim_name(&d.name, &format!("{loc}.name"));
+        let function = build_function(&d.function, &format!("{loc}.function"), &mut self.errors);
+        let Some(&(kind, joint)) = self.joint_index.get(d.joint.as_str()) else {
+            self.errors.push(format!("{loc}.joint"), format!("unknown revolute or translational joint {:?}", d.joint));
+            return;
+        };
+        let Some(function) = function else { return };
+        let element = self.model.elements[joint].clone();
+        let first_point = self.joint_first_point(joint);
+        let second = BodyPoint { body: element.second, local: element.second_point };
+        let (driver_kind, constraint, unit, quantity) = match kind {
+            ElementKind::RevoluteJoint => (
+                ElementKind::AngleDriver,
+                ConstraintKind::RelativeAngle(RelativeAngle { first: element.first, second: element.second, target: Target::Driven(function) }),
+                "N m",
+                "torque",
+            ),
+            ElementKind::TranslationalJoint => (
+                ElementKind::DisplacementDriver,
+                ConstraintKind::AxialProjection(AxialProjection { first: first_point, second, direction: element.axis, target: Target::Driven(function) }),
+                "N",
+                "force",
+            ),
+            _ => {
+                self.errors.push(format!("{loc}.joint"), format!("joint {:?} is a fixed joint and cannot be driven", d.joint));
+                return;
+            }
+        };
+        let index = self.add_element(&d.name, driver_kind, first_point, second, element.axis, vec![constraint]);
+        let description = format!("driver effort on the second body of joint {}", d.joint);
+        self.channel(&d.name, quantity, unit, description, Source::DriverEffort(index));
+    }
+
+    /// The first point of an ideal joint, recovered from its constraints.
+    fn joint_first_point(&self, element: usize) -> BodyPoint {
+        for k in self.model.elements[element].constraints.clone() {
+            match &self.model.constraints[k].kind {
+                ConstraintKind::PointCoincidence(c) => return c.first,
+                ConstraintKind::AxialProjection(c) => return c.first,
+                ConstraintKind::RelativeAngle(_) => {}
+            }
+        }
+        BodyPoint { body: self.model.elements[element].first, local: Vec2::zeros() }
+    }
+
+    fn forces(&mut self) {
+        for (k, f) in self.spec.forces.iter().enumerate() {
+            let loc = format!("forces[{k}]");
+            if let Some((name, element, units)) = self.force(&loc, f) {
+                let index = self.model.forces.len();
+                self.model.forces.push(element);
+                self.model.force_names.push(name.to_string());
+                for (q, (quantity, unit, description)) in units.iter().enumerate() {
+                    self.channel(name, quantity, unit, description.to_string(), Source::Force(index, q as u8));
+                }
+            }
+        }
+    }
+
+    #[allow(clippy::type_complexity)]
+    fn force(&mut self, loc: &str, f: &'s ForceSpec) -> Option<(&'s str, ForceElement, Vec<(&'static str, &'static str, &'static str)>)> {
+        match f {
+            ForceSpec::SpringDamper { name, first, second, stiffness, damping, free_length } => {
+                self.claim_name(name, &format!("{loc}.name"));
+                let a = self.point(first, format!("{loc}.first"));
+                let b = self.point(second, format!("{loc}.second"));
+                self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping"), (*free_length, "free_length")], loc);
+                let element = SpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_length: *free_length };
+                Some((name, ForceElement::SpringDamper(element), vec![("force", "N", "tension"), ("length", "m", "length")]))
+            }
+            ForceSpec::RotationalSpringDamper { name, first, second, stiffness, damping, free_angle } => {
+                self.claim_name(name, &format!("{loc}.name"));
+                let a = self.body(first, format!("{loc}.first"));
+                let b = self.body(second, format!("{loc}.second"));
+                self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping")], loc);
+                let element = RotationalSpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_angle: *free_angle };
+                Some((name, ForceElement::RotationalSpringDamper(element), vec![("torque", "N m", "torque on the second body"), ("angle", "rad", "relative angle")]))
+            }
+            ForceSpec::PointForce { name, point, fx, fy } => {
+                self.claim_name(name, &format!("{loc}.name"));
+                let p = self.point(point, format!("{loc}.point"));
+                let fx = build_function(fx, &format!("{loc}.fx"), &mut self.errors);
+                let fy = build_function(fy, &format!("{loc}.fy"), &mut self.errors);
+                let element = PointForce { point: p?, fx: fx?, fy: fy? };
+                Some((name, ForceElement::PointForce(element), vec![("fx", "N", "applied force x"), ("fy", "N", "applied force y")]))
+            }
+            ForceSpec::Torque { name, body, torque } => {
+                self.claim_name(name, &format!("{loc}.name"));
+                let b = self.body(body, format!("{loc}.body"));
+                let torque = build_function(torque, &format!("{loc}.torque"), &mut self.errors);
+                Some((name, ForceElement::Torque(AppliedTorque { body: b?, torque: torque? }), vec![("torque", "N m", "applied torque")]))
+            }
+        }
+    }
+
+    fn non_negative(&mut self, values: &[(f64, &str)], loc: &str) {
+        for (v, what) in values {
+            if !(v.is_finite() && *v >= 0.0) {
+                self.errors.push(format!("{loc}.{what}"), format!("must be >= 0, got {v}"));
+            }
+        }
+    }
+
+    /// Clearance joints locked at their initial eccentricity, used only at assembly.
+    fn locks(&mut self) {
+        self.model.n_dynamic_constraints = self.model.constraints.len();
+        for k in 0..self.model.clearance_joints.len() {
+            let joint = self.model.clearance_joints[k].clone();
+            let name = format!("{} (assembly lock)", self.model.clearance_names[k]);
+            let kind = ConstraintKind::PointCoincidence(PointCoincidence { first: joint.bearing, second: joint.journal, offset: joint.initial_eccentricity });
+            self.add_element(&name, ElementKind::AssemblyLock, joint.bearing, joint.journal, Vec2::zeros(), vec![kind]);
+        }
+        let _ = &self.clearance_specs;
+    }
+
+    fn finish(mut self) -> Result<Model, ModelErrors> {
+        let n = self.model.n_coordinates() as i64;
+        let m = self.model.n_dynamic_equations() as i64;
+        if self.errors.is_empty() && m > n {
+            self.errors.push("joints", format!("the mechanism is over-constrained: {m} constraint equations for {n} coordinates"));
+        }
+        for (q, (quantity, description)) in [("kinetic_energy", "kinetic energy"), ("potential_energy", "potential energy (gravity, springs, contact)"), ("energy", "total mechanical energy")].iter().enumerate() {
+            self.channel("system", quantity, "J", description.to_string(), Source::Energy(q as u8));
+        }
+        self.errors.into_result(self.model)
+    }
+
+    fn channel(&mut self, element: &str, quantity: &str, unit: &'static str, description: String, source: Source) {
+        let info = ChannelInfo { name: format!("{element}.{quantity}"), unit, description };
+        self.model.channels.push(Channel { info, source });
+    }
+
+    fn body_channels(&mut self, k: usize, name: &str) {
+        let c = 3 * k;
+        let quantities: [(&str, &'static str, &str, Source); 9] = [
+            ("x", "m", "centre of mass x", Source::Coordinate(c)),
+            ("y", "m", "centre of mass y", Source::Coordinate(c + 1)),
+            ("angle", "rad", "orientation", Source::Coordinate(c + 2)),
+            ("vx", "m/s", "centre of mass velocity x", Source::Velocity(c)),
+            ("vy", "m/s", "centre of mass velocity y", Source::Velocity(c + 1)),
+            ("omega", "rad/s", "angular velocity", Source::Velocity(c + 2)),
+            ("ax", "m/s^2", "centre of mass acceleration x", Source::Acceleration(c)),
+            ("ay", "m/s^2", "centre of mass acceleration y", Source::Acceleration(c + 1)),
+            ("alpha", "rad/s^2", "angular acceleration", Source::Acceleration(c + 2)),
+        ];
+        for (quantity, unit, description, source) in quantities {
+            self.channel(name, quantity, unit, description.to_string(), source);
+        }
+    }
+
+    fn reaction_channels(&mut self, element: usize, name: &str, with_moment: bool) {
+        let d = "reaction on the second body from the first";
+        self.channel(name, "fx", "N", format!("{d}, x"), Source::Reaction(element, 0));
+        self.channel(name, "fy", "N", format!("{d}, y"), Source::Reaction(element, 1));
+        self.channel(name, "f", "N", format!("{d}, magnitude"), Source::Reaction(element, 2));
+        if with_moment {
+            self.channel(name, "moment", "N m", format!("{d}, moment about the joint point"), Source::Reaction(element, 3));
+        }
+    }
+}

@@ -1,0 +1,111 @@
+//! Building laws and time functions from their plain-data choices.
+
+use crate::contact::{ContactStiffness, HertzCylinder, JohnsonLine, Material, NormalForceLaw, RogersAndrews};
+use crate::error::ModelErrors;
+use crate::friction::{AmbrosioCoulomb, FrictionLaw, RegularisedCoulomb, StictionFriction, Threlfall};
+use crate::motion::{ConstantRate, CubicStep, Polynomial, Sine, SplineTable, TimeFunction};
+use crate::spec::{ClearanceJointSpec, ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
+
+fn material(m: &MaterialSpec) -> Material {
+    Material { youngs_modulus: m.youngs_modulus, poisson_ratio: m.poisson_ratio }
+}
+
+/// Hertz exponent for metal contact.
+const HERTZ_EXPONENT: f64 = 1.5;
+
+pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: &str, errors: &mut ModelErrors) -> Option<ContactStiffness> {
+    for (m, what) in [(&c.bearing_material, "bearing_material"), (&c.journal_material, "journal_material")] {
+        if !(m.youngs_modulus.is_finite() && m.youngs_modulus > 0.0) {
+            errors.push(format!("{loc}.{what}.youngs_modulus"), format!("must be > 0, got {} Pa", m.youngs_modulus));
+        }
+        if !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5) {
+            errors.push(format!("{loc}.{what}.poisson_ratio"), format!("must lie in (-1, 0.5), got {}", m.poisson_ratio));
+        }
+    }
+    if !(journal_radius > 0.0) {
+        return None; // reported with the clearance
+    }
+    let (rb, b, j) = (c.bearing_radius, material(&c.bearing_material), material(&c.journal_material));
+    let needs_length = matches!(c.stiffness, StiffnessSpec::JohnsonLine | StiffnessSpec::RogersAndrews);
+    let length = match c.length {
+        Some(l) if l.is_finite() && l > 0.0 => Some(l),
+        Some(l) => {
+            errors.push(format!("{loc}.length"), format!("must be > 0, got {l} m"));
+            None
+        }
+        None if needs_length => {
+            errors.push(format!("{loc}.length"), "is required by the line-contact stiffness laws".to_string());
+            None
+        }
+        None => None,
+    };
+    let built = match c.stiffness {
+        StiffnessSpec::HertzCylinder => HertzCylinder::new(rb, journal_radius, b, j, HERTZ_EXPONENT).map(ContactStiffness::HertzCylinder),
+        StiffnessSpec::HertzCylinderExponent { exponent } => HertzCylinder::new(rb, journal_radius, b, j, exponent).map(ContactStiffness::HertzCylinder),
+        StiffnessSpec::JohnsonLine => JohnsonLine::new(rb, journal_radius, length?, b, j).map(ContactStiffness::JohnsonLine),
+        StiffnessSpec::RogersAndrews => RogersAndrews::new(rb, journal_radius, length?, b, j).map(ContactStiffness::RogersAndrews),
+    };
+    built.map_err(|message| errors.push(format!("{loc}.stiffness"), message)).ok()
+}
+
+pub(super) fn build_normal_force_law(c: &ContactSpec, loc: &str, errors: &mut ModelErrors) -> Option<NormalForceLaw> {
+    let (law, restitution) = match *c {
+        ContactSpec::Hertz => return Some(NormalForceLaw::Hertz),
+        ContactSpec::HuntCrossley { restitution } => (NormalForceLaw::HuntCrossley { restitution }, restitution),
+        ContactSpec::LankaraniNikravesh { restitution } => (NormalForceLaw::LankaraniNikravesh { restitution }, restitution),
+        ContactSpec::Flores { restitution } => (NormalForceLaw::Flores { restitution }, restitution),
+        ContactSpec::Gonthier { restitution } => (NormalForceLaw::Gonthier { restitution }, restitution),
+        ContactSpec::HuGuo { restitution } => (NormalForceLaw::HuGuo { restitution }, restitution),
+    };
+    if !(restitution > 0.0 && restitution <= 1.0) {
+        errors.push(format!("{loc}.restitution"), format!("must lie in (0, 1], got {restitution}"));
+        return None;
+    }
+    Some(law)
+}
+
+pub(super) fn build_friction(f: &FrictionSpec, loc: &str, errors: &mut ModelErrors) -> Option<FrictionLaw> {
+    let built = match *f {
+        FrictionSpec::None => Ok(FrictionLaw::None),
+        FrictionSpec::Coulomb { coefficient, velocity_tolerance } => RegularisedCoulomb::new(coefficient, velocity_tolerance).map(FrictionLaw::Coulomb),
+        FrictionSpec::Ambrosio { coefficient, v0, v1 } => AmbrosioCoulomb::new(coefficient, v0, v1).map(FrictionLaw::Ambrosio),
+        FrictionSpec::Threlfall { coefficient, v0 } => Threlfall::new(coefficient, v0).map(FrictionLaw::Threlfall),
+        FrictionSpec::Stiction { static_coefficient, kinetic_coefficient, stiction_velocity, transition_velocity } => {
+            StictionFriction::new(static_coefficient, kinetic_coefficient, stiction_velocity, transition_velocity).map(FrictionLaw::Stiction)
+        }
+    };
+    built.map_err(|message| errors.push(loc, message)).ok()
+}
+
+pub(super) fn build_function(f: &FunctionSpec, loc: &str, errors: &mut ModelErrors) -> Option<TimeFunction> {
+    let finite = |values: &[f64], errors: &mut ModelErrors| {
+        let ok = values.iter().all(|v| v.is_finite());
+        if !ok {
+            errors.push(loc, format!("values must be finite, got {values:?}"));
+        }
+        ok
+    };
+    match f {
+        FunctionSpec::Constant { value } => finite(&[*value], errors).then_some(TimeFunction::Constant(*value)),
+        FunctionSpec::ConstantRate { initial, rate } => {
+            finite(&[*initial, *rate], errors).then_some(TimeFunction::ConstantRate(ConstantRate { initial: *initial, rate: *rate }))
+        }
+        FunctionSpec::Polynomial { coefficients } => {
+            finite(coefficients, errors).then(|| TimeFunction::Polynomial(Polynomial { coefficients: coefficients.clone() }))
+        }
+        FunctionSpec::CubicStep { t_start, t_end, value_start, value_end } => {
+            if !(t_end > t_start) {
+                errors.push(format!("{loc}.t_end"), format!("must be greater than t_start = {t_start} s, got {t_end} s"));
+                return None;
+            }
+            finite(&[*t_start, *t_end, *value_start, *value_end], errors)
+                .then_some(TimeFunction::CubicStep(CubicStep { t_start: *t_start, t_end: *t_end, value_start: *value_start, value_end: *value_end }))
+        }
+        FunctionSpec::Sine { offset, amplitude, frequency, phase } => finite(&[*offset, *amplitude, *frequency, *phase], errors)
+            .then_some(TimeFunction::Sine(Sine { offset: *offset, amplitude: *amplitude, frequency: *frequency, phase: *phase })),
+        FunctionSpec::Table { times, values } => SplineTable::new(times.clone(), values.clone())
+            .map(TimeFunction::Table)
+            .map_err(|message| errors.push(loc, message))
+            .ok(),
+    }
+}

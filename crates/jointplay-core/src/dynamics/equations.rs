@@ -1,0 +1,172 @@
+//! Equations of motion in absolute coordinates with Lagrange multipliers:
+//!
+//! ```text
+//! M q_ddot + Phi_q^T lambda = Q(q, q_dot, t)
+//!            Phi_q q_ddot   = gamma(q, q_dot, t)
+//! ```
+//!
+//! `M` is constant and block diagonal, so the multipliers come from the
+//! small system `(Phi_q M^-1 Phi_q^T) lambda = Phi_q M^-1 Q - gamma` and
+//! then `q_ddot = M^-1 (Q - Phi_q^T lambda)`.
+
+use super::frame::{add_point_force, Frame};
+use super::state::ContactMemory;
+use super::{Model, Workspace};
+use crate::error::SimulationError;
+use crate::force::gravity_generalised_force;
+use crate::joint::ConstraintRows;
+use crate::linalg::{cholesky_factor, cholesky_solve, RankDeficiency};
+
+/// How constraint drift is controlled.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Stabilization {
+    /// Project positions and velocities back onto the constraints after every accepted step (default).
+    Projection,
+    /// Baumgarte: `gamma - 2 alpha Phi_dot - beta^2 Phi` [1/s, 1/s].
+    Baumgarte {
+        /// Damping rate alpha [1/s].
+        alpha: f64,
+        /// Stiffness rate beta [1/s].
+        beta: f64,
+    },
+    /// No drift control (for tests of the integrators).
+    None,
+}
+
+/// Computes the frames of all bodies from `q` and `q_dot`.
+pub fn update_frames(model: &Model, q: &[f64], qdot: &[f64], frames: &mut [Frame]) {
+    for k in 0..model.bodies.len() {
+        frames[k + 1] = Frame::from_coordinates(&q[3 * k..3 * k + 3], &qdot[3 * k..3 * k + 3]);
+    }
+}
+
+/// Fills the Jacobian, `nu` and `gamma` of the first `n_constraints`
+/// constraints from the current frames; returns the number of rows.
+pub(crate) fn linearise_constraints(model: &Model, n_constraints: usize, t: f64, ws: &mut Workspace) -> usize {
+    let rows = model.row_offsets[n_constraints];
+    for r in 0..rows {
+        ws.jacobian.row_mut(r).fill(0.0);
+    }
+    for (k, c) in model.constraints[..n_constraints].iter().enumerate() {
+        let target = ConstraintRows { jacobian: &mut ws.jacobian, row: model.row_offsets[k], nu: &mut ws.nu, gamma: &mut ws.gamma };
+        c.kind.linearise(&ws.frames, t, target);
+    }
+    rows
+}
+
+/// Fills `ws.residual` for the first `n_constraints` constraints; returns the largest |residual| and its row.
+pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, ws: &mut Workspace) -> (f64, usize) {
+    for (k, c) in model.constraints[..n_constraints].iter().enumerate() {
+        let (a, b) = (model.row_offsets[k], model.row_offsets[k + 1]);
+        c.kind.residual(&ws.frames, t, &mut ws.residual[a..b]);
+    }
+    let rows = model.row_offsets[n_constraints];
+    ws.residual[..rows].iter().enumerate().fold((0.0, 0), |(m, i), (r, v)| if v.abs() > m { (v.abs(), r) } else { (m, i) })
+}
+
+/// Forms `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows and factors it in place.
+pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
+    let n = model.n_coordinates();
+    for a in 0..rows {
+        for b in 0..=a {
+            let (ra, rb) = (ws.jacobian.row(a), ws.jacobian.row(b));
+            let mut s = 0.0;
+            for k in 0..n {
+                s += ra[k] * model.inverse_mass[k] * rb[k];
+            }
+            ws.schur[a * rows + b] = s;
+            ws.schur[b * rows + a] = s;
+        }
+    }
+    cholesky_factor(&mut ws.schur[..rows * rows], rows)
+}
+
+/// Error for a rank-deficient constraint matrix, naming the owning element.
+pub(crate) fn singular_error(model: &Model, t: f64, deficiency: RankDeficiency) -> SimulationError {
+    let owner = &model.elements[model.row_owner[deficiency.row]];
+    SimulationError::SingularConfiguration {
+        time: t,
+        element: owner.name.clone(),
+        cause: format!(
+            "its equations became dependent on the others (relative pivot {:.2e}); the mechanism is locked, at a dead point, or redundantly constrained",
+            deficiency.relative_pivot
+        ),
+    }
+}
+
+/// Applied generalised forces: gravity, force elements and clearance
+/// contacts (whose evaluations are kept in the workspace).
+fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, ws: &mut Workspace) {
+    ws.generalised_force.fill(0.0);
+    gravity_generalised_force(&model.masses, model.gravity, &mut ws.generalised_force);
+    for (k, element) in model.forces.iter().enumerate() {
+        ws.force_outputs[k] = element.apply(&ws.frames, t, &mut ws.generalised_force);
+    }
+    for (k, joint) in model.clearance_joints.iter().enumerate() {
+        let c = joint.evaluate(&ws.frames, memory[k].onset_velocity);
+        if c.in_contact {
+            let (bi, bj) = (joint.bearing.body, joint.journal.body);
+            add_point_force(&mut ws.generalised_force, &ws.frames[bj.0], bj, c.journal_contact_point, c.force_on_journal);
+            add_point_force(&mut ws.generalised_force, &ws.frames[bi.0], bi, c.bearing_contact_point, -c.force_on_journal);
+        }
+        ws.contacts[k] = c;
+    }
+}
+
+/// Evaluates the accelerations `ws.accelerations` and multipliers
+/// `ws.multipliers` at `(t, q, q_dot)`. Never allocates.
+pub fn accelerations(
+    model: &Model,
+    memory: &[ContactMemory],
+    t: f64,
+    q: &[f64],
+    qdot: &[f64],
+    stabilization: Stabilization,
+    ws: &mut Workspace,
+) -> Result<(), SimulationError> {
+    let n = model.n_coordinates();
+    update_frames(model, q, qdot, &mut ws.frames);
+    applied_forces(model, memory, t, ws);
+    let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
+    if let Stabilization::Baumgarte { alpha, beta } = stabilization {
+        constraint_residuals(model, model.n_dynamic_constraints, t, ws);
+        for r in 0..rows {
+            let phi_dot: f64 = ws.jacobian.row(r).iter().zip(qdot).map(|(j, v)| j * v).sum::<f64>() - ws.nu[r];
+            ws.gamma[r] -= 2.0 * alpha * phi_dot + beta * beta * ws.residual[r];
+        }
+    }
+    // lambda from (J M^-1 J^T) lambda = J M^-1 Q - gamma
+    if rows > 0 {
+        factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
+        for k in 0..n {
+            ws.scratch[k] = model.inverse_mass[k] * ws.generalised_force[k];
+        }
+        for r in 0..rows {
+            ws.multipliers[r] = ws.jacobian.row(r).iter().zip(&ws.scratch).map(|(j, a)| j * a).sum::<f64>() - ws.gamma[r];
+        }
+        cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
+        ws.jacobian.mul_transpose_vec(&ws.multipliers[..rows], &mut ws.scratch);
+    } else {
+        ws.scratch.fill(0.0);
+    }
+    // q_ddot = M^-1 (Q - J^T lambda)
+    for k in 0..n {
+        ws.accelerations[k] = model.inverse_mass[k] * (ws.generalised_force[k] - ws.scratch[k]);
+    }
+    check_finite(model, t, ws)
+}
+
+/// Names the first element whose output is not finite.
+fn check_finite(model: &Model, t: f64, ws: &Workspace) -> Result<(), SimulationError> {
+    if ws.accelerations.iter().all(|a| a.is_finite()) {
+        return Ok(());
+    }
+    let element = ws
+        .contacts
+        .iter()
+        .position(|c| !(c.normal_force.is_finite() && c.friction_force.is_finite()))
+        .map(|k| model.clearance_names[k].clone())
+        .or_else(|| ws.force_outputs.iter().position(|f| !f.primary.is_finite()).map(|k| model.force_names[k].clone()))
+        .unwrap_or_else(|| "state".to_string());
+    Err(SimulationError::NonFinite { time: t, element })
+}

@@ -1,0 +1,139 @@
+//! Position and velocity of a body frame, evaluated once per right-hand side.
+
+use nalgebra::Vector2;
+
+/// 2D vector [m, m/s, N, ...].
+pub type Vec2 = Vector2<f64>;
+
+/// Index of a body in a model; 0 is the ground.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct BodyIndex(pub usize);
+
+impl BodyIndex {
+    /// The fixed frame.
+    pub const GROUND: BodyIndex = BodyIndex(0);
+
+    /// True for the ground.
+    pub fn is_ground(self) -> bool {
+        self.0 == 0
+    }
+
+    /// Index of the body's first generalised coordinate `x`, or `None` for
+    /// the ground. Planar rigid bodies own `(x, y, phi)` in that order.
+    #[inline]
+    pub fn coordinate(self) -> Option<usize> {
+        if self.0 == 0 { None } else { Some(3 * (self.0 - 1)) }
+    }
+}
+
+/// A point fixed in a body, in body coordinates [m].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BodyPoint {
+    /// The body it belongs to.
+    pub body: BodyIndex,
+    /// Coordinates in the body frame [m].
+    pub local: Vec2,
+}
+
+/// `perp(v)`: `v` turned by +90 degrees, so that `d(A s)/dphi = perp(A s)`
+/// and `omega x v = omega perp(v)`.
+#[inline]
+pub fn perp(v: Vec2) -> Vec2 {
+    Vec2::new(-v.y, v.x)
+}
+
+/// z component of the planar cross product `a x b`.
+#[inline]
+pub fn cross(a: Vec2, b: Vec2) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// Pose and velocity of one body frame (the ground is the identity at rest).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Frame {
+    /// Position of the origin (centre of mass) [m].
+    pub position: Vec2,
+    /// Orientation [rad].
+    pub angle: f64,
+    /// cos(angle) [-].
+    pub cos: f64,
+    /// sin(angle) [-].
+    pub sin: f64,
+    /// Velocity of the origin [m/s].
+    pub velocity: Vec2,
+    /// Angular velocity [rad/s].
+    pub angular_velocity: f64,
+}
+
+impl Frame {
+    /// The ground frame.
+    pub const GROUND: Frame = Frame {
+        position: Vec2::new(0.0, 0.0),
+        angle: 0.0,
+        cos: 1.0,
+        sin: 0.0,
+        velocity: Vec2::new(0.0, 0.0),
+        angular_velocity: 0.0,
+    };
+
+    /// Frame of a body from its coordinates `(x, y, phi)` and their rates.
+    #[inline]
+    pub fn from_coordinates(q: &[f64], qdot: &[f64]) -> Frame {
+        let (sin, cos) = q[2].sin_cos();
+        Frame {
+            position: Vec2::new(q[0], q[1]),
+            angle: q[2],
+            cos,
+            sin,
+            velocity: Vec2::new(qdot[0], qdot[1]),
+            angular_velocity: qdot[2],
+        }
+    }
+
+    /// `A s`: a body-frame vector expressed in the global frame.
+    #[inline]
+    pub fn rotate(&self, s: Vec2) -> Vec2 {
+        Vec2::new(self.cos * s.x - self.sin * s.y, self.sin * s.x + self.cos * s.y)
+    }
+
+    /// Global position of a body point [m].
+    #[inline]
+    pub fn point(&self, s: Vec2) -> Vec2 {
+        self.position + self.rotate(s)
+    }
+
+    /// Global velocity of a body point [m/s].
+    #[inline]
+    pub fn point_velocity(&self, s: Vec2) -> Vec2 {
+        self.velocity + perp(self.rotate(s)) * self.angular_velocity
+    }
+
+    /// Velocity [m/s] of the material point of this body that is at the
+    /// global position `p` [m] (not necessarily a named point).
+    #[inline]
+    pub fn material_velocity_at(&self, p: Vec2) -> Vec2 {
+        self.velocity + perp(p - self.position) * self.angular_velocity
+    }
+}
+
+/// Adds `(dx, dy, dphi)` to the columns of `body` in one Jacobian row.
+#[inline]
+pub fn add_body_columns(row: &mut [f64], body: BodyIndex, dx: f64, dy: f64, dphi: f64) {
+    if let Some(c) = body.coordinate() {
+        row[c] += dx;
+        row[c + 1] += dy;
+        row[c + 2] += dphi;
+    }
+}
+
+/// Adds a force `f` [N] acting at the global point `p` [m] of `body` to the
+/// generalised force vector (force on `x, y`, moment about the centre of
+/// mass on `phi`).
+#[inline]
+pub fn add_point_force(generalised: &mut [f64], frame: &Frame, body: BodyIndex, p: Vec2, f: Vec2) {
+    if let Some(c) = body.coordinate() {
+        generalised[c] += f.x;
+        generalised[c + 1] += f.y;
+        generalised[c + 2] += cross(p - frame.position, f);
+    }
+}

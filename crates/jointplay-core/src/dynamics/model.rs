@@ -1,0 +1,127 @@
+//! The compiled, immutable description of a mechanism.
+
+use super::channels::Channel;
+use super::frame::{BodyIndex, Vec2};
+use crate::force::ForceElement;
+use crate::joint::{ClearanceRevolute, Constraint};
+
+/// A planar rigid body with its frame at the centre of mass.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Body {
+    /// Name.
+    pub name: String,
+    /// Mass [kg].
+    pub mass: f64,
+    /// Moment of inertia about the centre of mass [kg m^2].
+    pub inertia: f64,
+}
+
+/// What an element owning constraint equations is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ElementKind {
+    /// Ideal revolute joint.
+    RevoluteJoint,
+    /// Ideal translational joint.
+    TranslationalJoint,
+    /// Ideal fixed joint.
+    FixedJoint,
+    /// Driver of a revolute joint's relative angle.
+    AngleDriver,
+    /// Driver of a translational joint's displacement.
+    DisplacementDriver,
+    /// A clearance joint held at its initial eccentricity while assembling.
+    AssemblyLock,
+}
+
+/// An element that owns constraint equations (joint, driver or assembly lock).
+#[derive(Clone, Debug, PartialEq)]
+pub struct IdealElement {
+    /// Name (as in the model description).
+    pub name: String,
+    /// Kind.
+    pub kind: ElementKind,
+    /// First body.
+    pub first: BodyIndex,
+    /// Second body.
+    pub second: BodyIndex,
+    /// Point of the second body at which the reaction moment is reported (body frame) [m].
+    pub second_point: Vec2,
+    /// Unit axis in the first body's frame (translational joints and their drivers) [-].
+    pub axis: Vec2,
+    /// Indices of its constraints in `Model::constraints`.
+    pub constraints: std::ops::Range<usize>,
+}
+
+/// The compiled mechanism. Built by [`super::compile`]; never changes.
+#[derive(Clone, Debug)]
+pub struct Model {
+    /// Name of the mechanism.
+    pub name: String,
+    /// Rigid bodies; body `k` has [`BodyIndex`]`(k + 1)`.
+    pub bodies: Vec<Body>,
+    /// Names of the named points of every body (`"crank.A"`) and their body-frame coordinates.
+    pub points: Vec<(String, BodyIndex, Vec2)>,
+    /// Gravitational acceleration [m/s^2].
+    pub gravity: Vec2,
+    /// Masses of the bodies in order [kg].
+    pub masses: Vec<f64>,
+    /// Diagonal of `M^-1` in coordinate order [1/kg, 1/kg, 1/(kg m^2)].
+    pub inverse_mass: Vec<f64>,
+    /// Constraints: the dynamic ones first, then the assembly locks of the clearance joints.
+    pub constraints: Vec<Constraint>,
+    /// How many of `constraints` act during the simulation.
+    pub n_dynamic_constraints: usize,
+    /// First equation row of every constraint, plus the total at the end.
+    pub row_offsets: Vec<usize>,
+    /// Owner (index into `elements`) of every equation row.
+    pub row_owner: Vec<usize>,
+    /// Joints, drivers and assembly locks that own constraints.
+    pub elements: Vec<IdealElement>,
+    /// Clearance joints.
+    pub clearance_joints: Vec<ClearanceRevolute>,
+    /// Names of the clearance joints.
+    pub clearance_names: Vec<String>,
+    /// Force elements.
+    pub forces: Vec<ForceElement>,
+    /// Names of the force elements.
+    pub force_names: Vec<String>,
+    /// Approximate initial coordinates from the description.
+    pub initial_coordinates: Vec<f64>,
+    /// Approximate initial velocities from the description.
+    pub initial_velocities: Vec<f64>,
+    /// Output channels, in recording order.
+    pub(crate) channels: Vec<Channel>,
+}
+
+impl Model {
+    /// Number of generalised coordinates.
+    pub fn n_coordinates(&self) -> usize {
+        3 * self.bodies.len()
+    }
+
+    /// Number of constraint equations active during the simulation.
+    pub fn n_dynamic_equations(&self) -> usize {
+        self.row_offsets[self.n_dynamic_constraints]
+    }
+
+    /// Number of constraint equations including the assembly locks.
+    pub fn n_assembly_equations(&self) -> usize {
+        *self.row_offsets.last().unwrap_or(&0)
+    }
+
+    /// Degrees of freedom (coordinates minus simulation equations; the two
+    /// relative freedoms of each clearance joint are counted).
+    pub fn degrees_of_freedom(&self) -> i64 {
+        self.n_coordinates() as i64 - self.n_dynamic_equations() as i64
+    }
+
+    /// Name of a body index (`ground` for 0).
+    pub fn body_name(&self, body: BodyIndex) -> &str {
+        if body.is_ground() { crate::spec::GROUND } else { &self.bodies[body.0 - 1].name }
+    }
+
+    /// Names, units and descriptions of the output channels.
+    pub fn channel_infos(&self) -> Vec<super::ChannelInfo> {
+        self.channels.iter().map(|c| c.info.clone()).collect()
+    }
+}

@@ -1,0 +1,80 @@
+//! Mass-weighted projection of positions and velocities onto the
+//! constraint manifold: the minimum-norm (in the metric of `M`) corrections
+//! `dq = -M^-1 Phi_q^T (Phi_q M^-1 Phi_q^T)^-1 Phi` (Newton on the
+//! constraints, with the driver equations held) and
+//! `dv = -M^-1 Phi_q^T (Phi_q M^-1 Phi_q^T)^-1 (Phi_q v - nu)`.
+
+use super::equations::{constraint_residuals, factor_constraint_matrix, linearise_constraints, singular_error, update_frames};
+use super::{Model, Workspace};
+use crate::error::SimulationError;
+use crate::linalg::cholesky_solve;
+
+/// Newton on `Phi(q, t) = 0` for the first `n_constraints` constraints.
+/// Returns the number of iterations taken.
+pub(crate) fn project_positions(
+    model: &Model,
+    n_constraints: usize,
+    t: f64,
+    q: &mut [f64],
+    tolerance: f64,
+    max_iterations: usize,
+    ws: &mut Workspace,
+) -> Result<usize, SimulationError> {
+    let n = model.n_coordinates();
+    let rows = model.row_offsets[n_constraints];
+    if rows == 0 {
+        return Ok(0);
+    }
+    for iteration in 0..=max_iterations {
+        ws.scratch.fill(0.0);
+        update_frames(model, q, &ws.scratch, &mut ws.frames);
+        let (largest, row) = constraint_residuals(model, n_constraints, t, ws);
+        if largest <= tolerance {
+            return Ok(iteration);
+        }
+        if iteration == max_iterations || !largest.is_finite() {
+            return Err(SimulationError::ConstraintViolation {
+                time: t,
+                element: model.elements[model.row_owner[row]].name.clone(),
+                residual: largest,
+            });
+        }
+        linearise_constraints(model, n_constraints, t, ws);
+        factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
+        ws.multipliers[..rows].copy_from_slice(&ws.residual[..rows]);
+        cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
+        ws.jacobian.mul_transpose_vec(&ws.multipliers[..rows], &mut ws.scratch);
+        for k in 0..n {
+            q[k] -= model.inverse_mass[k] * ws.scratch[k];
+        }
+    }
+    unreachable!("the loop returns on its last iteration")
+}
+
+/// Corrects `q_dot` so that `Phi_q q_dot = nu` for the first `n_constraints` constraints.
+pub(crate) fn project_velocities(
+    model: &Model,
+    n_constraints: usize,
+    t: f64,
+    q: &[f64],
+    qdot: &mut [f64],
+    ws: &mut Workspace,
+) -> Result<(), SimulationError> {
+    let n = model.n_coordinates();
+    let rows = model.row_offsets[n_constraints];
+    if rows == 0 {
+        return Ok(());
+    }
+    update_frames(model, q, qdot, &mut ws.frames);
+    linearise_constraints(model, n_constraints, t, ws);
+    factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
+    for r in 0..rows {
+        ws.multipliers[r] = ws.jacobian.row(r).iter().zip(qdot.iter()).map(|(j, v)| j * v).sum::<f64>() - ws.nu[r];
+    }
+    cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
+    ws.jacobian.mul_transpose_vec(&ws.multipliers[..rows], &mut ws.scratch);
+    for k in 0..n {
+        qdot[k] -= model.inverse_mass[k] * ws.scratch[k];
+    }
+    Ok(())
+}

@@ -1,0 +1,241 @@
+//! Engine checks against closed forms: slider-crank kinematics, static
+//! reactions, a pendulum's period, and the errors for locked or redundant
+//! mechanisms.
+
+use super::*;
+use crate::integrate::IntegratorOptions;
+use crate::spec::ModelSpec;
+use std::f64::consts::PI;
+
+fn model(json: &str) -> Model {
+    let spec: ModelSpec = serde_json::from_str(json).expect("valid json spec");
+    compile(&spec).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Ideal slider-crank: crank a = 0.05 m, rod l = 0.12 m, driven at `omega` [rad/s].
+fn slider_crank(omega: f64, gravity: f64) -> Model {
+    model(&format!(
+        r#"{{
+        "name": "slider-crank", "gravity": [0, {gravity}],
+        "ground_points": [{{"name": "O", "position": [0, 0]}}, {{"name": "line", "position": [0, 0]}}],
+        "bodies": [
+          {{"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0],
+            "points": [{{"name": "O", "position": [-0.025, 0]}}, {{"name": "A", "position": [0.025, 0]}}]}},
+          {{"name": "rod", "mass": 0.21, "inertia": 2.5e-4, "position": [0.11, 0.0],
+            "points": [{{"name": "A", "position": [-0.06, 0]}}, {{"name": "B", "position": [0.06, 0]}}]}},
+          {{"name": "slider", "mass": 0.14, "inertia": 1e-4, "position": [0.17, 0.0],
+            "points": [{{"name": "B", "position": [0, 0]}}]}}
+        ],
+        "joints": [
+          {{"type": "revolute", "name": "O", "first": "ground.O", "second": "crank.O"}},
+          {{"type": "revolute", "name": "A", "first": "crank.A", "second": "rod.A"}},
+          {{"type": "revolute", "name": "B", "first": "rod.B", "second": "slider.B"}},
+          {{"type": "translational", "name": "guide", "first": "ground.line", "second": "slider.B", "axis": [1, 0]}}
+        ],
+        "drivers": [{{"name": "motor", "joint": "O", "function": {{"kind": "constant_rate", "initial": 0, "rate": {omega}}}}}]
+        }}"#
+    ))
+}
+
+/// Closed-form slider position, velocity and acceleration for crank angle `theta`.
+fn slider_closed_form(a: f64, l: f64, omega: f64, theta: f64) -> (f64, f64, f64) {
+    let (s, c) = theta.sin_cos();
+    let root = (l * l - a * a * s * s).sqrt();
+    let x = a * c + root;
+    let v = -a * omega * s - a * a * omega * s * c / root;
+    // d/dt of v with theta_dot = omega
+    let h = 1e-6;
+    let v_at = |th: f64| {
+        let (s, c) = th.sin_cos();
+        -a * omega * s - a * a * omega * s * c / (l * l - a * a * s * s).sqrt()
+    };
+    let acc = (v_at(theta + h) - v_at(theta - h)) / (2.0 * h) * omega;
+    (x, v, acc)
+}
+
+#[test]
+fn slider_crank_kinematics_match_the_closed_form() {
+    let omega = 5000.0 * 2.0 * PI / 60.0;
+    let m = slider_crank(omega, 0.0);
+    let mut ws = Workspace::new(&m);
+    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+    // one crank revolution; the mechanism has no freedom, so every channel is kinematic
+    let period = 2.0 * PI / omega;
+    let options = SimulationOptions {
+        integrator: IntegratorOptions { output_step: Some(period / 50.0), ..Default::default() },
+        ..Default::default()
+    };
+    let outcome = simulate(&m, &mut state, period, &options, None);
+    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    let tr = &outcome.trajectory;
+    let (x, v, a) = (tr.channel("slider.x").unwrap(), tr.channel("slider.vx").unwrap(), tr.channel("slider.ax").unwrap());
+    assert!(tr.time.len() >= 50);
+    for (k, &t) in tr.time.iter().enumerate() {
+        let (xe, ve, ae) = slider_closed_form(0.05, 0.12, omega, omega * t);
+        assert!((x[k] - xe).abs() < 1e-10, "t={t}: x {} vs {xe}", x[k]);
+        assert!((v[k] - ve).abs() < 1e-8 * omega, "t={t}: v {} vs {ve}", v[k]);
+        assert!((a[k] - ae).abs() < 1e-5 * ae.abs().max(omega * omega * 0.05), "t={t}: a {} vs {ae}", a[k]);
+    }
+}
+
+#[test]
+fn horizontal_bar_held_by_a_driver_carries_its_weight_at_the_pin() {
+    // bar of 2 kg and 0.8 m pinned at one end, held horizontal: pin force m g up, driver torque m g l/2
+    let m = model(
+        r#"{"gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
+            "bodies": [{"name": "bar", "mass": 2.0, "inertia": 0.1067, "position": [0.4, 0],
+                        "points": [{"name": "O", "position": [-0.4, 0]}]}],
+            "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}],
+            "drivers": [{"name": "hold", "joint": "pin", "function": {"kind": "constant", "value": 0}}]}"#,
+    );
+    let mut ws = Workspace::new(&m);
+    let state = assemble(&m, 0.0, &mut ws).unwrap();
+    let outcome = simulate(&m, &mut state.clone(), 1e-3, &SimulationOptions::default(), None);
+    assert!(outcome.error.is_none());
+    let tr = &outcome.trajectory;
+    let last = |name: &str| *tr.channel(name).unwrap().last().unwrap();
+    assert!((last("pin.fx")).abs() < 1e-9);
+    assert!((last("pin.fy") - 2.0 * 9.81).abs() < 1e-9, "{}", last("pin.fy"));
+    assert!((last("hold.torque") - 2.0 * 9.81 * 0.4).abs() < 1e-9, "{}", last("hold.torque"));
+}
+
+#[test]
+fn statically_loaded_slider_crank_balances_by_virtual_work() {
+    // crank held at theta by the driver, a constant force P pushes the slider: T = -P dx/dtheta
+    let mut spec: ModelSpec = serde_json::from_str(&serde_json::to_string(&slider_crank_spec_json()).unwrap()).unwrap();
+    let theta: f64 = 0.7;
+    spec.drivers[0].function = crate::spec::FunctionSpec::Constant { value: theta };
+    spec.bodies[0].angle = theta;
+    spec.forces.push(crate::spec::ForceSpec::PointForce {
+        name: "load".into(),
+        point: "slider.B".into(),
+        fx: crate::spec::FunctionSpec::Constant { value: -100.0 },
+        fy: crate::spec::FunctionSpec::Constant { value: 0.0 },
+    });
+    let m = compile(&spec).unwrap();
+    let mut ws = Workspace::new(&m);
+    let state = assemble(&m, 0.0, &mut ws).unwrap();
+    let outcome = simulate(&m, &mut state.clone(), 1e-4, &SimulationOptions::default(), None);
+    let torque = outcome.trajectory.channel("motor.torque").unwrap()[0];
+    let (a, l) = (0.05, 0.12);
+    let dx_dtheta = -a * theta.sin() - a * a * theta.sin() * theta.cos() / (l * l - a * a * theta.sin().powi(2)).sqrt();
+    assert!((torque - (-(-100.0) * dx_dtheta)).abs() < 1e-9, "{torque} vs {}", 100.0 * dx_dtheta);
+    // the guide carries the vertical load; the slider has no vertical acceleration
+    assert!(outcome.trajectory.channel("slider.ay").unwrap()[0].abs() < 1e-9);
+}
+
+fn slider_crank_spec_json() -> serde_json::Value {
+    let m = slider_crank(0.0, 0.0);
+    let _ = m;
+    serde_json::from_str(
+        r#"{"ground_points": [{"name": "O", "position": [0, 0]}, {"name": "line", "position": [0, 0]}],
+        "bodies": [
+          {"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0],
+            "points": [{"name": "O", "position": [-0.025, 0]}, {"name": "A", "position": [0.025, 0]}]},
+          {"name": "rod", "mass": 0.21, "inertia": 2.5e-4, "position": [0.11, 0.0],
+            "points": [{"name": "A", "position": [-0.06, 0]}, {"name": "B", "position": [0.06, 0]}]},
+          {"name": "slider", "mass": 0.14, "inertia": 1e-4, "position": [0.17, 0.0], "points": [{"name": "B", "position": [0, 0]}]}],
+        "joints": [
+          {"type": "revolute", "name": "O", "first": "ground.O", "second": "crank.O"},
+          {"type": "revolute", "name": "A", "first": "crank.A", "second": "rod.A"},
+          {"type": "revolute", "name": "B", "first": "rod.B", "second": "slider.B"},
+          {"type": "translational", "name": "guide", "first": "ground.line", "second": "slider.B", "axis": [1, 0]}],
+        "drivers": [{"name": "motor", "joint": "O", "function": {"kind": "constant", "value": 0}}]}"#,
+    )
+    .unwrap()
+}
+
+/// Complete elliptic integral of the first kind K(k) by the arithmetic-geometric mean.
+fn elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0, (1.0 - k * k).sqrt());
+    while (a - b).abs() > 1e-15 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    PI / (2.0 * a)
+}
+
+#[test]
+fn pendulum_period_matches_the_elliptic_integral_at_large_amplitude() {
+    // uniform bar, 1 kg, 0.5 m, pinned at one end, released from 60 degrees below horizontal...
+    let (mass, length, g) = (1.0, 0.5, 9.81);
+    let inertia = mass * length * length / 12.0;
+    let theta0: f64 = 1.2; // amplitude from the downward vertical [rad]
+    let angle = -PI / 2.0 + theta0;
+    let (cx, cy) = (0.5 * length * angle.cos(), 0.5 * length * angle.sin());
+    let m = model(&format!(
+        r#"{{"gravity": [0, -{g}], "ground_points": [{{"name": "O", "position": [0, 0]}}],
+            "bodies": [{{"name": "bar", "mass": {mass}, "inertia": {inertia}, "position": [{cx}, {cy}], "angle": {angle},
+                        "points": [{{"name": "O", "position": [-{h}, 0]}}]}}],
+            "joints": [{{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}}]}}"#,
+        h = 0.5 * length
+    ));
+    let mut ws = Workspace::new(&m);
+    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+    let options = SimulationOptions {
+        integrator: IntegratorOptions { rtol: 1e-10, atol: 1e-12, output_step: Some(1e-4), ..Default::default() },
+        ..Default::default()
+    };
+    let outcome = simulate(&m, &mut state, 3.0, &options, None);
+    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    // period from successive downward crossings of omega through zero (turning points at +theta0)
+    let (t, w) = (&outcome.trajectory.time, outcome.trajectory.channel("bar.omega").unwrap());
+    let crossings: Vec<f64> = (1..t.len())
+        .filter(|&k| w[k - 1] > 0.0 && w[k] <= 0.0)
+        .map(|k| t[k - 1] + (t[k] - t[k - 1]) * w[k - 1] / (w[k - 1] - w[k]))
+        .collect();
+    assert!(crossings.len() >= 2, "{crossings:?}");
+    let period = crossings[1] - crossings[0];
+    let pivot_inertia = inertia + mass * (0.5 * length).powi(2);
+    let expected = 4.0 * (pivot_inertia / (mass * g * 0.5 * length)).sqrt() * elliptic_k((theta0 / 2.0).sin());
+    // linear interpolation of omega on a 1e-4 s grid limits the crossing time to ~1e-7 s
+    assert!((period - expected).abs() < 1e-6, "period {period} vs {expected}");
+    // and energy is conserved
+    let e = outcome.trajectory.channel("system.energy").unwrap();
+    let drift = e.iter().map(|v| (v - e[0]).abs()).fold(0.0, f64::max);
+    assert!(drift < 1e-8 * mass * g * length, "energy drift {drift}");
+}
+
+#[test]
+fn redundant_joint_is_reported_as_a_singular_configuration_naming_it() {
+    let m = model(
+        r#"{"ground_points": [{"name": "O", "position": [0, 0]}],
+            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.1, 0], "points": [{"name": "O", "position": [0, 0]}]},
+                       {"name": "free", "mass": 1, "inertia": 0.1}],
+            "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"},
+                       {"type": "revolute", "name": "again", "first": "ground.O", "second": "bar.O"}]}"#,
+    );
+    let mut ws = Workspace::new(&m);
+    // the bar starts off its pin, so assembly must iterate and meets the dependent rows
+    match assemble(&m, 0.0, &mut ws) {
+        Err(crate::SimulationError::SingularConfiguration { element, time, cause }) => {
+            assert_eq!(element, "again");
+            assert_eq!(time, 0.0);
+            assert!(cause.contains("redundantly constrained"), "{cause}");
+        }
+        other => panic!("expected a singular configuration, got {other:?}"),
+    }
+}
+
+#[test]
+fn compile_reports_every_problem_with_its_location() {
+    let spec: ModelSpec = serde_json::from_str(
+        r#"{"bodies": [{"name": "bar", "mass": -1, "inertia": 0.1, "points": [{"name": "O", "position": [0, 0]}]}],
+            "joints": [{"type": "revolute", "name": "pin", "first": "ground.X", "second": "bar.O"},
+                       {"type": "clearance_revolute", "name": "B", "bearing": "bar.O", "journal": "nobody.P",
+                        "bearing_radius": 0.01, "clearance": 0.02,
+                        "bearing_material": {"youngs_modulus": 2e11, "poisson_ratio": 0.3},
+                        "journal_material": {"youngs_modulus": 2e11, "poisson_ratio": 0.3},
+                        "contact": {"law": "lankarani_nikravesh", "restitution": 1.5}}]}"#,
+    )
+    .unwrap();
+    let errors = compile(&spec).unwrap_err().to_string();
+    for expected in [
+        "bodies[0].mass: mass must be > 0, got -1",
+        "joints[0].first: unknown point \"ground.X\" (body \"ground\" has no such point)",
+        "joints[1].journal: unknown point \"nobody.P\" (no body named \"nobody\")",
+        "joints[1].clearance: must be smaller than the bearing radius 0.01 m (the journal radius would be <= 0), got 0.02 m",
+        "joints[1].contact.restitution: must lie in (0, 1], got 1.5",
+    ] {
+        assert!(errors.contains(expected), "missing {expected:?} in\n{errors}");
+    }
+}

@@ -1,0 +1,59 @@
+//! Scratch buffers reused by every evaluation so that the right-hand side
+//! never allocates.
+
+use super::frame::Frame;
+use super::Model;
+use crate::force::ForceOutput;
+use crate::joint::ContactEvaluation;
+use crate::linalg::DenseMatrix;
+
+/// Buffers sized once for a model.
+#[derive(Clone, Debug)]
+pub struct Workspace {
+    /// Frames of the ground (index 0) and every body.
+    pub frames: Vec<Frame>,
+    /// Generalised applied force `Q`.
+    pub generalised_force: Vec<f64>,
+    /// Constraint Jacobian `Phi_q` (all rows including assembly locks).
+    pub jacobian: DenseMatrix,
+    /// Constraint residuals `Phi`.
+    pub residual: Vec<f64>,
+    /// Velocity right-hand side `nu`.
+    pub nu: Vec<f64>,
+    /// Acceleration right-hand side `gamma`.
+    pub gamma: Vec<f64>,
+    /// `Phi_q M^-1 Phi_q^T`, then its Cholesky factor.
+    pub schur: Vec<f64>,
+    /// Lagrange multipliers `lambda`.
+    pub multipliers: Vec<f64>,
+    /// Generalised accelerations `q_ddot`.
+    pub accelerations: Vec<f64>,
+    /// Scratch vector of coordinate length.
+    pub scratch: Vec<f64>,
+    /// Last evaluation of each clearance joint.
+    pub contacts: Vec<ContactEvaluation>,
+    /// Last outputs of each force element.
+    pub force_outputs: Vec<ForceOutput>,
+}
+
+impl Workspace {
+    /// Buffers for `model`.
+    pub fn new(model: &Model) -> Self {
+        let n = model.n_coordinates();
+        let m = model.n_assembly_equations();
+        Self {
+            frames: vec![Frame::GROUND; model.bodies.len() + 1],
+            generalised_force: vec![0.0; n],
+            jacobian: DenseMatrix::zeros(m, n),
+            residual: vec![0.0; m],
+            nu: vec![0.0; m],
+            gamma: vec![0.0; m],
+            schur: vec![0.0; m * m],
+            multipliers: vec![0.0; m],
+            accelerations: vec![0.0; n],
+            scratch: vec![0.0; n],
+            contacts: vec![ContactEvaluation::default(); model.clearance_joints.len()],
+            force_outputs: vec![ForceOutput::default(); model.forces.len()],
+        }
+    }
+}

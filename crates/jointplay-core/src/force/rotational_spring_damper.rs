@@ -1,0 +1,38 @@
+//! Linear torsional spring-damper on the relative angle of two bodies:
+//! torque on the second body `T = -k (theta - theta0) - c theta_dot`,
+//! `theta = phi_j - phi_i`; the first body gets `-T`.
+
+use super::ForceOutput;
+use crate::dynamics::frame::{BodyIndex, Frame};
+
+/// Torsional spring and damper.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RotationalSpringDamper {
+    /// First body.
+    pub first: BodyIndex,
+    /// Second body.
+    pub second: BodyIndex,
+    /// Stiffness k [N m/rad].
+    pub stiffness: f64,
+    /// Damping c [N m s/rad].
+    pub damping: f64,
+    /// Relaxed relative angle theta0 [rad].
+    pub free_angle: f64,
+}
+
+impl RotationalSpringDamper {
+    /// Applies the torque pair; outputs torque on the second body [N m] and relative angle [rad].
+    pub fn apply(&self, frames: &[Frame], generalised: &mut [f64]) -> ForceOutput {
+        let (fi, fj) = (&frames[self.first.0], &frames[self.second.0]);
+        let theta = fj.angle - fi.angle - self.free_angle;
+        let theta_dot = fj.angular_velocity - fi.angular_velocity;
+        let torque = -self.stiffness * theta - self.damping * theta_dot;
+        if let Some(c) = self.second.coordinate() {
+            generalised[c + 2] += torque;
+        }
+        if let Some(c) = self.first.coordinate() {
+            generalised[c + 2] -= torque;
+        }
+        ForceOutput { primary: torque, secondary: theta + self.free_angle, potential_energy: 0.5 * self.stiffness * theta * theta }
+    }
+}

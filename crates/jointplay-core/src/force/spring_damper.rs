@@ -1,0 +1,41 @@
+//! Linear translational spring-damper between two points:
+//! tension `F = k (l - l0) + c l_dot`, pulling the points together.
+
+use super::ForceOutput;
+use crate::dynamics::frame::{add_point_force, BodyPoint, Frame};
+
+/// Point-to-point spring and damper.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SpringDamper {
+    /// Point on the first body.
+    pub first: BodyPoint,
+    /// Point on the second body.
+    pub second: BodyPoint,
+    /// Stiffness k [N/m].
+    pub stiffness: f64,
+    /// Damping coefficient c [N s/m].
+    pub damping: f64,
+    /// Free length l0 [m].
+    pub free_length: f64,
+}
+
+impl SpringDamper {
+    /// Applies the tension to both points; outputs tension [N] and length [m].
+    pub fn apply(&self, frames: &[Frame], generalised: &mut [f64]) -> ForceOutput {
+        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
+        let (pi, pj) = (fi.point(self.first.local), fj.point(self.second.local));
+        let d = pj - pi;
+        let length = d.norm();
+        let stretch = length - self.free_length;
+        let potential_energy = 0.5 * self.stiffness * stretch * stretch;
+        if length == 0.0 {
+            return ForceOutput { primary: 0.0, secondary: 0.0, potential_energy };
+        }
+        let u = d / length;
+        let length_rate = u.dot(&(fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local)));
+        let tension = self.stiffness * stretch + self.damping * length_rate;
+        add_point_force(generalised, fi, self.first.body, pi, u * tension);
+        add_point_force(generalised, fj, self.second.body, pj, -u * tension);
+        ForceOutput { primary: tension, secondary: length, potential_energy }
+    }
+}

@@ -1,0 +1,25 @@
+//! A prescribed torque on a body as a function of time.
+
+use super::ForceOutput;
+use crate::dynamics::frame::BodyIndex;
+use crate::motion::TimeFunction;
+
+/// Torque `T(t)` [N m], counter-clockwise positive.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AppliedTorque {
+    /// Body it acts on.
+    pub body: BodyIndex,
+    /// Torque [N m].
+    pub torque: TimeFunction,
+}
+
+impl AppliedTorque {
+    /// Applies the torque; outputs it [N m].
+    pub fn apply(&self, t: f64, generalised: &mut [f64]) -> ForceOutput {
+        let torque = self.torque.sample(t).value;
+        if let Some(c) = self.body.coordinate() {
+            generalised[c + 2] += torque;
+        }
+        ForceOutput { primary: torque, secondary: 0.0, potential_energy: 0.0 }
+    }
+}
