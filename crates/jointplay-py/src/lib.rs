@@ -1,7 +1,146 @@
-//! Python bindings of jointplay (under construction).
-use pyo3::prelude::*;
+//! Python bindings of jointplay: a thin layer that hands plain data between
+//! Python and [`jointplay_core`]. Errors come back as data; the Python
+//! package raises its own exception types from them.
 
+mod conv;
+
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::Arc;
+
+use jointplay_core::dynamics::{self, Model, Progress, Workspace};
+use jointplay_core::spec::ModelSpec;
+use numpy::{PyArray1, PyArray2};
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// Runs `f`, turning a Rust panic into a Python `RuntimeError` naming it an internal error.
+fn guarded<T>(f: impl FnOnce() -> T) -> PyResult<T> {
+    catch_unwind(AssertUnwindSafe(f)).map_err(|payload| {
+        let detail = payload
+            .downcast_ref::<String>()
+            .cloned()
+            .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+            .unwrap_or_default();
+        PyRuntimeError::new_err(format!("internal error in the jointplay core (please report it): {detail}"))
+    })
+}
+
+/// A compiled mechanism.
+#[pyclass(frozen, module = "jointplay._core")]
+struct CoreModel {
+    model: Arc<Model>,
+}
+
+/// Progress of a running simulation, readable from another thread.
+#[pyclass(frozen, module = "jointplay._core")]
+struct CoreProgress {
+    inner: Arc<Progress>,
+}
+
+#[pymethods]
+impl CoreProgress {
+    #[new]
+    fn new() -> Self {
+        Self { inner: Arc::new(Progress::new()) }
+    }
+
+    /// Simulated time reached [s].
+    fn time(&self) -> f64 {
+        self.inner.time()
+    }
+
+    /// Asks the simulation to stop at its next output sample.
+    fn cancel(&self) {
+        self.inner.cancel();
+    }
+}
+
+/// Compiles a JSON model description. Returns `(model, None)` or `(None, [(location, message), ...])`.
+#[pyfunction]
+fn compile_model(py: Python<'_>, spec_json: &str) -> PyResult<(Option<CoreModel>, Option<Vec<(String, String)>>)> {
+    let spec: ModelSpec = match serde_json::from_str(spec_json) {
+        Ok(spec) => spec,
+        Err(e) => return Ok((None, Some(vec![("model".to_string(), e.to_string())]))),
+    };
+    let compiled = py.detach(|| guarded(|| dynamics::compile(&spec)))?;
+    Ok(match compiled {
+        Ok(model) => (Some(CoreModel { model: Arc::new(model) }), None),
+        Err(errors) => (None, Some(errors.0.into_iter().map(|e| (e.location, e.message)).collect())),
+    })
+}
+
+#[pymethods]
+impl CoreModel {
+    /// Summary of the compiled mechanism (bodies, elements, coordinates, dof, channels).
+    fn describe<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        conv::describe(py, &self.model)
+    }
+
+    /// Consistent initial coordinates and velocities at `t0`, or an error record.
+    fn assemble<'py>(&self, py: Python<'py>, t0: f64) -> PyResult<Bound<'py, PyDict>> {
+        let model = Arc::clone(&self.model);
+        let result = py.detach(move || {
+            guarded(|| {
+                let mut ws = Workspace::new(&model);
+                dynamics::assemble(&model, t0, &mut ws)
+            })
+        })?;
+        let out = PyDict::new(py);
+        match result {
+            Ok(state) => {
+                out.set_item("coordinates", PyArray1::from_slice(py, state.coordinates()))?;
+                out.set_item("velocities", PyArray1::from_slice(py, state.velocities()))?;
+                out.set_item("error", py.None())?;
+            }
+            Err(e) => out.set_item("error", conv::simulation_error(py, &e)?)?,
+        }
+        Ok(out)
+    }
+
+    /// Assembles at `t0` and simulates to `t_end`; the GIL is released while the core runs.
+    #[pyo3(signature = (t0, t_end, options, progress=None))]
+    fn simulate<'py>(
+        &self,
+        py: Python<'py>,
+        t0: f64,
+        t_end: f64,
+        options: &Bound<'py, PyDict>,
+        progress: Option<&CoreProgress>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let options = conv::simulation_options(options)?;
+        let model = Arc::clone(&self.model);
+        let progress = progress.map(|p| Arc::clone(&p.inner));
+        let run = py.detach(move || {
+            guarded(|| {
+                let mut ws = Workspace::new(&model);
+                let mut state = dynamics::assemble(&model, t0, &mut ws).map_err(|e| e)?;
+                Ok(dynamics::simulate(&model, &mut state, t_end, &options, progress.as_deref()))
+            })
+        })?;
+        let out = PyDict::new(py);
+        match run {
+            Ok(outcome) => conv::outcome(py, &out, &outcome)?,
+            Err(e) => {
+                out.set_item("time", PyArray1::<f64>::zeros(py, 0, false))?;
+                out.set_item("values", PyArray2::<f64>::zeros(py, [self.model.channel_infos().len(), 0], false))?;
+                conv::channel_infos(py, &out, &self.model.channel_infos())?;
+                out.set_item("error", conv::simulation_error(py, &e)?)?;
+                out.set_item("statistics", PyDict::new(py))?;
+                out.set_item("diagnostics", PyDict::new(py))?;
+                out.set_item("stage", "assembly")?;
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// The jointplay core.
 #[pymodule]
-fn _core(_m: &Bound<'_, PyModule>) -> PyResult<()> {
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<CoreModel>()?;
+    m.add_class::<CoreProgress>()?;
+    m.add_function(wrap_pyfunction!(compile_model, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -1,0 +1,28 @@
+# The two Quick start commands: `make demo` and `make test`. Each does all
+# set-up on a fresh machine with Python 3.11 and a Rust toolchain: a local
+# virtual environment in .venv, the Python dependencies from pyproject.toml,
+# and a release build of the Rust extension (incremental after the first).
+
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+OUT ?= out/flores_dry
+
+.PHONY: demo test setup bench
+
+$(VENV)/bin/maturin:
+	$(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip "maturin>=1.5,<2"
+
+setup: $(VENV)/bin/maturin
+	$(VENV)/bin/maturin develop --release --extras test --quiet
+
+demo: setup
+	$(PY) examples/flores_slider_crank_dry.py --out $(OUT)
+
+test: setup
+	cargo test --release --quiet
+	$(PY) -m pytest -q
+
+bench: setup
+	$(PY) benches/bench_flores_dry.py

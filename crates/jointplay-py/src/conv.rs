@@ -1,0 +1,136 @@
+//! All conversions between Python objects and core types live here.
+
+use jointplay_core::dynamics::{ChannelInfo, Model, SimulationOptions, SimulationOutcome, Stabilization};
+use jointplay_core::integrate::Method;
+use jointplay_core::SimulationError;
+use numpy::{PyArray1, PyArray2};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+/// Reads simulation options from a dict of plain values (already validated in Python).
+pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> {
+    let mut o = SimulationOptions::default();
+    let get = |key: &str| -> PyResult<Option<f64>> { d.get_item(key)?.filter(|v| !v.is_none()).map(|v| v.extract::<f64>()).transpose() };
+    if let Some(method) = d.get_item("method")? {
+        o.integrator.method = match method.extract::<String>()?.as_str() {
+            "dopri5" => Method::DormandPrince45,
+            "adams" => Method::AdamsPredictorCorrector,
+            other => return Err(PyValueError::new_err(format!("unknown method {other:?}"))),
+        };
+    }
+    if let Some(v) = get("rtol")? {
+        o.integrator.rtol = v;
+    }
+    if let Some(v) = get("atol")? {
+        o.integrator.atol = v;
+    }
+    if let Some(v) = get("max_step")? {
+        o.integrator.max_step = v;
+    }
+    if let Some(v) = get("min_step")? {
+        o.integrator.min_step = v;
+    }
+    o.integrator.initial_step = get("initial_step")?;
+    o.integrator.output_step = get("output_step")?;
+    if let Some(v) = d.get_item("max_steps")?.filter(|v| !v.is_none()) {
+        o.integrator.max_steps = v.extract()?;
+    }
+    if let Some(v) = get("position_tolerance")? {
+        o.position_tolerance = v;
+    }
+    if let Some(s) = d.get_item("stabilization")? {
+        o.stabilization = match s.extract::<String>()?.as_str() {
+            "projection" => Stabilization::Projection,
+            "baumgarte" => Stabilization::Baumgarte { alpha: get("baumgarte_alpha")?.unwrap_or(10.0), beta: get("baumgarte_beta")?.unwrap_or(10.0) },
+            "none" => Stabilization::None,
+            other => return Err(PyValueError::new_err(format!("unknown stabilization {other:?}"))),
+        };
+    }
+    o.integrator.validate().map_err(PyValueError::new_err)?;
+    Ok(o)
+}
+
+/// A simulation error as a dict: kind, message, time, element.
+pub fn simulation_error<'py>(py: Python<'py>, e: &SimulationError) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    let kind = format!("{e:?}");
+    d.set_item("kind", kind.split([' ', '{', '(']).next().unwrap_or(""))?;
+    d.set_item("message", e.to_string())?;
+    d.set_item("time", e.time())?;
+    d.set_item("element", e.element())?;
+    Ok(d)
+}
+
+/// Channel names, units and descriptions into `out`.
+pub fn channel_infos(py: Python<'_>, out: &Bound<'_, PyDict>, infos: &[ChannelInfo]) -> PyResult<()> {
+    out.set_item("names", PyList::new(py, infos.iter().map(|c| c.name.as_str()))?)?;
+    out.set_item("units", PyList::new(py, infos.iter().map(|c| c.unit))?)?;
+    out.set_item("descriptions", PyList::new(py, infos.iter().map(|c| c.description.as_str()))?)?;
+    Ok(())
+}
+
+/// A simulation outcome into `out`.
+pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, o: &SimulationOutcome) -> PyResult<()> {
+    let tr = &o.trajectory;
+    out.set_item("time", PyArray1::from_slice(py, &tr.time))?;
+    out.set_item("values", PyArray2::from_vec2(py, &tr.values).map_err(|e| PyValueError::new_err(e.to_string()))?)?;
+    channel_infos(py, out, &tr.channels)?;
+    let s = &o.statistics;
+    let stats = PyDict::new(py);
+    stats.set_item("accepted_steps", s.accepted_steps)?;
+    stats.set_item("rejected_steps", s.rejected_steps)?;
+    stats.set_item("rhs_evaluations", s.rhs_evaluations)?;
+    stats.set_item("events", s.events)?;
+    stats.set_item("smallest_step", s.smallest_step)?;
+    stats.set_item("largest_step", s.largest_step)?;
+    stats.set_item("restarts", s.restarts)?;
+    out.set_item("statistics", stats)?;
+    let g = &o.diagnostics;
+    let diag = PyDict::new(py);
+    diag.set_item("max_penetration", g.max_penetration)?;
+    diag.set_item("deep_penetration_steps", g.deep_penetration_steps)?;
+    diag.set_item("max_projection_iterations", g.max_projection_iterations)?;
+    diag.set_item("impacts", g.impacts.clone())?;
+    out.set_item("diagnostics", diag)?;
+    match &o.error {
+        Some(e) => out.set_item("error", simulation_error(py, e)?)?,
+        None => out.set_item("error", py.None())?,
+    }
+    out.set_item("stage", "integration")?;
+    Ok(())
+}
+
+/// Summary of a compiled model.
+pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("name", &m.name)?;
+    let bodies = PyList::empty(py);
+    for b in &m.bodies {
+        let e = PyDict::new(py);
+        e.set_item("name", &b.name)?;
+        e.set_item("mass", b.mass)?;
+        e.set_item("inertia", b.inertia)?;
+        bodies.append(e)?;
+    }
+    d.set_item("bodies", bodies)?;
+    let elements = PyList::empty(py);
+    for el in &m.elements {
+        let e = PyDict::new(py);
+        e.set_item("name", &el.name)?;
+        e.set_item("kind", format!("{:?}", el.kind))?;
+        e.set_item("first", m.body_name(el.first))?;
+        e.set_item("second", m.body_name(el.second))?;
+        let rows: usize = el.constraints.clone().map(|k| m.row_offsets[k + 1] - m.row_offsets[k]).sum();
+        e.set_item("equations", rows)?;
+        elements.append(e)?;
+    }
+    d.set_item("elements", elements)?;
+    d.set_item("clearance_joints", m.clearance_names.clone())?;
+    d.set_item("forces", m.force_names.clone())?;
+    d.set_item("n_coordinates", m.n_coordinates())?;
+    d.set_item("n_equations", m.n_dynamic_equations())?;
+    d.set_item("degrees_of_freedom", m.degrees_of_freedom())?;
+    channel_infos(py, &d, &m.channel_infos())?;
+    Ok(d)
+}

@@ -1,0 +1,95 @@
+"""Contact, stiffness and friction laws of a clearance joint, as plain data.
+
+See ``docs/theory/`` for the equation, units and source of each law.
+"""
+
+from __future__ import annotations
+
+STEEL = {"youngs_modulus": 207e9, "poisson_ratio": 0.3}
+"""Structural steel, E = 207 GPa, nu = 0.3 (the value the Flores papers use)."""
+
+
+def material(youngs_modulus: float, poisson_ratio: float) -> dict:
+    """An elastic material: Young's modulus [Pa], Poisson's ratio [-]."""
+    return {"youngs_modulus": float(youngs_modulus), "poisson_ratio": float(poisson_ratio)}
+
+
+# normal force laws ---------------------------------------------------------
+
+def hertz() -> dict:
+    """Elastic Hertz contact, no dissipation."""
+    return {"law": "hertz"}
+
+
+def hunt_crossley(restitution: float) -> dict:
+    """Hunt-Crossley, D = 3(1-e)/2."""
+    return {"law": "hunt_crossley", "restitution": float(restitution)}
+
+
+def lankarani_nikravesh(restitution: float) -> dict:
+    """Lankarani-Nikravesh, D = 3(1-e^2)/4 (accurate for e near 1)."""
+    return {"law": "lankarani_nikravesh", "restitution": float(restitution)}
+
+
+def flores(restitution: float) -> dict:
+    """Flores et al. 2011, D = 8(1-e)/(5e) (for any e)."""
+    return {"law": "flores", "restitution": float(restitution)}
+
+
+def gonthier(restitution: float) -> dict:
+    """Gonthier et al. 2004."""
+    return {"law": "gonthier", "restitution": float(restitution)}
+
+
+def hu_guo(restitution: float) -> dict:
+    """Hu and Guo 2015."""
+    return {"law": "hu_guo", "restitution": float(restitution)}
+
+
+# stiffness laws ------------------------------------------------------------
+
+def hertz_cylinder(exponent: float | None = None) -> dict:
+    """K delta^n with K = (4/3) E* sqrt(R*); n = 1.5 unless given."""
+    if exponent is None:
+        return {"law": "hertz_cylinder"}
+    return {"law": "hertz_cylinder_exponent", "exponent": float(exponent)}
+
+
+def johnson_line() -> dict:
+    """Johnson / ESDU line contact of a cylinder in a bore (needs the bearing length)."""
+    return {"law": "johnson_line"}
+
+
+def rogers_andrews() -> dict:
+    """Rogers-Andrews logarithmic law (needs the bearing length)."""
+    return {"law": "rogers_andrews"}
+
+
+# friction laws -------------------------------------------------------------
+
+def frictionless() -> dict:
+    """No friction."""
+    return {"law": "none"}
+
+
+def coulomb(coefficient: float, velocity_tolerance: float = 1e-3) -> dict:
+    """Coulomb friction regularised by tanh(v / velocity_tolerance)."""
+    return {"law": "coulomb", "coefficient": float(coefficient), "velocity_tolerance": float(velocity_tolerance)}
+
+
+def ambrosio(coefficient: float, v0: float = 1e-4, v1: float = 1e-3) -> dict:
+    """Modified Coulomb law of Ambrosio: none below v0, full above v1, linear between [m/s]."""
+    return {"law": "ambrosio", "coefficient": float(coefficient), "v0": float(v0), "v1": float(v1)}
+
+
+def threlfall(coefficient: float, v0: float = 1e-3) -> dict:
+    """Threlfall: mu F_n (1 - exp(-3|v|/v0))."""
+    return {"law": "threlfall", "coefficient": float(coefficient), "v0": float(v0)}
+
+
+def stiction(static_coefficient: float, kinetic_coefficient: float,
+             stiction_velocity: float = 1e-4, transition_velocity: float = 1e-3) -> dict:
+    """Static and kinetic coefficients with velocity tolerances [m/s]."""
+    return {"law": "stiction", "static_coefficient": float(static_coefficient),
+            "kinetic_coefficient": float(kinetic_coefficient),
+            "stiction_velocity": float(stiction_velocity), "transition_velocity": float(transition_velocity)}

@@ -1,0 +1,330 @@
+"""Building a mechanism in Python and simulating it.
+
+A :class:`Model` collects plain data (SI units) in the same layout the core
+reads; nothing is computed until :meth:`Model.simulate` or
+:meth:`Model.check`, which compile it once (all problems reported together
+as a :class:`~jointplay.errors.ModelError`).
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import threading
+import time as _time
+from collections.abc import Callable, Sequence
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from .errors import ModelError, SimulationError
+from .functions import as_function
+from .laws import STEEL, hertz_cylinder, frictionless
+from .results import Results
+
+Vector = Sequence[float]
+
+METHODS = {"dopri5": "dopri5", "rk45": "dopri5", "dormand_prince": "dopri5", "adams": "adams", "adams_pc": "adams"}
+STABILIZATIONS = ("projection", "baumgarte", "none")
+
+
+def _vec(v: Vector, what: str) -> list[float]:
+    values = [float(x) for x in v]
+    if len(values) != 2:
+        raise ModelError([(what, f"must have 2 components, got {list(v)!r}")])
+    return values
+
+
+def _points(points: dict[str, Vector] | None, where: str) -> list[dict]:
+    return [{"name": name, "position": _vec(p, f"{where}.points.{name}")} for name, p in (points or {}).items()]
+
+
+class Model:
+    """A planar mechanism under construction.
+
+    Example::
+
+        m = Model("pendulum", gravity=(0, -9.81))
+        m.add_ground_point("O", (0, 0))
+        m.add_body("bar", mass=1.0, inertia=0.02, position=(0.25, 0), points={"O": (-0.25, 0)})
+        m.add_revolute("pin", "ground.O", "bar.O")
+        results = m.simulate(2.0, output_step=1e-3)
+    """
+
+    def __init__(self, name: str = "mechanism", gravity: Vector = (0.0, 0.0)):
+        self._spec: dict[str, Any] = {
+            "name": name, "gravity": _vec(gravity, "gravity"),
+            "ground_points": [], "bodies": [], "joints": [], "drivers": [], "forces": [],
+        }
+        self._core: Any = None
+
+    # construction ----------------------------------------------------------
+
+    def _changed(self) -> None:
+        self._core = None
+
+    @property
+    def name(self) -> str:
+        """Name of the mechanism."""
+        return self._spec["name"]
+
+    def set_gravity(self, gravity: Vector) -> Model:
+        """Gravitational acceleration [m/s^2], e.g. ``(0, -9.81)``."""
+        self._spec["gravity"] = _vec(gravity, "gravity")
+        self._changed()
+        return self
+
+    def add_ground_point(self, name: str, position: Vector) -> str:
+        """A named point of the ground [m]; returns its reference ``"ground.<name>"``."""
+        self._spec["ground_points"].append({"name": name, "position": _vec(position, f"ground_points.{name}")})
+        self._changed()
+        return f"ground.{name}"
+
+    def add_body(self, name: str, mass: float, inertia: float, position: Vector = (0.0, 0.0), angle: float = 0.0,
+                 velocity: Vector = (0.0, 0.0), angular_velocity: float = 0.0,
+                 points: dict[str, Vector] | None = None) -> str:
+        """A rigid body: mass [kg], inertia about its centre of mass [kg m^2], approximate initial
+        position [m], angle [rad], velocities; named points in body coordinates [m]."""
+        self._spec["bodies"].append({
+            "name": name, "mass": float(mass), "inertia": float(inertia),
+            "position": _vec(position, f"bodies.{name}.position"), "angle": float(angle),
+            "velocity": _vec(velocity, f"bodies.{name}.velocity"), "angular_velocity": float(angular_velocity),
+            "points": _points(points, f"bodies.{name}"),
+        })
+        self._changed()
+        return name
+
+    def add_revolute(self, name: str, first: str, second: str) -> str:
+        """Ideal pin joint: points ``first`` and ``second`` (``"body.point"``) coincide."""
+        return self._joint({"type": "revolute", "name": name, "first": first, "second": second})
+
+    def add_translational(self, name: str, first: str, second: str, axis: Vector = (1.0, 0.0)) -> str:
+        """Ideal slider: no relative rotation; ``second`` moves on the line through ``first`` along
+        ``axis`` (in the first body's frame)."""
+        return self._joint({"type": "translational", "name": name, "first": first, "second": second,
+                            "axis": _vec(axis, f"joints.{name}.axis")})
+
+    def add_fixed(self, name: str, first: str, second: str) -> str:
+        """Ideal weld between two bodies at coincident points."""
+        return self._joint({"type": "fixed", "name": name, "first": first, "second": second})
+
+    def add_clearance_revolute(self, name: str, bearing: str, journal: str, *, bearing_radius: float,
+                               clearance: float, contact: dict, length: float | None = None,
+                               stiffness: dict | None = None, friction: dict | None = None,
+                               bearing_material: dict = STEEL, journal_material: dict = STEEL,
+                               initial_eccentricity: Vector = (0.0, 0.0), onset_velocity_floor: float = 1e-4,
+                               max_penetration: float | None = None) -> str:
+        """Dry revolute joint with radial clearance: bore of radius ``bearing_radius`` [m] centred at
+        ``bearing``, journal of radius ``bearing_radius - clearance`` centred at ``journal``.
+        ``contact``, ``stiffness`` and ``friction`` come from :mod:`jointplay.laws`."""
+        joint = {
+            "type": "clearance_revolute", "name": name, "bearing": bearing, "journal": journal,
+            "bearing_radius": float(bearing_radius), "clearance": float(clearance),
+            "length": None if length is None else float(length),
+            "bearing_material": dict(bearing_material), "journal_material": dict(journal_material),
+            "contact": dict(contact), "stiffness": dict(stiffness or hertz_cylinder()),
+            "friction": dict(friction or frictionless()),
+            "initial_eccentricity": _vec(initial_eccentricity, f"joints.{name}.initial_eccentricity"),
+            "onset_velocity_floor": float(onset_velocity_floor),
+            "max_penetration": None if max_penetration is None else float(max_penetration),
+        }
+        return self._joint(joint)
+
+    def _joint(self, joint: dict) -> str:
+        self._spec["joints"].append(joint)
+        self._changed()
+        return joint["name"]
+
+    def add_driver(self, name: str, joint: str, function: dict | float) -> str:
+        """Prescribes a joint coordinate over time: the relative angle of a revolute joint [rad] or the
+        displacement along a translational joint [m]; ``function`` from :mod:`jointplay.functions`."""
+        self._spec["drivers"].append({"name": name, "joint": joint, "function": as_function(function)})
+        self._changed()
+        return name
+
+    def add_spring_damper(self, name: str, first: str, second: str, *, free_length: float,
+                          stiffness: float = 0.0, damping: float = 0.0) -> str:
+        """Linear spring [N/m] and damper [N s/m] between two points, free length [m]."""
+        return self._force({"type": "spring_damper", "name": name, "first": first, "second": second,
+                            "stiffness": float(stiffness), "damping": float(damping),
+                            "free_length": float(free_length)})
+
+    def add_rotational_spring_damper(self, name: str, first: str, second: str, *, stiffness: float = 0.0,
+                                     damping: float = 0.0, free_angle: float = 0.0) -> str:
+        """Torsional spring [N m/rad] and damper [N m s/rad] on the relative angle of two bodies."""
+        return self._force({"type": "rotational_spring_damper", "name": name, "first": first, "second": second,
+                            "stiffness": float(stiffness), "damping": float(damping),
+                            "free_angle": float(free_angle)})
+
+    def add_point_force(self, name: str, point: str, fx: dict | float = 0.0, fy: dict | float = 0.0) -> str:
+        """Force at a point, global components [N] (numbers or functions of time)."""
+        return self._force({"type": "point_force", "name": name, "point": point,
+                            "fx": as_function(fx), "fy": as_function(fy)})
+
+    def add_torque(self, name: str, body: str, torque: dict | float) -> str:
+        """Torque on a body [N m], counter-clockwise positive."""
+        return self._force({"type": "torque", "name": name, "body": body, "torque": as_function(torque)})
+
+    def _force(self, force: dict) -> str:
+        self._spec["forces"].append(force)
+        self._changed()
+        return force["name"]
+
+    # variants --------------------------------------------------------------
+
+    def copy(self) -> Model:
+        """An independent copy."""
+        return Model.from_spec(self.to_spec())
+
+    def idealized(self) -> Model:
+        """A copy with every clearance joint replaced by an ideal revolute joint at the journal."""
+        spec = self.to_spec()
+        spec["joints"] = [
+            {"type": "revolute", "name": j["name"], "first": j["bearing"], "second": j["journal"]}
+            if j["type"] == "clearance_revolute" else j
+            for j in spec["joints"]
+        ]
+        return Model.from_spec(spec)
+
+    def joint(self, name: str) -> dict:
+        """The description of a joint, for editing in place (e.g. ``m.joint("B")["clearance"] = 1e-4``)."""
+        for j in self._spec["joints"]:
+            if j["name"] == name:
+                self._changed()
+                return j
+        raise KeyError(f"no joint named {name!r}; joints: {[j['name'] for j in self._spec['joints']]}")
+
+    # plain data --------------------------------------------------------------
+
+    def to_spec(self) -> dict:
+        """The model description as plain data (a deep copy)."""
+        return copy.deepcopy(self._spec)
+
+    @classmethod
+    def from_spec(cls, spec: dict) -> Model:
+        """A model from plain data as produced by :meth:`to_spec`."""
+        m = cls(spec.get("name", "mechanism"))
+        m._spec.update(copy.deepcopy(spec))
+        return m
+
+    def to_json(self) -> str:
+        """The description as JSON text."""
+        return json.dumps(self._spec, allow_nan=True)
+
+    # compile, check, simulate -----------------------------------------------
+
+    def compile(self):
+        """Compiles the description (cached until the next change); raises ModelError."""
+        if self._core is None:
+            core, problems = _core.compile_model(self.to_json())
+            if problems:
+                raise ModelError(problems)
+            self._core = core
+        return self._core
+
+    def check(self) -> dict:
+        """Compiles and assembles the initial configuration; returns the mechanism's summary
+        (bodies, joints, coordinates, degrees of freedom, initial coordinates)."""
+        info = dict(self.compile().describe())
+        assembled = self.compile().assemble(0.0)
+        if assembled["error"] is not None:
+            raise SimulationError(assembled["error"], stage="assembly")
+        info["initial_coordinates"] = np.asarray(assembled["coordinates"])
+        info["initial_velocities"] = np.asarray(assembled["velocities"])
+        return info
+
+    def simulate(self, t_end: float, *, method: str = "dopri5", rtol: float = 1e-6, atol: float = 1e-9,
+                 max_step: float | None = None, output_step: float | None = None,
+                 initial_step: float | None = None, min_step: float | None = None, max_steps: int | None = None,
+                 stabilization: str = "projection", t0: float = 0.0,
+                 progress: Callable[[float], None] | None = None) -> Results:
+        """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
+
+        ``method``: ``"dopri5"`` (adaptive Dormand-Prince 5(4), contact onsets located by dense
+        output) or ``"adams"`` (variable-step Adams predictor-corrector). ``rtol``/``atol``: error
+        tolerances; ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
+        accepted step). ``progress`` is called with the simulated time about ten times a second.
+
+        Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
+        when the run stops early.
+        """
+        options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
+                           max_steps, stabilization)
+        core = self.compile()
+        started = _time.perf_counter()
+        raw = _run(core, t0, float(t_end), options, progress)
+        wall_time = _time.perf_counter() - started
+        results = Results.from_core(raw, spec=self.to_spec(), options=options, wall_time=wall_time)
+        if raw["error"] is not None:
+            raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
+        return results
+
+
+def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,
+             stabilization) -> dict:
+    problems = []
+
+    def positive(key, value, allow_none=True):
+        if value is None and allow_none:
+            return None
+        if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
+            problems.append((f"simulation.{key}", f"must be > 0, got {value!r}"))
+            return None
+        return float(value)
+
+    if not (isinstance(t_end, (int, float)) and math.isfinite(t_end) and t_end > t0):
+        problems.append(("simulation.t_end", f"must be greater than t0 = {t0} s, got {t_end!r}"))
+    key = str(method).lower()
+    if key not in METHODS:
+        problems.append(("simulation.method", f"must be one of {sorted(set(METHODS.values()))}, got {method!r}"))
+    if stabilization not in STABILIZATIONS:
+        problems.append(("simulation.stabilization", f"must be one of {list(STABILIZATIONS)}, got {stabilization!r}"))
+    options = {
+        "method": METHODS.get(key, "dopri5"), "rtol": positive("rtol", rtol, False),
+        "atol": None, "max_step": positive("max_step", max_step), "output_step": positive("output_step", output_step),
+        "initial_step": positive("initial_step", initial_step), "min_step": positive("min_step", min_step),
+        "max_steps": None, "stabilization": stabilization,
+    }
+    if not (isinstance(atol, (int, float)) and math.isfinite(atol) and atol >= 0):
+        problems.append(("simulation.atol", f"must be >= 0, got {atol!r}"))
+    else:
+        options["atol"] = float(atol)
+    if max_steps is not None:
+        if not (isinstance(max_steps, int) and max_steps > 0):
+            problems.append(("simulation.max_steps", f"must be a positive integer, got {max_steps!r}"))
+        else:
+            options["max_steps"] = max_steps
+    if problems:
+        raise ModelError(problems)
+    return options
+
+
+def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None) -> dict:
+    """Runs the core in a worker thread (it releases the GIL) so that Ctrl-C and progress reports
+    reach the caller; on Ctrl-C the run is cancelled and what was computed is kept."""
+    handle = _core.CoreProgress()
+    box: dict[str, Any] = {}
+
+    def work():
+        try:
+            box["raw"] = core.simulate(t0, t_end, options, handle)
+        except BaseException as exc:  # re-raised in the caller's thread
+            box["exc"] = exc
+
+    worker = threading.Thread(target=work, name="jointplay-simulate", daemon=True)
+    worker.start()
+    try:
+        while worker.is_alive():
+            worker.join(0.1)
+            if progress is not None:
+                progress(handle.time())
+    except KeyboardInterrupt:
+        handle.cancel()
+        worker.join()
+    if "exc" in box:
+        raise box["exc"]
+    if progress is not None:
+        progress(handle.time())
+    return box["raw"]
