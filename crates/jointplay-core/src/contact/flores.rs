@@ -31,7 +31,9 @@ mod tests {
     #[test]
     fn test_flores_restitution_within_3_percent_for_e_from_0_7_and_too_lossy_below() {
         // references: scipy solve_ivp (DOP853, rtol 1e-12) of the same impact
-        for (restitution, reference) in [(0.3, 0.25621), (0.5, 0.47044), (0.7, 0.68318), (0.9, 0.89392), (0.95, 0.94683)] {
+        for (restitution, reference) in
+            [(0.3, 0.25621), (0.5, 0.47044), (0.7, 0.68318), (0.9, 0.89392), (0.95, 0.94683)]
+        {
             let law = NormalForceLaw::Flores { restitution };
             let error = check_against_reference(law, restitution, reference);
             if restitution >= 0.7 {

@@ -31,7 +31,9 @@ mod tests {
     #[test]
     fn test_gonthier_restitution_within_5_percent_over_0_3_to_0_95() {
         // references: scipy solve_ivp (DOP853, rtol 1e-12) of the same impact
-        for (restitution, reference) in [(0.3, 0.30422), (0.5, 0.48774), (0.7, 0.66958), (0.9, 0.87644), (0.95, 0.93593)] {
+        for (restitution, reference) in
+            [(0.3, 0.30422), (0.5, 0.48774), (0.7, 0.66958), (0.9, 0.87644), (0.95, 0.93593)]
+        {
             let law = NormalForceLaw::Gonthier { restitution };
             let error = check_against_reference(law, restitution, reference);
             assert!(error.abs() < 0.05, "e = {restitution}: relative error {error}");

@@ -87,7 +87,9 @@ mod tests {
         let penetration = 1e-5;
         let force = law.stiffness() * 1e-5_f64.powf(1.5);
         assert!((law.elastic_force(penetration) / force - 1.0).abs() < 1e-14);
-        assert!((law.elastic_energy(penetration) / (force * penetration / 2.5) - 1.0).abs() < 1e-14);
+        assert!(
+            (law.elastic_energy(penetration) / (force * penetration / 2.5) - 1.0).abs() < 1e-14
+        );
         assert_eq!(law.elastic_force(0.0), 0.0);
         assert_eq!(law.elastic_energy(-1e-5), 0.0);
     }

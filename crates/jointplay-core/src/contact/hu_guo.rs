@@ -30,7 +30,9 @@ mod tests {
     #[test]
     fn test_hu_guo_restitution_within_3_percent_for_e_from_0_5_and_too_lossy_at_0_3() {
         // references: scipy solve_ivp (DOP853, rtol 1e-12) of the same impact
-        for (restitution, reference) in [(0.3, 0.27066), (0.5, 0.48774), (0.7, 0.6973), (0.9, 0.8999), (0.95, 0.94999)] {
+        for (restitution, reference) in
+            [(0.3, 0.27066), (0.5, 0.48774), (0.7, 0.6973), (0.9, 0.8999), (0.95, 0.94999)]
+        {
             let law = NormalForceLaw::HuGuo { restitution };
             let error = check_against_reference(law, restitution, reference);
             if restitution >= 0.5 {
@@ -40,7 +42,8 @@ mod tests {
             }
         }
         // from e = 0.7 up the law is within 0.5 %
-        let error = check_against_reference(NormalForceLaw::HuGuo { restitution: 0.7 }, 0.7, 0.6973);
+        let error =
+            check_against_reference(NormalForceLaw::HuGuo { restitution: 0.7 }, 0.7, 0.6973);
         assert!(error.abs() < 0.005);
     }
 }

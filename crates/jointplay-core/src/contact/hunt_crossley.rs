@@ -27,7 +27,9 @@ mod tests {
     #[test]
     fn test_hunt_crossley_restitution_within_2_percent_for_high_e_and_too_elastic_below() {
         // references: scipy solve_ivp (DOP853, rtol 1e-12) of the same impact
-        for (restitution, reference) in [(0.3, 0.58129), (0.5, 0.66296), (0.7, 0.768), (0.9, 0.90902), (0.95, 0.95237)] {
+        for (restitution, reference) in
+            [(0.3, 0.58129), (0.5, 0.66296), (0.7, 0.768), (0.9, 0.90902), (0.95, 0.95237)]
+        {
             let law = NormalForceLaw::HuntCrossley { restitution };
             let error = check_against_reference(law, restitution, reference);
             if restitution >= 0.9 {

@@ -45,8 +45,10 @@ pub(super) fn effective_restitution(law: NormalForceLaw) -> f64 {
 fn rk4_step(state: (f64, f64), step: f64, acceleration: &impl Fn(f64, f64) -> f64) -> (f64, f64) {
     let (x, v) = state;
     let (k1x, k1v) = (v, acceleration(x, v));
-    let (k2x, k2v) = (v + 0.5 * step * k1v, acceleration(x + 0.5 * step * k1x, v + 0.5 * step * k1v));
-    let (k3x, k3v) = (v + 0.5 * step * k2v, acceleration(x + 0.5 * step * k2x, v + 0.5 * step * k2v));
+    let (k2x, k2v) =
+        (v + 0.5 * step * k1v, acceleration(x + 0.5 * step * k1x, v + 0.5 * step * k1v));
+    let (k3x, k3v) =
+        (v + 0.5 * step * k2v, acceleration(x + 0.5 * step * k2x, v + 0.5 * step * k2v));
     let (k4x, k4v) = (v + step * k3v, acceleration(x + step * k3x, v + step * k3v));
     (
         x + step / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x),
@@ -56,7 +58,11 @@ fn rk4_step(state: (f64, f64), step: f64, acceleration: &impl Fn(f64, f64) -> f6
 
 /// Checks the RK4 result against a reference value computed independently
 /// and returns the relative error of the effective restitution against e.
-pub(super) fn check_against_reference(law: NormalForceLaw, restitution: f64, reference: f64) -> f64 {
+pub(super) fn check_against_reference(
+    law: NormalForceLaw,
+    restitution: f64,
+    reference: f64,
+) -> f64 {
     let effective = effective_restitution(law);
     assert!(
         (effective - reference).abs() < 1e-3,

@@ -27,7 +27,9 @@ mod tests {
     #[test]
     fn test_lankarani_nikravesh_restitution_within_2_percent_for_high_e_and_too_elastic_below() {
         // references: scipy solve_ivp (DOP853, rtol 1e-12) of the same impact
-        for (restitution, reference) in [(0.3, 0.68422), (0.5, 0.72524), (0.7, 0.79597), (0.9, 0.91318), (0.95, 0.95351)] {
+        for (restitution, reference) in
+            [(0.3, 0.68422), (0.5, 0.72524), (0.7, 0.79597), (0.9, 0.91318), (0.95, 0.95351)]
+        {
             let law = NormalForceLaw::LankaraniNikravesh { restitution };
             let error = check_against_reference(law, restitution, reference);
             if restitution >= 0.9 {

@@ -45,7 +45,7 @@ impl LogarithmicLaw {
 
     /// Penetration [m] for a force F >= 0 [N]: the explicit law, or its tangent continuation.
     pub(crate) fn penetration(&self, force: f64) -> f64 {
-        if !(force > 0.0) {
+        if force.is_nan() || force <= 0.0 {
             0.0
         } else if force <= self.limit_force {
             self.log_penetration(force)
@@ -56,7 +56,7 @@ impl LogarithmicLaw {
 
     /// Force [N] for a penetration δ [m], inverting the law by safeguarded Newton.
     pub(crate) fn force(&self, penetration: f64) -> f64 {
-        if !(penetration > 0.0) {
+        if penetration.is_nan() || penetration <= 0.0 {
             0.0
         } else if penetration >= self.limit_penetration {
             let excess = penetration - self.limit_penetration;
@@ -68,11 +68,13 @@ impl LogarithmicLaw {
 
     /// Stored energy ∫0^δ F dδ [J], in closed form via ∫F dδ = F δ - ∫δ dF.
     pub(crate) fn energy(&self, penetration: f64) -> f64 {
-        if !(penetration > 0.0) {
+        if penetration.is_nan() || penetration <= 0.0 {
             0.0
         } else if penetration >= self.limit_penetration {
             let excess = penetration - self.limit_penetration;
-            let energy = self.limit_energy + self.limit_force * excess + 0.5 * excess * excess / self.compliance;
+            let energy = self.limit_energy
+                + self.limit_force * excess
+                + 0.5 * excess * excess / self.compliance;
             energy.min(f64::MAX)
         } else {
             self.log_energy(self.invert(penetration))
@@ -90,7 +92,8 @@ impl LogarithmicLaw {
     // energy at the force F: F δ(F) - c F²/2 (ln(A/F) + b + 1/2)
     fn log_energy(&self, force: f64) -> f64 {
         let log_term = (self.force_scale / force).ln() + self.offset;
-        force * self.log_penetration(force) - 0.5 * self.compliance * force * force * (log_term + 0.5)
+        force * self.log_penetration(force)
+            - 0.5 * self.compliance * force * force * (log_term + 0.5)
     }
 
     // Newton on g(F) = δ(F) - δ, for 0 < δ < δ_lim. Because δ(F) >= 2cF on
@@ -101,7 +104,7 @@ impl LogarithmicLaw {
         let mut lower = 0.0;
         let mut force = upper;
         for _ in 0..100 {
-            if !(force > 0.0) {
+            if force.is_nan() || force <= 0.0 {
                 return 0.0;
             }
             let residual = self.log_penetration(force) - penetration;

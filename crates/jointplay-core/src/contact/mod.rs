@@ -112,7 +112,12 @@ impl NormalForceLaw {
     /// the clamp is what lets the bodies separate there. The caller floors
     /// δ̇⁻ at a small positive velocity; a non-positive or non-finite δ̇⁻ is
     /// treated as "no damping" rather than divided by.
-    pub fn normal_force(&self, elastic_force: f64, penetration_rate: f64, onset_velocity: f64) -> f64 {
+    pub fn normal_force(
+        &self,
+        elastic_force: f64,
+        penetration_rate: f64,
+        onset_velocity: f64,
+    ) -> f64 {
         let damping = if onset_velocity > 0.0 && onset_velocity.is_finite() {
             self.hysteresis_factor() * penetration_rate / onset_velocity
         } else {

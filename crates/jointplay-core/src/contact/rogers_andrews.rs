@@ -37,7 +37,8 @@ impl RogersAndrews {
     ) -> Result<Self, String> {
         let clearance = radial_clearance(bearing_radius, journal_radius)?;
         let length = checked_length(length)?;
-        let modulus = effective_modulus(&bearing.validated("bearing")?, &journal.validated("journal")?);
+        let modulus =
+            effective_modulus(&bearing.validated("bearing")?, &journal.validated("journal")?);
         // k_b + k_j = 1 / (π E*)
         let compliance_sum = 1.0 / (PI * modulus);
         let force_scale =
@@ -113,7 +114,9 @@ mod tests {
     #[test]
     fn test_energy_matches_trapezoid_integration() {
         let law = example();
-        for penetration in [law.penetration(10.0), law.penetration(1e5), 1.5 * law.penetration(law.limit_force())] {
+        for penetration in
+            [law.penetration(10.0), law.penetration(1e5), 1.5 * law.penetration(law.limit_force())]
+        {
             let intervals = 200_000;
             let width = penetration / intervals as f64;
             let mut integral = 0.5 * law.elastic_force(penetration);
@@ -122,7 +125,10 @@ mod tests {
             }
             integral *= width;
             let energy = law.elastic_energy(penetration);
-            assert!((energy / integral - 1.0).abs() < 1e-6, "δ = {penetration}: {energy} vs {integral}");
+            assert!(
+                (energy / integral - 1.0).abs() < 1e-6,
+                "δ = {penetration}: {energy} vs {integral}"
+            );
         }
     }
 

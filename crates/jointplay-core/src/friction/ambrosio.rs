@@ -28,7 +28,9 @@ impl AmbrosioCoulomb {
             return Err(format!("dead-band velocity v0 must be finite and >= 0 m/s, got {v0}"));
         }
         if !(v1.is_finite() && v1 > v0) {
-            return Err(format!("full-friction velocity v1 must be finite and > v0 = {v0} m/s, got {v1}"));
+            return Err(format!(
+                "full-friction velocity v1 must be finite and > v0 = {v0} m/s, got {v1}"
+            ));
         }
         Ok(Self { coefficient, v0, v1 })
     }
@@ -78,8 +80,14 @@ mod tests {
         let points = [(5e-5, 0.0), (1e-4, 0.0), (5.5e-4, 0.5), (1e-3, 1.0), (2e-3, 1.0)];
         for (velocity, correction) in points {
             let expected = -correction * 0.1 * 200.0;
-            assert!((law().friction_force(200.0, velocity) - expected).abs() < 1e-12, "v = {velocity}");
-            assert!((law().friction_force(200.0, -velocity) + expected).abs() < 1e-12, "v = -{velocity}");
+            assert!(
+                (law().friction_force(200.0, velocity) - expected).abs() < 1e-12,
+                "v = {velocity}"
+            );
+            assert!(
+                (law().friction_force(200.0, -velocity) + expected).abs() < 1e-12,
+                "v = -{velocity}"
+            );
         }
     }
 

@@ -54,7 +54,10 @@ mod tests {
         let law = FrictionLaw::Threlfall(Threlfall::new(0.3, 2e-3).unwrap());
         for velocity in [1e-6, 5e-4, 2e-3, 1e-2] {
             let expected = -0.3 * 10.0 * (1.0 - (-3.0 * velocity / 2e-3_f64).exp());
-            assert!((law.friction_force(10.0, velocity) - expected).abs() < 1e-13, "v = {velocity}");
+            assert!(
+                (law.friction_force(10.0, velocity) - expected).abs() < 1e-13,
+                "v = {velocity}"
+            );
         }
         // 95.0213 % of μ F_n at v = v0
         assert!((law.friction_force(10.0, 2e-3) / -3.0 - 0.950_212_931_632_136).abs() < 1e-12);
@@ -70,6 +73,9 @@ mod tests {
 
     #[test]
     fn test_threlfall_constructor_messages() {
-        assert_eq!(Threlfall::new(0.3, -1.0).unwrap_err(), "velocity v0 must be finite and > 0 m/s, got -1");
+        assert_eq!(
+            Threlfall::new(0.3, -1.0).unwrap_err(),
+            "velocity v0 must be finite and > 0 m/s, got -1"
+        );
     }
 }
