@@ -1,7 +1,7 @@
 //! The step loop shared by both methods: step limits, output sampling,
 //! event handling, `accept()` and restarts.
 
-use super::events::{locate_earliest, EventBuffers};
+use super::events::{find_first_event, EventBuffers};
 use super::{IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
 
@@ -78,10 +78,8 @@ fn finish_step<S: OdeSystem, P: Stepper>(
     // earliest event in the step, if any
     let mut event_time = None;
     if !events.g_old.is_empty() {
-        system.event_functions(t_new, stepper.y_new(), &mut events.g_new);
-        if (0..events.g_old.len()).any(|k| events.crossed(k)) {
-            event_time = locate_earliest(system, |t, out| stepper.dense(t, out), t_old, t_new, events);
-        }
+        let dense = |t: f64, out: &mut [f64]| stepper.dense(t, out);
+        event_time = find_first_event(system, dense, stepper.y_new(), t_old, t_new, events);
     }
     let t_stop = event_time.unwrap_or(t_new);
     // samples strictly inside the step, from the dense output
