@@ -15,6 +15,9 @@
 //! handles the event and the step (`on_event`, `accept`), and the method
 //! restarts when the state jumped (`docs/theory/integrator-events.md`).
 
+// component loops over several parallel buffers read best with an index
+#![allow(clippy::needless_range_loop)]
+
 mod adams;
 mod control;
 mod dormand_prince;
