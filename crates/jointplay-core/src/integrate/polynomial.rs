@@ -49,10 +49,8 @@ pub(crate) fn integral(poly: &Poly, theta: f64) -> f64 {
 pub(crate) fn node_product_integral(roots: &[f64], extra: Option<f64>) -> f64 {
     let mut poly: Poly = [0.0; MAX_NODES + 1];
     poly[0] = 1.0;
-    let mut degree = 0;
-    for r in roots.iter().chain(extra.iter()) {
+    for (degree, r) in roots.iter().chain(extra.iter()).enumerate() {
         times_linear(&mut poly, degree, *r);
-        degree += 1;
     }
     integral(&poly, 1.0)
 }

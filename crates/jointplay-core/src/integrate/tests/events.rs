@@ -43,7 +43,7 @@ impl OdeSystem for Ball {
     fn on_event(&mut self, t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {
         self.events.push((t, event));
         if let (Some(e), 0.0) = (self.restitution, self.levels[event]) {
-            y[1] = -e * y[1];
+            y[1] *= -e;
         }
         Ok(())
     }

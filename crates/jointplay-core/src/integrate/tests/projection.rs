@@ -28,6 +28,8 @@ impl OdeSystem for Circle {
         dydt[1] = y[0];
         Ok(())
     }
+    // `is_multiple_of` needs Rust 1.87; the workspace supports 1.80
+    #[allow(clippy::manual_is_multiple_of)]
     fn accept(&mut self, _t: f64, y: &mut [f64]) -> Result<bool, SimulationError> {
         self.accepts += 1;
         if self.project {
