@@ -1,36 +1,176 @@
-//! STAND-IN (replaced by branch `integrate` at merge): contract + fixed-step RK4.
-#![allow(missing_docs)]
+//! Time integrators with dense output and event location.
+//!
+//! [`integrate`] advances a first-order system [`OdeSystem`] from `t0` to
+//! `t_end` with one of two [`Method`]s:
+//!
+//! - [`Method::DormandPrince45`]: explicit Runge-Kutta 5(4), FSAL, PI step
+//!   control, 4th-order dense output (`docs/theory/integrator-dormand-prince.md`);
+//! - [`Method::AdamsPredictorCorrector`]: variable-step Adams-Bashforth-Moulton
+//!   PECE up to order 4 with Milne's error estimate, the method class of
+//!   paper 001 (`docs/theory/integrator-adams.md`).
+//!
+//! Both share one driver: after each accepted step the event functions are
+//! checked for a rise through zero, the earliest root is located on the
+//! dense output, the step is cut there, outputs are recorded, the system
+//! handles the event and the step (`on_event`, `accept`), and the method
+//! restarts when the state jumped (`docs/theory/integrator-events.md`).
+
+// component loops over several parallel buffers read best with an index
+#![allow(clippy::needless_range_loop)]
+
+mod adams;
+mod control;
+mod dormand_prince;
+mod driver;
+mod events;
+mod options;
+mod polynomial;
+mod statistics;
+#[cfg(test)]
+mod tests;
+
+pub use options::{IntegratorOptions, Method, MIN_RTOL};
+pub use statistics::Statistics;
+
 use crate::error::SimulationError;
+
+/// A first-order system dy/dt = f(t, y) with discrete state the integrator does not see.
+#[allow(clippy::len_without_is_empty)]
 pub trait OdeSystem {
+    /// Number of continuous states.
     fn len(&self) -> usize;
+
+    /// dy/dt at (t, y). Called many times per step, at trial stages; must not allocate. May fail.
     fn rhs(&mut self, t: f64, y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError>;
-    fn n_events(&self) -> usize { 0 }
+
+    /// Number of event functions (default 0).
+    fn n_events(&self) -> usize {
+        0
+    }
+
+    /// Event functions g_k(t, y); event k fires when g_k rises through zero:
+    /// g_k(t_prev) <= 0 < g_k(t_new).
     fn event_functions(&mut self, _t: f64, _y: &[f64], _g: &mut [f64]) {}
-    fn on_event(&mut self, _t: f64, _y: &mut [f64], _event: usize) -> Result<(), SimulationError> { Ok(()) }
+
+    /// Called with the state at the located time t* of the earliest event
+    /// (y from dense output at t*), before `accept()`; may update discrete state and y.
+    fn on_event(&mut self, _t: f64, _y: &mut [f64], _event: usize) -> Result<(), SimulationError> {
+        Ok(())
+    }
+
+    /// Called at the end of every accepted step (after event handling) with
+    /// the new state; may project y onto constraints and update discrete state.
+    ///
+    /// Returns true when the change to y or to the discrete state is a
+    /// discontinuity that requires the integrator to restart (re-evaluate f,
+    /// drop history); false when y changed at most by a correction at
+    /// tolerance level (the integrator may keep its FSAL derivative / history).
     fn accept(&mut self, t: f64, y: &mut [f64]) -> Result<bool, SimulationError>;
+
+    /// Records an output sample at time t (state from dense output or step end).
+    /// Err aborts the run (e.g. Interrupted).
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError>;
 }
-#[derive(Clone, Copy, Debug, PartialEq, Eq)] pub enum Method { DormandPrince45, AdamsPredictorCorrector }
-#[derive(Clone, Debug, PartialEq)] pub struct IntegratorOptions { pub method: Method, pub rtol: f64, pub atol: f64, pub max_step: f64, pub initial_step: Option<f64>, pub min_step: f64, pub max_steps: usize, pub output_step: Option<f64> }
-impl Default for IntegratorOptions { fn default() -> Self { Self { method: Method::DormandPrince45, rtol: 1e-6, atol: 1e-9, max_step: f64::INFINITY, initial_step: None, min_step: 1e-14, max_steps: 10_000_000, output_step: None } } }
-impl IntegratorOptions { pub fn validate(&self) -> Result<(), String> { Ok(()) } }
-#[derive(Clone, Debug, Default, PartialEq)] pub struct Statistics { pub accepted_steps: usize, pub rejected_steps: usize, pub rhs_evaluations: usize, pub events: usize, pub smallest_step: f64, pub largest_step: f64, pub restarts: usize }
-pub fn integrate<S: OdeSystem>(s: &mut S, t0: f64, t_end: f64, y: &mut [f64], o: &IntegratorOptions) -> (Statistics, Result<(), SimulationError>) {
-    let mut st = Statistics::default();
-    let r = (|| {
-        let n = y.len(); let h0 = o.max_step.min(1e-6); let mut t = t0;
-        let (mut k1, mut k2, mut k3, mut k4, mut yt) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-        s.record(t, y)?;
-        while t < t_end {
-            let h = h0.min(t_end - t);
-            s.rhs(t, y, &mut k1)?; for i in 0..n { yt[i] = y[i] + 0.5 * h * k1[i]; }
-            s.rhs(t + 0.5 * h, &yt, &mut k2)?; for i in 0..n { yt[i] = y[i] + 0.5 * h * k2[i]; }
-            s.rhs(t + 0.5 * h, &yt, &mut k3)?; for i in 0..n { yt[i] = y[i] + h * k3[i]; }
-            s.rhs(t + h, &yt, &mut k4)?; for i in 0..n { y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]); }
-            t += h; st.accepted_steps += 1; st.rhs_evaluations += 4;
-            s.accept(t, y)?; s.record(t, y)?;
+
+/// One method's step, as the shared driver sees it.
+pub(crate) trait Stepper {
+    /// (Re)starts at (t, y): evaluates f there, drops history and returns the step to try,
+    /// `h_hint` [s] being the caller's proposal (`None` at the very start).
+    fn start<S: OdeSystem>(
+        &mut self,
+        system: &mut S,
+        stats: &mut Statistics,
+        t: f64,
+        y: &[f64],
+        h_hint: Option<f64>,
+    ) -> Result<f64, SimulationError>;
+
+    /// Attempts a step of size h from (t, y); the new state is kept in the stepper.
+    fn attempt<S: OdeSystem>(
+        &mut self,
+        system: &mut S,
+        stats: &mut Statistics,
+        t: f64,
+        y: &[f64],
+        h: f64,
+    ) -> Result<Attempt, SimulationError>;
+
+    /// State at the end of the last accepted attempt.
+    fn y_new(&self) -> &[f64];
+
+    /// State at time t inside the last accepted step, from the continuous extension.
+    fn dense(&self, t: f64, out: &mut [f64]);
+
+    /// Continues after an accepted step without restart; y is the state after `accept()`.
+    fn advance<S: OdeSystem>(
+        &mut self,
+        system: &mut S,
+        stats: &mut Statistics,
+        t: f64,
+        y: &[f64],
+    ) -> Result<(), SimulationError>;
+}
+
+/// Outcome of one step attempt.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Attempt {
+    /// Whether the error estimate passed.
+    pub accepted: bool,
+    /// Step to try next [s].
+    pub h_next: f64,
+}
+
+/// Integrates from t0 to t_end (y0 updated in place to the final state).
+///
+/// `record()` is called at t0, at every output time in (t0, t_end) and at
+/// t_end exactly. On error, returns the error and the statistics so far;
+/// whatever `record()` stored stays with the system. Options that fail
+/// [`IntegratorOptions::validate`], `t_end < t0`, non-finite times or a
+/// state whose length differs from `system.len()` are reported as
+/// `NonFinite` with element `integrator input (...)` naming the problem.
+pub fn integrate<S: OdeSystem>(
+    system: &mut S,
+    t0: f64,
+    t_end: f64,
+    y: &mut [f64],
+    options: &IntegratorOptions,
+) -> (Statistics, Result<(), SimulationError>) {
+    let mut stats = Statistics::default();
+    if let Err(problem) = check_input(system, t0, t_end, y, options) {
+        let element = format!("integrator input ({problem})");
+        return (stats, Err(SimulationError::NonFinite { time: t0, element }));
+    }
+    let n = y.len();
+    let result = match options.method {
+        Method::DormandPrince45 => {
+            let mut stepper = dormand_prince::DormandPrince::new(n, options);
+            driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
         }
-        Ok(())
-    })();
-    (st, r)
+        Method::AdamsPredictorCorrector => {
+            let mut stepper = adams::Adams::new(n, options);
+            driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
+        }
+    };
+    (stats, result)
+}
+
+/// Problems with the arguments of [`integrate`], if any.
+fn check_input<S: OdeSystem>(
+    system: &S,
+    t0: f64,
+    t_end: f64,
+    y: &[f64],
+    options: &IntegratorOptions,
+) -> Result<(), String> {
+    options.validate()?;
+    if !(t0.is_finite() && t_end.is_finite()) {
+        return Err(format!("t0 and t_end must be finite, got {t0:e} and {t_end:e}"));
+    }
+    if t_end < t0 {
+        return Err(format!("t_end must be >= t0, got {t_end:e} < {t0:e}"));
+    }
+    if y.len() != system.len() {
+        return Err(format!("state has {} components, system.len() is {}", y.len(), system.len()));
+    }
+    Ok(())
 }

@@ -1,0 +1,35 @@
+//! Counters of an integration run.
+
+/// What an integration run did, counted exactly (see the theory pages for
+/// how `rhs_evaluations` follows from the other counts for each method).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Statistics {
+    /// Steps whose error estimate passed.
+    pub accepted_steps: usize,
+    /// Steps whose error estimate failed (or was not finite).
+    pub rejected_steps: usize,
+    /// Calls of `OdeSystem::rhs`, including the starting-step heuristic.
+    pub rhs_evaluations: usize,
+    /// Events handled (`on_event` calls).
+    pub events: usize,
+    /// Smallest accepted step [s] (0 when no step was taken).
+    pub smallest_step: f64,
+    /// Largest accepted step [s] (0 when no step was taken).
+    pub largest_step: f64,
+    /// Restarts after an event or after `accept()` returned true.
+    pub restarts: usize,
+}
+
+impl Statistics {
+    /// Counts one accepted step of size `h` [s].
+    pub(crate) fn count_accepted(&mut self, h: f64) {
+        self.accepted_steps += 1;
+        if self.accepted_steps == 1 {
+            self.smallest_step = h;
+            self.largest_step = h;
+        } else {
+            self.smallest_step = self.smallest_step.min(h);
+            self.largest_step = self.largest_step.max(h);
+        }
+    }
+}
