@@ -112,8 +112,21 @@ impl OdeSystem for MechanismSystem<'_> {
 
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let n = self.model.n_coordinates();
-        accelerations(self.model, self.memory, t, &y[..n], &y[n..], self.options.stabilization, self.ws)?;
-        self.trajectory.push(self.model, t, y, self.ws);
+        // samples between steps come from dense output: project them like the steps
+        let mut sample = std::mem::take(&mut self.ws.sample);
+        sample.copy_from_slice(y);
+        if self.options.stabilization == Stabilization::Projection {
+            let m = self.model.n_dynamic_constraints;
+            let (q, qdot) = sample.split_at_mut(n);
+            project_positions(self.model, m, t, q, self.options.position_tolerance, PROJECTION_ITERATIONS, self.ws)?;
+            project_velocities(self.model, m, t, q, qdot, self.ws)?;
+        }
+        let evaluated = accelerations(self.model, self.memory, t, &sample[..n], &sample[n..], self.options.stabilization, self.ws);
+        if evaluated.is_ok() {
+            self.trajectory.push(self.model, t, &sample, self.ws);
+        }
+        self.ws.sample = sample;
+        evaluated?;
         if let Some(progress) = self.progress {
             progress.report(t);
             if progress.is_cancelled() {

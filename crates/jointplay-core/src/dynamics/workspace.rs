@@ -30,6 +30,8 @@ pub struct Workspace {
     pub accelerations: Vec<f64>,
     /// Scratch vector of coordinate length.
     pub scratch: Vec<f64>,
+    /// Copy of the state for an output sample, projected before it is recorded.
+    pub sample: Vec<f64>,
     /// Last evaluation of each clearance joint.
     pub contacts: Vec<ContactEvaluation>,
     /// Last outputs of each force element.
@@ -52,6 +54,7 @@ impl Workspace {
             multipliers: vec![0.0; m],
             accelerations: vec![0.0; n],
             scratch: vec![0.0; n],
+            sample: vec![0.0; 2 * n],
             contacts: vec![ContactEvaluation::default(); model.clearance_joints.len()],
             force_outputs: vec![ForceOutput::default(); model.forces.len()],
         }
