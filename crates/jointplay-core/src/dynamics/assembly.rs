@@ -23,7 +23,7 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
     let mut q = model.initial_coordinates.clone();
     let mut qdot = model.initial_velocities.clone();
     project_positions(model, all, t0, &mut q, ASSEMBLY_TOLERANCE, ASSEMBLY_ITERATIONS, ws)?;
-    project_velocities(model, all, t0, &q, &mut qdot, ws)?;
+    project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
     let mut y = Vec::with_capacity(2 * n);
     y.extend_from_slice(&q);
     y.extend_from_slice(&qdot);

@@ -57,6 +57,8 @@ impl<'s> Compiler<'s> {
             n_dynamic_constraints: 0,
             row_offsets: vec![0],
             row_owner: Vec::new(),
+            row_bodies: Vec::new(),
+            schur_pattern: Vec::new(),
             elements: Vec::new(),
             clearance_joints: Vec::new(),
             clearance_names: Vec::new(),
@@ -165,6 +167,8 @@ impl<'s> Compiler<'s> {
             let last = *self.model.row_offsets.last().unwrap();
             self.model.row_offsets.push(last + rows);
             self.model.row_owner.extend(std::iter::repeat_n(owner, rows));
+            let bodies = [first.body, second.body].map(|b| b.coordinate().unwrap_or(usize::MAX));
+            self.model.row_bodies.extend(std::iter::repeat_n(bodies, rows));
             self.model.constraints.push(Constraint { kind: k, owner });
         }
         self.model.elements.push(IdealElement {
@@ -397,15 +401,27 @@ impl<'s> Compiler<'s> {
     fn locks(&mut self) {
         self.model.n_dynamic_constraints = self.model.constraints.len();
         for k in 0..self.model.clearance_joints.len() {
+            if !self.clearance_specs[k].lock_at_assembly {
+                continue;
+            }
             let joint = self.model.clearance_joints[k].clone();
             let name = format!("{} (assembly lock)", self.model.clearance_names[k]);
             let kind = ConstraintKind::PointCoincidence(PointCoincidence { first: joint.bearing, second: joint.journal, offset: joint.initial_eccentricity });
             self.add_element(&name, ElementKind::AssemblyLock, joint.bearing, joint.journal, Vec2::zeros(), vec![kind]);
         }
-        let _ = &self.clearance_specs;
     }
 
     fn finish(mut self) -> Result<Model, ModelErrors> {
+        let rows = &self.model.row_bodies;
+        for a in 0..rows.len() {
+            for b in 0..=a {
+                for &c in &rows[a] {
+                    if c != usize::MAX && rows[b].contains(&c) {
+                        self.model.schur_pattern.push((a, b, c));
+                    }
+                }
+            }
+        }
         let n = self.model.n_coordinates() as i64;
         let m = self.model.n_dynamic_equations() as i64;
         if self.errors.is_empty() && m > n {

@@ -65,20 +65,17 @@ pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, 
 }
 
 /// Forms `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows and factors it in place.
+/// Every row touches at most two bodies, so only the entries of the
+/// precomputed pattern (rows sharing a body) are summed.
 pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
-    let n = model.n_coordinates();
-    for a in 0..rows {
-        for b in 0..=a {
-            let (ra, rb) = (ws.jacobian.row(a), ws.jacobian.row(b));
-            let mut s = 0.0;
-            for k in 0..n {
-                s += ra[k] * model.inverse_mass[k] * rb[k];
-            }
-            ws.schur[a * rows + b] = s;
-            ws.schur[b * rows + a] = s;
-        }
+    let schur = &mut ws.schur[..rows * rows];
+    schur.fill(0.0);
+    for &(a, b, c) in model.schur_pattern.iter().take_while(|e| e.0 < rows) {
+        let (ra, rb) = (&ws.jacobian.row(a)[c..c + 3], &ws.jacobian.row(b)[c..c + 3]);
+        let w = &model.inverse_mass[c..c + 3];
+        schur[a * rows + b] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
     }
-    cholesky_factor(&mut ws.schur[..rows * rows], rows)
+    cholesky_factor(schur, rows)
 }
 
 /// Error for a rank-deficient constraint matrix, naming the owning element.

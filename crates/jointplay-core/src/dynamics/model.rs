@@ -75,6 +75,11 @@ pub struct Model {
     pub row_offsets: Vec<usize>,
     /// Owner (index into `elements`) of every equation row.
     pub row_owner: Vec<usize>,
+    /// First coordinate of the (at most two) bodies each equation row touches; `usize::MAX` for none.
+    pub row_bodies: Vec<[usize; 2]>,
+    /// Non-zero pattern of `Phi_q M^-1 Phi_q^T`: `(a, b, c)` for rows `a >= b` that share the body
+    /// whose first coordinate is `c`, sorted by `a`.
+    pub schur_pattern: Vec<(usize, usize, usize)>,
     /// Joints, drivers and assembly locks that own constraints.
     pub elements: Vec<IdealElement>,
     /// Clearance joints.

@@ -51,13 +51,15 @@ pub(crate) fn project_positions(
     unreachable!("the loop returns on its last iteration")
 }
 
-/// Corrects `q_dot` so that `Phi_q q_dot = nu` for the first `n_constraints` constraints.
+/// Corrects `q_dot` so that `Phi_q q_dot = nu` for the first `n_constraints`
+/// constraints, unless every velocity residual is already within `tolerance` [m/s or rad/s].
 pub(crate) fn project_velocities(
     model: &Model,
     n_constraints: usize,
     t: f64,
     q: &[f64],
     qdot: &mut [f64],
+    tolerance: f64,
     ws: &mut Workspace,
 ) -> Result<(), SimulationError> {
     let n = model.n_coordinates();
@@ -67,10 +69,15 @@ pub(crate) fn project_velocities(
     }
     update_frames(model, q, qdot, &mut ws.frames);
     linearise_constraints(model, n_constraints, t, ws);
-    factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
+    let mut largest: f64 = 0.0;
     for r in 0..rows {
         ws.multipliers[r] = ws.jacobian.row(r).iter().zip(qdot.iter()).map(|(j, v)| j * v).sum::<f64>() - ws.nu[r];
+        largest = largest.max(ws.multipliers[r].abs());
     }
+    if largest <= tolerance {
+        return Ok(());
+    }
+    factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
     cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
     ws.jacobian.mul_transpose_vec(&ws.multipliers[..rows], &mut ws.scratch);
     for k in 0..n {

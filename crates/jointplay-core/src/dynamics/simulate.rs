@@ -15,7 +15,8 @@ pub struct SimulationOptions {
     pub integrator: IntegratorOptions,
     /// Drift control.
     pub stabilization: Stabilization,
-    /// Largest constraint residual left by the projection [m or rad].
+    /// Largest constraint residual left by the projection [m or rad], and of
+    /// the velocity constraints [m/s or rad/s].
     pub position_tolerance: f64,
 }
 

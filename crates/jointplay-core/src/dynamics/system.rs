@@ -104,7 +104,7 @@ impl OdeSystem for MechanismSystem<'_> {
             let (q, qdot) = y.split_at_mut(n);
             let iterations = project_positions(self.model, m, t, q, self.options.position_tolerance, PROJECTION_ITERATIONS, self.ws)?;
             self.diagnostics.max_projection_iterations = self.diagnostics.max_projection_iterations.max(iterations);
-            project_velocities(self.model, m, t, q, qdot, self.ws)?;
+            project_velocities(self.model, m, t, q, qdot, self.options.position_tolerance, self.ws)?;
         }
         self.update_contact_memory(t, y)?;
         Ok(false)
@@ -119,7 +119,7 @@ impl OdeSystem for MechanismSystem<'_> {
             let m = self.model.n_dynamic_constraints;
             let (q, qdot) = sample.split_at_mut(n);
             project_positions(self.model, m, t, q, self.options.position_tolerance, PROJECTION_ITERATIONS, self.ws)?;
-            project_velocities(self.model, m, t, q, qdot, self.ws)?;
+            project_velocities(self.model, m, t, q, qdot, self.options.position_tolerance, self.ws)?;
         }
         let evaluated = accelerations(self.model, self.memory, t, &sample[..n], &sample[n..], self.options.stabilization, self.ws);
         if evaluated.is_ok() {

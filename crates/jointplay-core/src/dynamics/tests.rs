@@ -240,3 +240,4 @@ fn compile_reports_every_problem_with_its_location() {
         assert!(errors.contains(expected), "missing {expected:?} in\n{errors}");
     }
 }
+

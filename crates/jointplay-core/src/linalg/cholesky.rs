@@ -15,30 +15,33 @@ pub struct RankDeficiency {
 const RELATIVE_PIVOT_TOLERANCE: f64 = 1e-10;
 
 /// Factors the symmetric `n x n` row-major matrix `a` in place; its lower
-/// triangle becomes `L`. Only the lower triangle of the input is read.
+/// triangle becomes `L`, except that the diagonal holds `1 / l_jj` (the
+/// solves then multiply instead of divide). Only the lower triangle of the
+/// input is read.
 pub fn cholesky_factor(a: &mut [f64], n: usize) -> Result<(), RankDeficiency> {
     let scale = (0..n).map(|i| a[i * n + i].abs()).fold(0.0_f64, f64::max).max(f64::MIN_POSITIVE);
     for j in 0..n {
         // pivot: a_jj - sum_k l_jk^2
-        let mut pivot = a[j * n + j];
-        for k in 0..j {
-            pivot -= a[j * n + k] * a[j * n + k];
-        }
+        let row_j = &mut a[j * n..(j + 1) * n];
+        let pivot = row_j[j] - dot(&row_j[..j], &row_j[..j]);
         if !(pivot > RELATIVE_PIVOT_TOLERANCE * scale) {
             return Err(RankDeficiency { row: j, relative_pivot: pivot / scale });
         }
-        let l_jj = pivot.sqrt();
-        a[j * n + j] = l_jj;
-        // column below the pivot
-        for i in (j + 1)..n {
-            let mut s = a[i * n + j];
-            for k in 0..j {
-                s -= a[i * n + k] * a[j * n + k];
-            }
-            a[i * n + j] = s / l_jj;
+        let inverse = 1.0 / pivot.sqrt();
+        row_j[j] = inverse;
+        // column below the pivot: l_ij = (a_ij - sum_k l_ik l_jk) / l_jj
+        let (upper, lower) = a.split_at_mut((j + 1) * n);
+        let l_j = &upper[j * n..j * n + j];
+        for row_i in lower.chunks_exact_mut(n) {
+            row_i[j] = (row_i[j] - dot(&row_i[..j], l_j)) * inverse;
         }
     }
     Ok(())
+}
+
+#[inline]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 /// Solves `L L^T x = b` in place (`b` becomes `x`) with the factor from
@@ -46,11 +49,8 @@ pub fn cholesky_factor(a: &mut [f64], n: usize) -> Result<(), RankDeficiency> {
 pub fn cholesky_solve(l: &[f64], n: usize, b: &mut [f64]) {
     // forward: L y = b
     for i in 0..n {
-        let mut s = b[i];
-        for k in 0..i {
-            s -= l[i * n + k] * b[k];
-        }
-        b[i] = s / l[i * n + i];
+        let row = &l[i * n..i * n + i + 1];
+        b[i] = (b[i] - dot(&row[..i], &b[..i])) * row[i];
     }
     // backward: L^T x = y
     for i in (0..n).rev() {
@@ -58,7 +58,7 @@ pub fn cholesky_solve(l: &[f64], n: usize, b: &mut [f64]) {
         for k in (i + 1)..n {
             s -= l[k * n + i] * b[k];
         }
-        b[i] = s / l[i * n + i];
+        b[i] = s * l[i * n + i];
     }
 }
 

@@ -149,12 +149,22 @@ pub struct ClearanceJointSpec {
     /// Initial eccentricity vector of the journal centre from the bearing centre, global frame [m].
     #[serde(default)]
     pub initial_eccentricity: [f64; 2],
+    /// Whether assembly holds the journal at `initial_eccentricity` for positions and velocities
+    /// (the state of the ideal mechanism, the default); `false` keeps the journal where the
+    /// approximate input puts it, with its own velocity.
+    #[serde(default = "default_lock_at_assembly")]
+    pub lock_at_assembly: bool,
     /// Smallest contact-onset velocity used in the damping term [m/s]; guards grazing entries.
     #[serde(default = "default_onset_velocity_floor")]
     pub onset_velocity_floor: f64,
     /// Penetration at which the simulation stops as unphysical [m]; default 5 % of the journal radius.
     #[serde(default)]
     pub max_penetration: Option<f64>,
+}
+
+/// Clearance joints start as the ideal mechanism unless told otherwise.
+pub fn default_lock_at_assembly() -> bool {
+    true
 }
 
 /// Default onset velocity floor [m/s]: small against the impact velocities
