@@ -20,6 +20,7 @@ from pathlib import Path
 import jointplay as jp
 from jointplay import functions as fn
 from jointplay import laws
+from jointplay.mechanisms import slider_crank
 
 CRANK_SPEED = fn.rpm(5000.0)  # rad/s
 CRANK, ROD = 0.05, 0.12  # m
@@ -27,25 +28,16 @@ CRANK, ROD = 0.05, 0.12  # m
 
 def build_model(clearance: float = 0.5e-3) -> jp.Model:
     """The dry-clearance slider-crank; ``clearance`` is the radial clearance [m]."""
-    m = jp.Model("flores_slider_crank_dry", gravity=(0.0, -9.81))
-    m.add_ground_point("O", (0.0, 0.0))
-    m.add_ground_point("line", (0.0, 0.0))
-    m.add_body("crank", mass=0.30, inertia=1e-4, position=(CRANK / 2, 0.0),
-               points={"O": (-CRANK / 2, 0.0), "A": (CRANK / 2, 0.0)})
-    m.add_body("rod", mass=0.21, inertia=2.5e-4, position=(CRANK + ROD / 2, 0.0),
-               points={"A": (-ROD / 2, 0.0), "B": (ROD / 2, 0.0)})
-    m.add_body("slider", mass=0.14, inertia=1e-4, position=(CRANK + ROD, 0.0), points={"B": (0.0, 0.0)})
-    m.add_revolute("O", "ground.O", "crank.O")
-    m.add_revolute("A", "crank.A", "rod.A")
-    m.add_translational("guide", "ground.line", "slider.B", axis=(1.0, 0.0))
-    m.add_clearance_revolute(
-        "B", bearing="slider.B", journal="rod.B",
-        bearing_radius=0.010, clearance=clearance, length=0.040,
-        contact=laws.lankarani_nikravesh(0.9),
-        friction=laws.ambrosio(0.01, v0=1e-4, v1=1e-3),
+    return slider_crank(
+        name="flores_slider_crank_dry",
+        crank_length=CRANK, rod_length=ROD, masses=(0.30, 0.21, 0.14), inertias=(1e-4, 2.5e-4, 1e-4),
+        crank_speed=CRANK_SPEED,
+        clearance=dict(
+            bearing_radius=0.010, clearance=clearance, length=0.040,
+            contact=laws.lankarani_nikravesh(0.9),
+            friction=laws.ambrosio(0.01, v0=1e-4, v1=1e-3),
+        ),
     )
-    m.add_driver("motor", "O", fn.constant_speed(CRANK_SPEED))
-    return m
 
 
 def revolutions_to_time(revolutions: float) -> float:

@@ -1,0 +1,117 @@
+"""The Python API: builder errors, options, results, errors that keep results."""
+
+import numpy as np
+import pytest
+
+import flores_slider_crank_dry as flores
+import jointplay as jp
+from jointplay import functions as fn
+from jointplay import laws
+
+
+def pendulum(**body) -> jp.Model:
+    m = jp.Model("pendulum", gravity=(0, -9.81))
+    m.add_ground_point("O", (0, 0))
+    m.add_body("bar", mass=1.0, inertia=0.02, position=(0.25, 0), points={"O": (-0.25, 0)}, **body)
+    m.add_revolute("pin", "ground.O", "bar.O")
+    return m
+
+
+def test_model_errors_list_every_problem_with_its_location():
+    m = pendulum()
+    m.add_body("ghost", mass=0.0, inertia=1.0)
+    m.add_revolute("hinge", "bar.Q", "nothing.P")
+    m.add_driver("motor", "nojoint", fn.constant_speed(1.0))
+    with pytest.raises(jp.ModelError) as info:
+        m.simulate(1.0)
+    text = str(info.value)
+    assert "bodies[1].mass: mass must be > 0, got 0" in text
+    assert 'joints[1].first: unknown point "bar.Q" (body "bar" has no such point)' in text
+    assert 'joints[1].second: unknown point "nothing.P" (no body named "nothing")' in text
+    assert 'drivers[0].joint: unknown revolute or translational joint "nojoint"' in text
+    assert len(info.value.problems) == 4
+
+
+def test_bad_simulation_options_are_model_errors_naming_the_option():
+    with pytest.raises(jp.ModelError) as info:
+        pendulum().simulate(-1.0, method="euler", rtol=0.0)
+    locations = {p.location for p in info.value.problems}
+    assert locations == {"simulation.t_end", "simulation.method", "simulation.rtol"}
+
+
+def test_results_give_arrays_units_and_an_xarray_dataset(tmp_path):
+    results = pendulum().simulate(0.5, output_step=0.01)
+    assert results.time.size == 51
+    assert results["bar.angle"].shape == results.time.shape
+    assert results.unit("bar.ax") == "m/s^2" and results.unit("pin.fx") == "N"
+    with pytest.raises(KeyError, match="did you mean bar.omega"):
+        results["bar.omegaa"]
+    ds = results.to_xarray()
+    assert ds["bar.omega"].attrs["units"] == "rad/s"
+    assert ds.attrs["statistics_accepted_steps"] == results.statistics["accepted_steps"]
+    path = tmp_path / "pendulum.nc"
+    results.save(path)
+    import xarray as xr
+
+    with xr.open_dataset(path, engine="h5netcdf") as back:
+        np.testing.assert_array_equal(back["bar.angle"].values, results["bar.angle"])
+        assert back["pin.fy"].attrs["units"] == "N"
+
+
+def test_a_failing_simulation_keeps_what_was_computed():
+    # a clearance joint whose penetration bound is absurdly small stops at the first impact
+    model = flores.build_model()
+    model.joint("B")["max_penetration"] = 1e-9
+    with pytest.raises(jp.SimulationError) as info:
+        flores.simulate(model)
+    error = info.value
+    assert error.kind == "ExcessivePenetration" and error.element == "B"
+    assert error.time == pytest.approx(2.27e-4, rel=0.01)
+    assert error.results is not None and error.results.time[-1] <= error.time
+    assert error.results["slider.x"].size == error.results.time.size > 10
+    assert "penetration" in str(error)
+
+
+def test_locked_mechanism_is_a_simulation_error_at_assembly():
+    m = pendulum(angle=0.1)  # off its pin, so assembly iterates and meets the dependent equations
+    m.add_revolute("again", "ground.O", "bar.O")
+    m.add_body("free", mass=1.0, inertia=0.1)
+    with pytest.raises(jp.SimulationError) as info:
+        m.simulate(0.1)
+    assert info.value.stage == "assembly" and info.value.element == "again"
+
+
+def test_ideal_joint_reactions_balance_newtons_law_on_the_slider():
+    # the slider is pushed only by the rod through B and guided vertically: m_s a_x = -(force on rod from slider)_x
+    results = flores.build_model().idealized().simulate(flores.revolutions_to_time(1.0), rtol=1e-9, atol=1e-12,
+                                                        output_step=1e-5)
+    np.testing.assert_allclose(0.14 * results["slider.ax"], -results["B.fx"], atol=1e-6 * np.max(np.abs(results["B.fx"])))
+    # the work of the motor equals the change of kinetic plus potential energy
+    from scipy.integrate import cumulative_trapezoid
+
+    work = cumulative_trapezoid(results["motor.torque"] * results["crank.omega"], results.time, initial=0.0)
+    energy = results["system.energy"] - results["system.energy"][0]
+    np.testing.assert_allclose(work, energy, atol=1e-4 * np.max(np.abs(energy)))
+
+
+def test_progress_is_reported():
+    seen = []
+    pendulum().simulate(0.2, progress=seen.append)
+    assert seen and seen[-1] == pytest.approx(0.2)
+
+
+def test_builder_round_trips_through_plain_data():
+    m = flores.build_model()
+    again = jp.Model.from_spec(m.to_spec())
+    a = flores.simulate(m, revolutions=0.2)
+    b = flores.simulate(again, revolutions=0.2)
+    np.testing.assert_array_equal(a["B.fn"], b["B.fn"])
+
+
+def test_laws_reach_the_core():
+    m = flores.build_model()
+    m.joint("B")["contact"] = laws.flores(0.5)
+    m.joint("B")["friction"] = laws.coulomb(0.05, velocity_tolerance=1e-3)
+    m.joint("B")["stiffness"] = laws.johnson_line()
+    results = flores.simulate(m, revolutions=0.3)
+    assert results.summary()["clearance_joints"]["B"]["impacts"] >= 1
