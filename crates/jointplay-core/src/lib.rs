@@ -10,6 +10,7 @@
 //! - [`contact`]: normal contact force laws and contact stiffness laws;
 //! - [`friction`]: tangential friction laws;
 //! - [`motion`]: prescribed functions of time for drivers and loads;
+//! - [`lubrication`]: journal-bearing film models and the Reynolds solver;
 //! - [`joint`]: ideal joints as constraints, the clearance revolute joint as a force element;
 //! - [`force`]: springs, dampers, applied loads, gravity;
 //! - [`dynamics`]: model, state, workspace, equations of motion, assembly, projection;
@@ -31,6 +32,7 @@ pub mod friction;
 pub mod integrate;
 pub mod joint;
 pub mod linalg;
+pub mod lubrication;
 pub mod motion;
 pub mod spec;
 

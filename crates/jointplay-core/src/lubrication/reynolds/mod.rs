@@ -1,0 +1,1 @@
+//! Finite-difference solution of the Reynolds equation (under construction in branch `reynolds`).
