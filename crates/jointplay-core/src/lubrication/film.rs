@@ -20,8 +20,9 @@
 //!
 //! Force on the journal: `F = -integral p u(theta) R dtheta dz` (pressure
 //! pushes the journal away from the thin film); the bearing gets `-F`.
-//! Friction torque on the journal about its centre is reported positive
-//! when it opposes `omega_j - omega_b > 0`... see each model's page.
+//! Friction torque: the torque of the film's shear stress on the journal
+//! about its centre [N m], counter-clockwise positive (negative when the
+//! journal spins faster than the bore, `omega_j > omega_b`).
 
 use nalgebra::Vector2;
 
@@ -67,6 +68,6 @@ pub struct FilmForce {
     pub peak_pressure: f64,
     /// Angle theta of the peak pressure [rad].
     pub peak_pressure_angle: f64,
-    /// Viscous friction torque on the journal about its centre [N m] (NaN if the model does not give it).
+    /// Shear torque of the film on the journal about its centre, counter-clockwise positive [N m] (NaN if the model does not give it).
     pub friction_torque: f64,
 }
