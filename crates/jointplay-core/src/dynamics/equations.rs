@@ -44,9 +44,6 @@ pub fn update_frames(model: &Model, q: &[f64], qdot: &[f64], frames: &mut [Frame
 /// constraints from the current frames; returns the number of rows.
 pub(crate) fn linearise_constraints(model: &Model, n_constraints: usize, t: f64, ws: &mut Workspace) -> usize {
     let rows = model.row_offsets[n_constraints];
-    for r in 0..rows {
-        ws.jacobian.row_mut(r).fill(0.0);
-    }
     for (k, c) in model.constraints[..n_constraints].iter().enumerate() {
         let target = ConstraintRows { jacobian: &mut ws.jacobian, row: model.row_offsets[k], nu: &mut ws.nu, gamma: &mut ws.gamma };
         c.kind.linearise(&ws.frames, t, target);
@@ -64,15 +61,50 @@ pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, 
     ws.residual[..rows].iter().enumerate().fold((0.0, 0), |(m, i), (r, v)| if v.abs() > m { (v.abs(), r) } else { (m, i) })
 }
 
+/// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's bodies.
+pub(crate) fn jacobian_times(model: &Model, rows: usize, ws: &Workspace, v: &[f64], out: &mut [f64]) {
+    let (jacobian, cols) = (ws.jacobian.as_slice(), ws.jacobian.cols());
+    for r in 0..rows {
+        let mut s = 0.0;
+        for &c in &model.row_bodies[r] {
+            if c != usize::MAX {
+                let j = &jacobian[r * cols + c..r * cols + c + 3];
+                s += j[0] * v[c] + j[1] * v[c + 1] + j[2] * v[c + 2];
+            }
+        }
+        out[r] = s;
+    }
+}
+
+/// `out = Phi_q^T w` over the first `rows` rows, touching only each row's bodies.
+pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &crate::linalg::DenseMatrix, w: &[f64], out: &mut [f64]) {
+    let cols = jacobian.cols();
+    let data = jacobian.as_slice();
+    out.fill(0.0);
+    for r in 0..rows {
+        for &c in &model.row_bodies[r] {
+            if c != usize::MAX {
+                let j = &data[r * cols + c..r * cols + c + 3];
+                out[c] += j[0] * w[r];
+                out[c + 1] += j[1] * w[r];
+                out[c + 2] += j[2] * w[r];
+            }
+        }
+    }
+}
+
 /// Forms `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows and factors it in place.
 /// Every row touches at most two bodies, so only the entries of the
 /// precomputed pattern (rows sharing a body) are summed.
 pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
     let schur = &mut ws.schur[..rows * rows];
     schur.fill(0.0);
-    for &(a, b, c) in model.schur_pattern.iter().take_while(|e| e.0 < rows) {
-        let (ra, rb) = (&ws.jacobian.row(a)[c..c + 3], &ws.jacobian.row(b)[c..c + 3]);
-        let w = &model.inverse_mass[c..c + 3];
+    let (jacobian, cols) = (ws.jacobian.as_slice(), ws.jacobian.cols());
+    for &(a, b, c) in &model.schur_pattern {
+        if a >= rows {
+            break;
+        }
+        let (ra, rb, w) = (&jacobian[a * cols + c..a * cols + c + 3], &jacobian[b * cols + c..b * cols + c + 3], &model.inverse_mass[c..c + 3]);
         schur[a * rows + b] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
     }
     cholesky_factor(schur, rows)
@@ -127,22 +159,27 @@ pub fn accelerations(
     let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
     if let Stabilization::Baumgarte { alpha, beta } = stabilization {
         constraint_residuals(model, model.n_dynamic_constraints, t, ws);
+        let mut phi_dot = std::mem::take(&mut ws.multipliers);
+        jacobian_times(model, rows, ws, qdot, &mut phi_dot);
         for r in 0..rows {
-            let phi_dot: f64 = ws.jacobian.row(r).iter().zip(qdot).map(|(j, v)| j * v).sum::<f64>() - ws.nu[r];
-            ws.gamma[r] -= 2.0 * alpha * phi_dot + beta * beta * ws.residual[r];
+            ws.gamma[r] -= 2.0 * alpha * (phi_dot[r] - ws.nu[r]) + beta * beta * ws.residual[r];
         }
+        ws.multipliers = phi_dot;
     }
     // lambda from (J M^-1 J^T) lambda = J M^-1 Q - gamma
     if rows > 0 {
         factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
         for k in 0..n {
-            ws.scratch[k] = model.inverse_mass[k] * ws.generalised_force[k];
+            ws.accelerations[k] = model.inverse_mass[k] * ws.generalised_force[k];
         }
+        let mut rhs = std::mem::take(&mut ws.multipliers);
+        jacobian_times(model, rows, ws, &ws.accelerations, &mut rhs);
         for r in 0..rows {
-            ws.multipliers[r] = ws.jacobian.row(r).iter().zip(&ws.scratch).map(|(j, a)| j * a).sum::<f64>() - ws.gamma[r];
+            rhs[r] -= ws.gamma[r];
         }
-        cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
-        ws.jacobian.mul_transpose_vec(&ws.multipliers[..rows], &mut ws.scratch);
+        cholesky_solve(&ws.schur[..rows * rows], rows, &mut rhs[..rows]);
+        ws.multipliers = rhs;
+        jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     } else {
         ws.scratch.fill(0.0);
     }

@@ -116,13 +116,13 @@ impl Frame {
     }
 }
 
-/// Adds `(dx, dy, dphi)` to the columns of `body` in one Jacobian row.
+/// Sets the columns of `body` in one Jacobian row to `(dx, dy, dphi)`.
 #[inline]
-pub fn add_body_columns(row: &mut [f64], body: BodyIndex, dx: f64, dy: f64, dphi: f64) {
+pub fn set_body_columns(row: &mut [f64], body: BodyIndex, dx: f64, dy: f64, dphi: f64) {
     if let Some(c) = body.coordinate() {
-        row[c] += dx;
-        row[c + 1] += dy;
-        row[c + 2] += dphi;
+        row[c] = dx;
+        row[c + 1] = dy;
+        row[c + 2] = dphi;
     }
 }
 

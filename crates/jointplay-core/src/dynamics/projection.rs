@@ -4,7 +4,9 @@
 //! constraints, with the driver equations held) and
 //! `dv = -M^-1 Phi_q^T (Phi_q M^-1 Phi_q^T)^-1 (Phi_q v - nu)`.
 
-use super::equations::{constraint_residuals, factor_constraint_matrix, linearise_constraints, singular_error, update_frames};
+use super::equations::{
+    constraint_residuals, factor_constraint_matrix, jacobian_times, jacobian_transpose_times, linearise_constraints, singular_error, update_frames,
+};
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 use crate::linalg::cholesky_solve;
@@ -43,7 +45,7 @@ pub(crate) fn project_positions(
         factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
         ws.multipliers[..rows].copy_from_slice(&ws.residual[..rows]);
         cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
-        ws.jacobian.mul_transpose_vec(&ws.multipliers[..rows], &mut ws.scratch);
+        jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
         for k in 0..n {
             q[k] -= model.inverse_mass[k] * ws.scratch[k];
         }
@@ -69,17 +71,20 @@ pub(crate) fn project_velocities(
     }
     update_frames(model, q, qdot, &mut ws.frames);
     linearise_constraints(model, n_constraints, t, ws);
+    let mut residual = std::mem::take(&mut ws.multipliers);
+    jacobian_times(model, rows, ws, qdot, &mut residual);
     let mut largest: f64 = 0.0;
     for r in 0..rows {
-        ws.multipliers[r] = ws.jacobian.row(r).iter().zip(qdot.iter()).map(|(j, v)| j * v).sum::<f64>() - ws.nu[r];
-        largest = largest.max(ws.multipliers[r].abs());
+        residual[r] -= ws.nu[r];
+        largest = largest.max(residual[r].abs());
     }
+    ws.multipliers = residual;
     if largest <= tolerance {
         return Ok(());
     }
     factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
     cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
-    ws.jacobian.mul_transpose_vec(&ws.multipliers[..rows], &mut ws.scratch);
+    jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     for k in 0..n {
         qdot[k] -= model.inverse_mass[k] * ws.scratch[k];
     }

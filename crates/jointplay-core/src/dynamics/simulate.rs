@@ -76,6 +76,7 @@ pub fn simulate(
             diagnostics: &mut diagnostics,
             options,
             progress,
+            last_accepted: f64::NAN,
         };
         match system.update_contact_memory(t0, &y) {
             Ok(()) => integrate(&mut system, t0, t_end, &mut y, &options.integrator),

@@ -4,6 +4,7 @@
 
 use super::channels::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
+use super::frame::Frame;
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::state::ContactMemory;
@@ -27,6 +28,8 @@ pub(crate) struct MechanismSystem<'a> {
     pub diagnostics: &'a mut Diagnostics,
     pub options: &'a SimulationOptions,
     pub progress: Option<&'a Progress>,
+    /// Time of the last accepted (and projected) step end [s].
+    pub last_accepted: f64,
 }
 
 impl MechanismSystem<'_> {
@@ -81,8 +84,15 @@ impl OdeSystem for MechanismSystem<'_> {
     }
 
     fn event_functions(&mut self, _t: f64, y: &[f64], g: &mut [f64]) {
+        // only the bodies of the clearance joints matter here
         let n = self.model.n_coordinates();
-        update_frames(self.model, &y[..n], &y[n..], &mut self.ws.frames);
+        for joint in &self.model.clearance_joints {
+            for body in [joint.bearing.body, joint.journal.body] {
+                if let Some(c) = body.coordinate() {
+                    self.ws.frames[body.0] = Frame::from_coordinates(&y[c..c + 3], &y[n + c..n + c + 3]);
+                }
+            }
+        }
         for (k, joint) in self.model.clearance_joints.iter().enumerate() {
             g[k] = joint.penetration(&self.ws.frames);
         }
@@ -107,15 +117,17 @@ impl OdeSystem for MechanismSystem<'_> {
             project_velocities(self.model, m, t, q, qdot, self.options.position_tolerance, self.ws)?;
         }
         self.update_contact_memory(t, y)?;
+        self.last_accepted = t;
         Ok(false)
     }
 
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let n = self.model.n_coordinates();
         // samples between steps come from dense output: project them like the steps
+        // (a sample at the step just accepted was projected by accept())
         let mut sample = std::mem::take(&mut self.ws.sample);
         sample.copy_from_slice(y);
-        if self.options.stabilization == Stabilization::Projection {
+        if self.options.stabilization == Stabilization::Projection && t != self.last_accepted {
             let m = self.model.n_dynamic_constraints;
             let (q, qdot) = sample.split_at_mut(n);
             project_positions(self.model, m, t, q, self.options.position_tolerance, PROJECTION_ITERATIONS, self.ws)?;

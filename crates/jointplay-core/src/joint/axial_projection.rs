@@ -4,7 +4,7 @@
 //! along the axis it is the displacement driver of that joint.
 
 use super::{ConstraintRows, Target};
-use crate::dynamics::frame::{add_body_columns, perp, BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{set_body_columns, perp, BodyPoint, Frame, Vec2};
 
 /// Projection of the point-to-point vector on a body-fixed direction is prescribed.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,8 +37,8 @@ impl AxialProjection {
         let d = fj.position + sj - fi.position - si;
         let d_dot = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
         let row = rows.jacobian.row_mut(rows.row);
-        add_body_columns(row, self.first.body, -u.x, -u.y, perp(u).dot(&d) - u.dot(&perp(si)));
-        add_body_columns(row, self.second.body, u.x, u.y, u.dot(&perp(sj)));
+        set_body_columns(row, self.first.body, -u.x, -u.y, perp(u).dot(&d) - u.dot(&perp(si)));
+        set_body_columns(row, self.second.body, u.x, u.y, u.dot(&perp(sj)));
         let (wi, wj) = (fi.angular_velocity, fj.angular_velocity);
         let target = self.target.sample(t);
         rows.nu[rows.row] = target.rate;

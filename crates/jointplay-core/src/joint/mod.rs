@@ -79,7 +79,8 @@ impl ConstraintKind {
     }
 
     /// Jacobian rows, `nu` and `gamma` at the current frames (positions and velocities).
-    /// The Jacobian rows must be zero on entry.
+    /// Only the columns of the constraint's bodies are written; the others must be zero
+    /// (they stay zero: the pattern of a row never changes).
     pub fn linearise(&self, frames: &[Frame], t: f64, rows: ConstraintRows<'_>) {
         match self {
             Self::PointCoincidence(c) => c.linearise(frames, rows),

@@ -19,38 +19,82 @@ const RELATIVE_PIVOT_TOLERANCE: f64 = 1e-10;
 /// solves then multiply instead of divide). Only the lower triangle of the
 /// input is read.
 pub fn cholesky_factor(a: &mut [f64], n: usize) -> Result<(), RankDeficiency> {
-    let scale = (0..n).map(|i| a[i * n + i].abs()).fold(0.0_f64, f64::max).max(f64::MIN_POSITIVE);
+    assert!(a.len() >= n * n, "matrix buffer shorter than n x n");
+    // sizes of planar mechanisms: loops with constant bounds unroll
+    macro_rules! fixed {
+        ($($size:literal)*) => {
+            match n {
+                $($size => factor::<$size>(a),)*
+                _ => factor_dynamic(a, n),
+            }
+        };
+    }
+    fixed!(1 2 3 4 5 6 7 8 9 10 11 12)
+}
+
+#[inline(always)]
+fn factor_step(a: &mut [f64], n: usize, scale: f64) -> Result<(), RankDeficiency> {
     for j in 0..n {
         // pivot: a_jj - sum_k l_jk^2
-        let row_j = &mut a[j * n..(j + 1) * n];
-        let pivot = row_j[j] - dot(&row_j[..j], &row_j[..j]);
+        let mut pivot = a[j * n + j];
+        for k in 0..j {
+            pivot -= a[j * n + k] * a[j * n + k];
+        }
         if !(pivot > RELATIVE_PIVOT_TOLERANCE * scale) {
             return Err(RankDeficiency { row: j, relative_pivot: pivot / scale });
         }
         let inverse = 1.0 / pivot.sqrt();
-        row_j[j] = inverse;
+        a[j * n + j] = inverse;
         // column below the pivot: l_ij = (a_ij - sum_k l_ik l_jk) / l_jj
-        let (upper, lower) = a.split_at_mut((j + 1) * n);
-        let l_j = &upper[j * n..j * n + j];
-        for row_i in lower.chunks_exact_mut(n) {
-            row_i[j] = (row_i[j] - dot(&row_i[..j], l_j)) * inverse;
+        for i in (j + 1)..n {
+            let mut s = a[i * n + j];
+            for k in 0..j {
+                s -= a[i * n + k] * a[j * n + k];
+            }
+            a[i * n + j] = s * inverse;
         }
     }
     Ok(())
 }
 
-#[inline]
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
+fn diagonal_scale(a: &[f64], n: usize) -> f64 {
+    (0..n).map(|i| a[i * n + i].abs()).fold(0.0_f64, f64::max).max(f64::MIN_POSITIVE)
+}
+
+fn factor<const N: usize>(a: &mut [f64]) -> Result<(), RankDeficiency> {
+    let a = &mut a[..N * N];
+    let scale = diagonal_scale(a, N);
+    factor_step(a, N, scale)
+}
+
+fn factor_dynamic(a: &mut [f64], n: usize) -> Result<(), RankDeficiency> {
+    let scale = diagonal_scale(a, n);
+    factor_step(&mut a[..n * n], n, scale)
 }
 
 /// Solves `L L^T x = b` in place (`b` becomes `x`) with the factor from
 /// [`cholesky_factor`].
 pub fn cholesky_solve(l: &[f64], n: usize, b: &mut [f64]) {
+    macro_rules! fixed {
+        ($($size:literal)*) => {
+            match n {
+                $($size => solve_step(&l[..$size * $size], $size, &mut b[..$size]),)*
+                _ => solve_step(&l[..n * n], n, &mut b[..n]),
+            }
+        };
+    }
+    fixed!(1 2 3 4 5 6 7 8 9 10 11 12)
+}
+
+#[inline(always)]
+fn solve_step(l: &[f64], n: usize, b: &mut [f64]) {
     // forward: L y = b
     for i in 0..n {
-        let row = &l[i * n..i * n + i + 1];
-        b[i] = (b[i] - dot(&row[..i], &b[..i])) * row[i];
+        let mut s = b[i];
+        for k in 0..i {
+            s -= l[i * n + k] * b[k];
+        }
+        b[i] = s * l[i * n + i];
     }
     // backward: L^T x = y
     for i in (0..n).rev() {
