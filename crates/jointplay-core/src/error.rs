@@ -117,6 +117,14 @@ pub enum SimulationError {
         /// The bound [m].
         bound: f64,
     },
+    /// The integration was asked for something it cannot do (bad options, t_end before t0, wrong state length).
+    #[error("invalid integration input at t = {time:.6e} s: {message}")]
+    InvalidInput {
+        /// Start time [s].
+        time: f64,
+        /// What is wrong.
+        message: String,
+    },
     /// The run was interrupted from outside (for example Ctrl-C).
     #[error("interrupted at t = {time:.6e} s")]
     Interrupted {
@@ -142,6 +150,7 @@ impl SimulationError {
             | Self::SingularConfiguration { time, .. }
             | Self::ConstraintViolation { time, .. }
             | Self::ExcessivePenetration { time, .. }
+            | Self::InvalidInput { time, .. }
             | Self::Interrupted { time } => *time,
         }
     }
@@ -154,7 +163,7 @@ impl SimulationError {
             | Self::SingularConfiguration { element, .. }
             | Self::ConstraintViolation { element, .. }
             | Self::ExcessivePenetration { element, .. } => Some(element),
-            Self::TooManySteps { .. } | Self::Interrupted { .. } => None,
+            Self::TooManySteps { .. } | Self::InvalidInput { .. } | Self::Interrupted { .. } => None,
         }
     }
 }

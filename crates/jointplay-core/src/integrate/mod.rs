@@ -127,7 +127,7 @@ pub(crate) struct Attempt {
 /// whatever `record()` stored stays with the system. Options that fail
 /// [`IntegratorOptions::validate`], `t_end < t0`, non-finite times or a
 /// state whose length differs from `system.len()` are reported as
-/// `NonFinite` with element `integrator input (...)` naming the problem.
+/// `InvalidInput` naming the problem.
 pub fn integrate<S: OdeSystem>(
     system: &mut S,
     t0: f64,
@@ -137,8 +137,7 @@ pub fn integrate<S: OdeSystem>(
 ) -> (Statistics, Result<(), SimulationError>) {
     let mut stats = Statistics::default();
     if let Err(problem) = check_input(system, t0, t_end, y, options) {
-        let element = format!("integrator input ({problem})");
-        return (stats, Err(SimulationError::NonFinite { time: t0, element }));
+        return (stats, Err(SimulationError::InvalidInput { time: t0, message: problem }));
     }
     let n = y.len();
     let result = match options.method {

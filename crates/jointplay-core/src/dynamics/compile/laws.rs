@@ -49,19 +49,15 @@ pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: 
 }
 
 pub(super) fn build_normal_force_law(c: &ContactSpec, loc: &str, errors: &mut ModelErrors) -> Option<NormalForceLaw> {
-    let (law, restitution) = match *c {
-        ContactSpec::Hertz => return Some(NormalForceLaw::Hertz),
-        ContactSpec::HuntCrossley { restitution } => (NormalForceLaw::HuntCrossley { restitution }, restitution),
-        ContactSpec::LankaraniNikravesh { restitution } => (NormalForceLaw::LankaraniNikravesh { restitution }, restitution),
-        ContactSpec::Flores { restitution } => (NormalForceLaw::Flores { restitution }, restitution),
-        ContactSpec::Gonthier { restitution } => (NormalForceLaw::Gonthier { restitution }, restitution),
-        ContactSpec::HuGuo { restitution } => (NormalForceLaw::HuGuo { restitution }, restitution),
+    let law = match *c {
+        ContactSpec::Hertz => NormalForceLaw::Hertz,
+        ContactSpec::HuntCrossley { restitution } => NormalForceLaw::HuntCrossley { restitution },
+        ContactSpec::LankaraniNikravesh { restitution } => NormalForceLaw::LankaraniNikravesh { restitution },
+        ContactSpec::Flores { restitution } => NormalForceLaw::Flores { restitution },
+        ContactSpec::Gonthier { restitution } => NormalForceLaw::Gonthier { restitution },
+        ContactSpec::HuGuo { restitution } => NormalForceLaw::HuGuo { restitution },
     };
-    if !(restitution > 0.0 && restitution <= 1.0) {
-        errors.push(format!("{loc}.restitution"), format!("must lie in (0, 1], got {restitution}"));
-        return None;
-    }
-    Some(law)
+    law.validated().map_err(|message| errors.push(format!("{loc}.restitution"), message)).ok()
 }
 
 pub(super) fn build_friction(f: &FrictionSpec, loc: &str, errors: &mut ModelErrors) -> Option<FrictionLaw> {

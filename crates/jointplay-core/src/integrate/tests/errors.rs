@@ -140,13 +140,12 @@ fn integrate_refuses_invalid_input_before_stepping() {
     let (stats, result) = integrate(&mut sys, 0.0, 1.0, &mut [1.0], &opts);
     assert_eq!(
         result,
-        Err(SimulationError::NonFinite {
+        Err(SimulationError::InvalidInput {
             time: 0.0,
-            element: "integrator input (max_step: must be > 0 s, got 0e0; min_step: must be < max_step, got 1e-14)"
-                .to_string()
+            message: "max_step: must be > 0 s, got 0e0; min_step: must be < max_step, got 1e-14".to_string()
         })
     );
     assert_eq!((stats, sys.samples.len()), (Statistics::default(), 0));
     let (_, result) = integrate(&mut sys, 0.0, 1.0, &mut [1.0, 2.0], &IntegratorOptions::default());
-    assert!(matches!(result, Err(SimulationError::NonFinite { .. })));
+    assert!(matches!(result, Err(SimulationError::InvalidInput { .. })));
 }
