@@ -65,8 +65,10 @@ _HERTZ_UNITS = {"hertz", "kilohertz", "megahertz"}
 
 @lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
-    """The one pint registry jointplay uses."""
-    return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    """The one pint registry jointplay uses (with ``rev`` for revolution, as in ``"10 rev/s"``)."""
+    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    ureg.define("rev = revolution")
+    return ureg
 
 
 def _unit_names(q) -> set[str]:

@@ -99,7 +99,7 @@ class Builder:
         if value is None:
             self.problem(join(where, tag), f"missing required value (one of {', '.join(options)})")
             return None
-        if value not in options:
+        if not isinstance(value, str) or value not in options:
             self.problem(join(where, tag), f"must be one of {', '.join(options)}, got {value!r}"
                                            f"{did_you_mean(value, options)}")
             return None
