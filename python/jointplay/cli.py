@@ -40,7 +40,7 @@ Exit codes: 0 success, 2 bad input (model file, missing file, bad option),
 app = typer.Typer(name="jointplay", help=HELP, no_args_is_help=True, add_completion=False,
                   pretty_exceptions_show_locals=False, rich_markup_mode=None)
 out = Console(highlight=False)
-err = Console(stderr=True, highlight=False)
+err = Console(stderr=True, highlight=False, soft_wrap=True)
 
 SetOption = Annotated[list[str], typer.Option(
     "--set", metavar="PATH=VALUE",
@@ -199,7 +199,9 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
         if exc.results is not None:
             _save(exc.results, output)
         where = f" in {exc.element}" if exc.element else ""
-        err.print(f"[bold red]simulation failed[/] at t = {exc.time:.6g} s{where}: {exc.cause}", markup=True)
+        kind = f" ({exc.kind})" if exc.kind else ""
+        err.print(f"[bold red]simulation failed[/]{kind} at t = {exc.time:.6g} s{where}: ", end="")
+        err.print(exc.cause, markup=False)
         if exc.results is not None:
             err.print(f"results up to t = {exc.time:.6g} s saved to {output}")
         raise typer.Exit(EXIT_FAILED) from None
