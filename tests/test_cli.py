@@ -74,6 +74,14 @@ def test_bad_input_exits_2_with_a_message(args, message, tmp_path, monkeypatch):
     assert no_traceback(result)
 
 
+def test_run_without_an_end_time_exits_2(tmp_path):
+    model = tmp_path / "no_end.toml"
+    model.write_text(Path(DRY).read_text().replace('t_end = "24 ms"', ""))
+    result = invoke("run", str(model), "-o", str(tmp_path / "x.nc"))
+    assert result.exit_code == 2
+    assert "simulation.t_end: missing; set it in the [simulation] table or give --t-end" in result.stderr
+
+
 def test_unknown_option_exits_2():
     assert invoke("run", DRY, "--frobnicate").exit_code == 2
 

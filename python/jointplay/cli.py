@@ -195,6 +195,9 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
         results = _simulate(m, end, options, quiet)
     except ModelError as exc:
         raise _bad_input(f"{model}: bad simulation options", exc.problems) from None
+    except RuntimeError as exc:  # a panic in the core, caught at the binding
+        err.print(f"[bold red]internal error[/] (please report it with the model file): {exc}")
+        raise typer.Exit(EXIT_FAILED) from None
     except SimulationError as exc:
         if exc.results is not None:
             _save(exc.results, output)

@@ -7,8 +7,6 @@ friction) or ``kind`` (functions of time) are dispatched by
 their reason where they have one; docs/model-files.md lists every key.
 """
 
-from __future__ import annotations
-
 from typing import Any
 
 from pydantic import Field
