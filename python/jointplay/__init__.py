@@ -14,9 +14,10 @@ from . import functions, laws
 from ._core import __version__
 from .errors import ConvergenceError, JointplayError, JointplayWarning, ModelError, Problem, SimulationError
 from .model import Model
-from .results import Results
+from .modelfile import load, loads
+from .results import Results, open_results
 
 __all__ = [
     "ConvergenceError", "JointplayError", "JointplayWarning", "Model", "ModelError", "Problem", "Results",
-    "SimulationError", "__version__", "functions", "laws",
+    "SimulationError", "__version__", "functions", "laws", "load", "loads", "open_results",
 ]

@@ -266,6 +266,31 @@ class Model:
             raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
         return results
 
+    # model files -------------------------------------------------------------
+
+    @property
+    def simulation(self) -> dict:
+        """Default simulation options, SI units (``t_end``, ``method``, ``rtol``, ``max_step``...), as read
+        from a model file's ``[simulation]`` table; written back by :meth:`save`. Empty for a new model."""
+        return self.__dict__.setdefault("_simulation", {})
+
+    @simulation.setter
+    def simulation(self, options: dict) -> None:
+        self.__dict__["_simulation"] = dict(options)
+
+    def to_toml(self, header: str | None = None) -> str:
+        """The model (and its :attr:`simulation` defaults) as model-file TOML text; ``jointplay.load``
+        of that text gives the same model."""
+        from .modelfile import to_toml
+
+        return to_toml(self, header=header)
+
+    def save(self, path) -> None:
+        """Writes the model to a TOML model file."""
+        from pathlib import Path
+
+        Path(path).write_text(self.to_toml(), encoding="utf-8")
+
 
 def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,
              stabilization) -> dict:

@@ -91,12 +91,14 @@ class Results:
         attrs: dict[str, Any] = {
             "title": f"jointplay results: {self.spec.get('name', '') if self.spec else ''}".strip(),
             "model_json": json.dumps(self.spec) if self.spec is not None else "",
+            "model_toml": self.model_toml(),
             "options_json": json.dumps(self.options),
             "wall_time_s": float(self.wall_time),
             "completed": int(self.error is None),
         }
         if self.error is not None:
             attrs["error"] = str(self.error.get("message", ""))
+            attrs["error_json"] = json.dumps(self.error, default=str)
         for key, value in self.statistics.items():
             attrs[f"statistics_{key}"] = value
         for key, value in self.diagnostics.items():
@@ -105,8 +107,32 @@ class Results:
         return xr.Dataset(data_vars, coords=coords, attrs=attrs)
 
     def save(self, path) -> None:
-        """Writes the Dataset to a NetCDF file (h5netcdf engine)."""
+        """Writes the Dataset to a NetCDF file (h5netcdf engine); :func:`open_results` reads it back."""
         self.to_xarray().to_netcdf(path, engine="h5netcdf")
+
+    def model_toml(self) -> str:
+        """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table."""
+        if self.spec is None:
+            return ""
+        simulation = {k: v for k, v in self.options.items() if v is not None}
+        if self.error is None and self.time.size:
+            simulation = {"t_end": float(self.time[-1]), "t0": float(self.time[0]), **simulation}
+        return _with_simulation(self.spec, simulation)
+
+    def point_acceleration(self, point: str) -> tuple[np.ndarray, np.ndarray]:
+        """Acceleration [m/s^2] of a named body point ``"body.point"``, from the body's centre-of-mass
+        acceleration, angular velocity and angular acceleration: a_P = a_G + alpha x r - omega^2 r."""
+        body, _, name = point.partition(".")
+        bodies = {b["name"]: b for b in (self.spec or {}).get("bodies", [])}
+        local = next((p["position"] for p in bodies.get(body, {}).get("points", []) if p["name"] == name), None)
+        if local is None:
+            raise KeyError(f"no body point {point!r} in the model")
+        angle, omega, alpha = self[f"{body}.angle"], self[f"{body}.omega"], self[f"{body}.alpha"]
+        c, s_ = np.cos(angle), np.sin(angle)
+        rx, ry = c * local[0] - s_ * local[1], s_ * local[0] + c * local[1]
+        ax = self[f"{body}.ax"] - alpha * ry - omega**2 * rx
+        ay = self[f"{body}.ay"] + alpha * rx - omega**2 * ry
+        return ax, ay
 
     # summary ---------------------------------------------------------------
 
@@ -132,6 +158,17 @@ class Results:
                 "max_penetration": float(np.max(self[f"{element}.penetration"])) if self.time.size else 0.0,
             }
         out["clearance_joints"] = contact
+        out["point_accelerations"] = {}
+        for body in (self.spec or {}).get("bodies", []) if self.time.size else []:
+            for p in body.get("points", []):
+                name = f"{body['name']}.{p['name']}"
+                try:
+                    ax, ay = self.point_acceleration(name)
+                except KeyError:
+                    continue
+                out["point_accelerations"][name] = float(np.max(np.hypot(ax, ay)))
+        out["peak_forces"] = {n: v for n, v in peaks.items() if n.rsplit(".", 1)[1] in ("f", "fn", "force", "torque")}
+        out["error"] = None if self.error is None else dict(self.error)
         out["statistics"] = dict(self.statistics)
         out["wall_time"] = self.wall_time
         return out
@@ -143,3 +180,47 @@ def contact_fraction(time: np.ndarray, flag: np.ndarray) -> float:
         return float(flag[0]) if flag.size else 0.0
     dt = np.diff(time)
     return float(np.sum(dt * (flag[:-1] > 0.5)) / (time[-1] - time[0]))
+
+
+def _with_simulation(spec: dict, simulation: dict) -> str:
+    from .modelfile.writer import to_toml
+
+    keep = ("t_end", "t0", "method", "rtol", "atol", "max_step", "output_step", "initial_step", "min_step",
+            "max_steps", "stabilization")
+    return to_toml(spec, {k: simulation[k] for k in keep if k in simulation})
+
+
+def _attr_dict(attrs: dict, prefix: str) -> dict:
+    out = {}
+    for key, value in attrs.items():
+        if key.startswith(prefix):
+            if isinstance(value, np.ndarray):
+                value = value.tolist()
+            elif isinstance(value, np.generic):
+                value = value.item()
+            out[key[len(prefix):]] = value
+    return out
+
+
+def open_results(path) -> Results:
+    """Results from a NetCDF file written by :meth:`Results.save` (or ``jointplay run``)."""
+    import xarray as xr
+
+    with xr.open_dataset(path, engine="h5netcdf") as ds:
+        ds.load()
+        names = [str(n) for n in ds.data_vars]
+        attrs = dict(ds.attrs)
+        time = np.asarray(ds["time"].values, dtype=float)
+        values = np.array([np.asarray(ds[n].values, dtype=float) for n in names]).reshape(len(names), time.size)
+        units = [str(ds[n].attrs.get("units", "")) for n in names]
+        descriptions = [str(ds[n].attrs.get("description", "")) for n in names]
+    spec = json.loads(attrs["model_json"]) if attrs.get("model_json") else None
+    options = json.loads(attrs.get("options_json", "{}") or "{}")
+    diagnostics = _attr_dict(attrs, "diagnostics_")
+    if "impacts" in diagnostics and not isinstance(diagnostics["impacts"], list):
+        diagnostics["impacts"] = [diagnostics["impacts"]]
+    error = None
+    if not int(attrs.get("completed", 1)):
+        error = json.loads(attrs["error_json"]) if attrs.get("error_json") else {"message": attrs.get("error", "")}
+    return Results(time, names, units, descriptions, values, _attr_dict(attrs, "statistics_"), diagnostics,
+                   spec=spec, options=options, wall_time=float(attrs.get("wall_time_s", float("nan"))), error=error)

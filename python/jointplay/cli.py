@@ -1,0 +1,354 @@
+"""The ``jointplay`` command: check, run, plot and compare mechanism models.
+
+Exit codes: 0 success; 2 bad input (a model-file problem, a missing file,
+a bad option); 1 a simulation that stopped early (what was computed is
+still saved). Expected errors print a message, never a traceback.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.table import Table
+
+from . import __version__
+from .errors import ModelError, SimulationError
+from .units import UnitError, to_si
+
+EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
+
+HELP = """Simulate planar mechanisms with imperfect joints (clearance, contact-impact, friction).
+
+A mechanism is described in a TOML model file with units ("0.5 mm", "5000 rpm");
+see docs/model-files.md and the examples/ folder. A typical session:
+
+\b
+    jointplay check examples/flores_slider_crank_dry.toml
+    jointplay run examples/flores_slider_crank_dry.toml -o dry.nc
+    jointplay plot dry.nc -o figures
+    jointplay run examples/flores_slider_crank_dry.toml -o small.nc --set joints.B.clearance="0.1 mm"
+    jointplay compare dry.nc small.nc -o comparison
+
+Exit codes: 0 success, 2 bad input (model file, missing file, bad option),
+1 simulation failure (the results computed so far are still saved)."""
+
+app = typer.Typer(name="jointplay", help=HELP, no_args_is_help=True, add_completion=False,
+                  pretty_exceptions_show_locals=False, rich_markup_mode=None)
+out = Console(highlight=False)
+err = Console(stderr=True, highlight=False, soft_wrap=True)
+
+SetOption = Annotated[list[str], typer.Option(
+    "--set", metavar="PATH=VALUE",
+    help='Override a value of the model file by its dotted path, e.g. --set joints.B.clearance="0.1 mm" '
+         "(repeatable; validated like the file).")]
+
+
+def _version(value: bool) -> None:
+    if value:
+        out.print(f"jointplay {__version__}")
+        raise typer.Exit(EXIT_OK)
+
+
+@app.callback()
+def _main(version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True,
+                                                help="Print the version and exit.")] = False) -> None:
+    """Simulate planar mechanisms with imperfect joints."""
+
+
+# helpers ---------------------------------------------------------------------
+
+def _bad_input(title: str, problems) -> typer.Exit:
+    err.print(f"[bold red]error:[/] {title}")
+    for p in problems:
+        err.print(f"  {p}", markup=False)
+    return typer.Exit(EXIT_BAD_INPUT)
+
+
+def _load(model: Path, overrides: list[str]):
+    from .modelfile import load
+
+    try:
+        return load(model, overrides)
+    except ModelError as exc:
+        n = len(exc.problems)
+        raise _bad_input(f"{model}: {n} problem{'s' if n != 1 else ''}", exc.problems) from None
+
+
+def _open(path: Path):
+    from .results import open_results
+
+    if not path.is_file():
+        raise _bad_input(f"{path}: no such results file", [])
+    try:
+        return open_results(path)
+    except Exception as exc:  # h5py / xarray raise many types for a file that is not ours
+        raise _bad_input(f"{path}: not a jointplay results file ({type(exc).__name__}: {exc})", []) from None
+
+
+def _time_option(text: str | None, option: str) -> float | None:
+    if text is None:
+        return None
+    try:
+        value = to_si(text, "time")
+    except UnitError as exc:
+        raise _bad_input(f"{option}: {exc}", []) from None
+    if not value > 0:
+        raise _bad_input(f"{option}: must be > 0, got {text}", [])
+    return value
+
+
+def _words(kind: str) -> str:
+    """``RevoluteJoint`` -> ``revolute joint``."""
+    return "".join(f" {c.lower()}" if c.isupper() else c for c in kind).strip()
+
+
+def _fmt(value: float, unit: str = "") -> str:
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "-"
+    return f"{value:.4g} {unit}".strip()
+
+
+# check -----------------------------------------------------------------------
+
+@app.command()
+def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_default=False)],
+          set_: SetOption = []) -> None:  # noqa: B006 (typer reads the default)
+    """Validate a model file and print the assembled mechanism.
+
+    Prints the bodies with their assembled initial position, the joints, the
+    clearance joints, drivers and force elements, and the degrees of freedom.
+    Exits with 2 and one line per problem when the file is not valid.
+    """
+    m = _load(model, set_)
+    info = m.check()
+    spec = m.to_spec()
+    q0 = info["initial_coordinates"]
+    out.print(f"[bold]{spec['name']}[/]  ({model})")
+    bodies = Table("body", "mass", "inertia", "x (mm)", "y (mm)", "angle (deg)", title="bodies, assembled at t0")
+    for k, b in enumerate(spec["bodies"]):
+        x, y, phi = q0[3 * k: 3 * k + 3]
+        bodies.add_row(b["name"], _fmt(b["mass"], "kg"), _fmt(b["inertia"], "kg m^2"),
+                       f"{x * 1e3:.3f}", f"{y * 1e3:.3f}", f"{math.degrees(phi):.3f}")
+    out.print(bodies)
+    joints = Table("joint or driver", "kind", "first body", "second body", "equations", title="constraints")
+    for e in info["elements"]:
+        if e["kind"] != "AssemblyLock":  # clearance joints are held only while assembling
+            joints.add_row(e["name"], _words(e["kind"]), e["first"], e["second"], str(e["equations"]))
+    out.print(joints)
+    clearance = [j for j in spec["joints"] if j["type"] == "clearance_revolute"]
+    if clearance:
+        t = Table("clearance joint", "bearing", "journal", "bore radius", "clearance", "contact", "friction",
+                  title="clearance joints")
+        for j in clearance:
+            t.add_row(j["name"], j["bearing"], j["journal"], f"{j['bearing_radius'] * 1e3:g} mm",
+                      f"{j['clearance'] * 1e3:g} mm", j["contact"]["law"], j["friction"]["law"])
+        out.print(t)
+    if spec["forces"]:
+        t = Table("force element", "type", title="force elements")
+        for f in spec["forces"]:
+            t.add_row(f["name"], f["type"])
+        out.print(t)
+    dof = info["degrees_of_freedom"]
+    free = dof - 2 * len(clearance)
+    out.print(f"coordinates {info['n_coordinates']}, constraint equations {info['n_equations']}, "
+              f"degrees of freedom {dof} ({2 * len(clearance)} from {len(clearance)} clearance joint(s), "
+              f"{free} not driven)")
+    if free > 0:
+        out.print(f"[yellow]note:[/] {free} degree(s) of freedom are neither driven nor clearance: "
+                  "the mechanism moves under gravity, forces and initial velocities only")
+    out.print("[green]ok[/]")
+
+
+# run -------------------------------------------------------------------------
+
+@app.command()
+def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_default=False)],
+        output: Annotated[Path | None, typer.Option("-o", "--output", help="NetCDF results file "
+                                                     "[default: MODEL name with .nc, in the current folder].")] = None,
+        t_end: Annotated[str | None, typer.Option("--t-end", help='End time, e.g. "24 ms" or 0.024 (seconds); '
+                                                  "overrides simulation.t_end.")] = None,
+        set_: SetOption = [],  # noqa: B006
+        quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar and no summary.")] = False) -> None:
+    """Simulate a model file, save the results (NetCDF) and print a summary.
+
+    The summary gives peak accelerations of the named points, peak joint and
+    contact forces, impacts and fraction of time in contact of each clearance
+    joint, integrator statistics and wall time. If the simulation stops early,
+    what was computed is saved and the exit code is 1.
+    """
+    m = _load(model, set_)
+    options = dict(m.simulation)
+    end = _time_option(t_end, "--t-end") or options.pop("t_end", None)
+    options.pop("t_end", None)
+    if end is None:
+        raise _bad_input(f"{model}: no end time", ["simulation.t_end: missing; set it in the [simulation] table "
+                                                   "or give --t-end"])
+    output = output or Path(f"{model.stem}.nc")
+    if not output.parent.is_dir():
+        raise _bad_input(f"-o {output}: no folder {output.parent}", [])
+    try:
+        results = _simulate(m, end, options, quiet)
+    except ModelError as exc:
+        raise _bad_input(f"{model}: bad simulation options", exc.problems) from None
+    except RuntimeError as exc:  # a panic in the core, caught at the binding
+        err.print(f"[bold red]internal error[/] (please report it with the model file): {exc}")
+        raise typer.Exit(EXIT_FAILED) from None
+    except SimulationError as exc:
+        if exc.results is not None:
+            _save(exc.results, output)
+        where = f" in {exc.element}" if exc.element else ""
+        kind = f" ({exc.kind})" if exc.kind else ""
+        err.print(f"[bold red]simulation failed[/]{kind} at t = {exc.time:.6g} s{where}: ", end="")
+        err.print(exc.cause, markup=False)
+        if exc.results is not None:
+            err.print(f"results up to t = {exc.time:.6g} s saved to {output}")
+        raise typer.Exit(EXIT_FAILED) from None
+    _save(results, output)
+    if not quiet:
+        print_summary(results)
+    out.print(f"wrote {output}")
+
+
+def _save(results, output: Path) -> None:
+    try:
+        results.save(output)
+    except OSError as exc:
+        raise _bad_input(f"-o {output}: cannot write the results ({exc})", []) from None
+
+
+def _simulate(m, end: float, options: dict, quiet: bool):
+    if quiet:
+        return m.simulate(end, **options)
+    t0 = options.get("t0", 0.0)
+    columns = [TextColumn("simulating"), BarColumn(), TextColumn("t = {task.fields[t]} / {task.fields[end]} ms"),
+               TimeElapsedColumn()]
+    with Progress(*columns, console=err, transient=True) as bar:
+        task = bar.add_task("run", total=end - t0, t=f"{t0 * 1e3:.3g}", end=f"{end * 1e3:.4g}")
+
+        def progress(t: float) -> None:
+            bar.update(task, completed=t - t0, t=f"{t * 1e3:.4g}")
+
+        return m.simulate(end, progress=progress, **options)
+
+
+def print_summary(results) -> None:
+    """The numbers of ``Results.summary()`` as tables."""
+    s = results.summary()
+    peaks = Table("quantity", "peak |value|", title=f"{results.spec.get('name', '')}: {s['samples']} samples "
+                                                     f"up to {s['t_end'] * 1e3:.4g} ms")
+    for name, value in s["point_accelerations"].items():
+        peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"))
+    for name, value in s["peak_forces"].items():
+        peaks.add_row(name, _fmt(value, results.unit(name)))
+    out.print(peaks)
+    if s["clearance_joints"]:
+        t = Table("clearance joint", "impacts", "time in contact", "max penetration")
+        for name, c in s["clearance_joints"].items():
+            t.add_row(name, str(c["impacts"]), f"{100 * c['contact_fraction']:.1f} %",
+                      f"{c['max_penetration'] * 1e6:.3g} um")
+        out.print(t)
+    st = s["statistics"]
+    t = Table("integrator", "value")
+    for key in ("accepted_steps", "rejected_steps", "rhs_evaluations", "events", "restarts"):
+        if key in st:
+            t.add_row(key.replace("_", " "), str(st[key]))
+    for key in ("smallest_step", "largest_step"):
+        if key in st:
+            t.add_row(key.replace("_", " "), _fmt(st[key], "s"))
+    t.add_row("wall time", _fmt(s["wall_time"], "s"))
+    out.print(t)
+
+
+# plot, compare ---------------------------------------------------------------
+
+ChannelOption = Annotated[list[str], typer.Option("--channel", "-c", help="Channel to draw, e.g. slider.ax "
+                                                  "(repeatable; default: the key channels).")]
+FormatOption = Annotated[str, typer.Option("--format", "-f", help="Image format: png or svg.")]
+
+
+def _check_format(fmt: str) -> str:
+    from .plots import FORMATS
+
+    if fmt.lower() not in FORMATS:
+        raise _bad_input(f"--format: must be one of {', '.join(FORMATS)}, got {fmt!r}", [])
+    return fmt.lower()
+
+
+@app.command()
+def plot(results: Annotated[Path, typer.Argument(help="Results file written by `jointplay run`.", show_default=False)],
+         channel: ChannelOption = [],  # noqa: B006
+         output: Annotated[Path | None, typer.Option("-o", "--output", help="Folder for the figures "
+                                                     "[default: RESULTS name + _figures].")] = None,
+         fmt: FormatOption = "png",
+         crank: Annotated[str | None, typer.Option("--crank", help="Body whose angle is the abscissa of the "
+                                                   "contact-force figure [default: the driven body].")] = None) -> None:
+    """Draw the standard figures of a results file.
+
+    Time histories of the chosen channels, the journal-centre orbit of each
+    clearance joint inside its clearance circle, and the contact force against
+    the crank angle.
+    """
+    from .plots import standard_figures
+
+    fmt = _check_format(fmt)
+    r = _open(results)
+    output = output or results.with_name(f"{results.stem}_figures")
+    if crank is not None and f"{crank}.angle" not in r:
+        raise _bad_input(f"--crank: no body {crank!r} in {results}", [])
+    try:
+        paths = standard_figures(r, output, crank=crank, fmt=fmt, channels=channel or None)
+    except KeyError as exc:
+        raise _bad_input(f"--channel: {exc.args[0]}", []) from None
+    for path in paths:
+        out.print(f"wrote {path}")
+    if not paths:
+        out.print("[yellow]nothing to draw:[/] the results file holds no samples")
+
+
+@app.command()
+def compare(results: Annotated[list[Path], typer.Argument(help="Results files to overlay.", show_default=False)],
+            channel: ChannelOption = [],  # noqa: B006
+            output: Annotated[Path, typer.Option("-o", "--output", help="Folder for the figures.")] = Path("comparison"),
+            fmt: FormatOption = "png",
+            label: Annotated[list[str], typer.Option("--label", "-l", help="Legend label of each file, in order "
+                                                     "[default: the file names].")] = [],  # noqa: B006
+            crank: Annotated[str | None, typer.Option("--crank", help="Plot against this body's angle [deg] "
+                                                      "instead of time.")] = None) -> None:
+    """Overlay the same channels from several results files.
+
+    For example the ideal, dry-clearance and lubricated variants of one
+    mechanism. Writes one figure per channel and prints the peak of each
+    channel in each run.
+    """
+    from .compare import compare_figures, default_compare_channels, peak_table
+
+    fmt = _check_format(fmt)
+    runs = [_open(p) for p in results]
+    if label and len(label) != len(results):
+        raise _bad_input(f"--label: give one label per results file ({len(results)}), got {len(label)}", [])
+    labels = label or [p.stem for p in results]
+    names = channel or default_compare_channels(runs)
+    try:
+        paths = compare_figures(runs, labels, output, channels=names, fmt=fmt, crank=crank)
+    except KeyError as exc:
+        raise _bad_input(f"--channel: {exc.args[0]}", []) from None
+    table = Table("channel", "unit", *labels, title="peak |value|")
+    for row in peak_table(runs, names):
+        table.add_row(*row)
+    out.print(table)
+    for path in paths:
+        out.print(f"wrote {path}")
+
+
+def main() -> None:
+    """Entry point of the ``jointplay`` script."""
+    app()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,71 @@
+"""Comparing runs: the same channels of several results overlaid, and a table of their peaks.
+
+The usual comparison is ideal joint vs dry clearance vs lubricated joint of
+one mechanism; channels that a run does not have (an ideal joint records no
+``B.fn``) are left out of that run's curve.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from .plots import FORMATS, _figure, _save, clearance_joints, crank_angle_deg, default_channels
+from .results import Results
+
+
+def default_compare_channels(runs: Sequence[Results]) -> list[str]:
+    """Channels worth overlaying: the first run's key channels and the joint forces
+    (``<joint>.f``) of its clearance joints, kept when at least two runs have them."""
+    first = runs[0]
+    candidates = default_channels(first)
+    for run in runs:
+        candidates += [f"{j}.f" for j in clearance_joints(run)]
+    need = min(2, len(runs))
+    return list(dict.fromkeys(c for c in candidates if sum(c in r for r in runs) >= need))
+
+
+def overlay(runs: Sequence[Results], labels: Sequence[str], channel: str, path: Path,
+            crank: str | None = None) -> Path:
+    """One channel of every run that has it, against time [ms] or the crank angle [deg]."""
+    fig = _figure(7.5, 3.6)
+    ax = fig.subplots()
+    unit = ""
+    for run, label in zip(runs, labels):
+        if channel not in run:
+            continue
+        unit = run.unit(channel)
+        x = crank_angle_deg(run, crank) if crank and f"{crank}.angle" in run else run.time * 1e3
+        ax.plot(x, run[channel], lw=0.8, label=label)
+    ax.set_xlabel(f"crank angle ({crank}.angle) [deg]" if crank else "time [ms]")
+    ax.set_ylabel(f"{channel} [{unit}]")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    ax.set_title(channel, fontsize=10)
+    return _save(fig, path)
+
+
+def compare_figures(runs: Sequence[Results], labels: Sequence[str], out_dir, channels: Sequence[str] | None = None,
+                    fmt: str = "png", crank: str | None = None) -> list[Path]:
+    """Writes one overlay figure per channel into ``out_dir``; returns the paths."""
+    if fmt not in FORMATS:
+        raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
+    names = list(channels) if channels else default_compare_channels(runs)
+    for name in names:
+        if not any(name in run for run in runs):
+            runs[0][name]  # KeyError with a did-you-mean hint
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    return [overlay(runs, labels, name, out / f"compare_{name.replace('.', '_')}.{fmt}", crank) for name in names]
+
+
+def peak_table(runs: Sequence[Results], channels: Sequence[str]) -> list[list[str]]:
+    """Rows ``[channel, unit, peak |value| of each run]`` (``-`` where a run lacks the channel)."""
+    rows = []
+    for name in channels:
+        unit = next((r.unit(name) for r in runs if name in r), "")
+        cells = [f"{np.max(np.abs(r[name])):.4g}" if name in r and len(r) else "-" for r in runs]
+        rows.append([name, unit, *cells])
+    return rows

@@ -1,0 +1,130 @@
+"""Model files: a mechanism described in TOML with units.
+
+``load(path)`` reads a file (``tomllib`` only: nothing in it is executed),
+applies ``--set`` style overrides, validates every table (units, ranges,
+unknown keys, references, geometry), compiles the mechanism in the core and
+assembles its initial configuration. Every problem found comes back in one
+:class:`~jointplay.errors.ModelError`, located in the file's own terms
+(``joints.B.clearance``). ``to_toml(model)`` writes a model back; loading
+that text gives the same model. The keys are documented in
+``docs/model-files.md``.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from ..errors import ModelError, Problem, SimulationError
+from .build import Builder
+from .overrides import apply_overrides, parse_assignment
+from .writer import to_toml as _spec_to_toml
+
+__all__ = ["apply_overrides", "load", "loads", "parse_assignment", "read_document", "to_toml"]
+
+
+def read_document(path: str | Path) -> dict:
+    """The parsed TOML of a model file; a missing or unreadable file is a ModelError."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise ModelError([Problem(str(path), "no such file")]) from None
+    except (IsADirectoryError, PermissionError, UnicodeDecodeError) as exc:
+        raise ModelError([Problem(str(path), f"cannot be read: {exc.strerror or exc}")]) from None
+    return parse_text(text, str(path))
+
+
+def parse_text(text: str, where: str = "model file") -> dict:
+    """TOML text to a dict; a syntax error is a ModelError naming the line."""
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        return _raise(where, f"is not valid TOML: {exc}")
+
+
+def _raise(location: str, message: str):
+    raise ModelError([Problem(location, message)])
+
+
+def load(path: str | Path, overrides: list[str] | dict[str, Any] | None = None, *, check: bool = True):
+    """A :class:`~jointplay.Model` from a model file, with ``overrides`` (``["joints.B.clearance=0.1 mm"]``
+    or ``{"joints.B.clearance": "0.1 mm"}``) applied first. With ``check`` the initial configuration is
+    assembled too, so an impossible geometry is reported here. Raises ModelError."""
+    doc = read_document(path)
+    return from_document(doc, overrides, name=Path(path).stem, check=check)
+
+
+def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, name: str = "mechanism",
+          check: bool = True):
+    """Like :func:`load`, from TOML text."""
+    return from_document(parse_text(text), overrides, name=name, check=check)
+
+
+def from_document(doc: dict, overrides=None, *, name: str = "mechanism", check: bool = True):
+    """A Model from an already parsed document."""
+    from ..model import Model
+
+    if overrides:
+        doc = apply_overrides(doc, overrides)
+    builder = Builder(doc, default_name=name).run()
+    spec, simulation = builder.result()
+    model = Model.from_spec(spec)
+    model.simulation = simulation
+    try:
+        model.compile()
+    except ModelError as exc:
+        raise ModelError([Problem(core_location(p.location, spec), p.message) for p in exc.problems]) from None
+    if check:
+        try:
+            model.check()
+        except SimulationError as exc:
+            raise ModelError([Problem(element_location(exc.element, spec), exc.cause)]) from None
+    return model
+
+
+def to_toml(model, header: str | None = None) -> str:
+    """Model-file text for a Model (with its ``simulation`` defaults) or a plain spec dict."""
+    if isinstance(model, dict):
+        return _spec_to_toml(model, None, header)
+    return _spec_to_toml(model.to_spec(), getattr(model, "simulation", None), header)
+
+
+_INDEXED = re.compile(r"^(ground_points|bodies|joints|drivers|forces)\[(\d+)\](?:\.points\[(\d+)\])?")
+
+
+def core_location(location: str, spec: dict) -> str:
+    """``joints[2].clearance`` (the core's index) to ``joints.B.clearance`` (the file's names)."""
+    from .fields import join
+
+    match = _INDEXED.match(location)
+    if not match:
+        return location
+    section, index, point = match.group(1), int(match.group(2)), match.group(3)
+    try:
+        entry = spec[section][index]
+        if section == "ground_points":
+            head = join("ground", "points", entry["name"])
+        else:
+            head = join(section, entry["name"])
+            if point is not None:
+                head = join(head, "points", entry["points"][int(point)]["name"])
+    except (KeyError, IndexError):
+        return location
+    rest = location[match.end():]
+    return head + rest
+
+
+def element_location(element: str | None, spec: dict) -> str:
+    """The table of a named element (``B (assembly lock)`` -> ``joints.B``); ``model`` when unknown."""
+    from .fields import join
+
+    if not element:
+        return "model"
+    name = element.removesuffix(" (assembly lock)")
+    for section in ("joints", "drivers", "forces", "bodies"):
+        if any(e["name"] == name for e in spec.get(section, [])):
+            return join(section, name)
+    return "model"

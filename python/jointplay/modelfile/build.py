@@ -1,0 +1,363 @@
+"""From the parsed TOML document to the core's plain-data spec, every problem reported.
+
+Stages: the shape of each table (pydantic, units, ranges), then references
+between tables (points, bodies, joints), then geometry (clearance against
+the bearing radius, initial eccentricity), then connectivity (a body that
+nothing refers to). The core compiles and assembles afterwards
+(:func:`jointplay.modelfile.load`).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from pydantic import ValidationError
+
+from ..errors import ModelError, Problem
+from . import schema as s
+from .fields import Q, Strict, did_you_mean, join, problems_from
+from .functions import function_spec
+
+DRIVEN_KIND = {"revolute": "angle", "translational": "length"}
+
+
+class Builder:
+    """Validates one document; ``spec`` and ``simulation`` hold the result, ``problems`` what is wrong."""
+
+    def __init__(self, doc: dict, default_name: str = "mechanism"):
+        self.doc = doc
+        self.default_name = default_name
+        self.problems: list[Problem] = []
+        self.spec: dict[str, Any] = {"name": default_name, "gravity": [0.0, 0.0], "ground_points": [],
+                                     "bodies": [], "joints": [], "drivers": [], "forces": []}
+        self.simulation: dict[str, Any] = {}
+        self.points: dict[str, list[str]] = {"ground": []}
+        self.joint_types: dict[str, str] = {}
+        self.names: dict[str, str] = {}
+        self.referenced: set[str] = set()
+
+    def run(self) -> Builder:
+        for key in self.doc:
+            if key not in s.TOP_LEVEL:
+                self.problem(join(key), f"unknown section{did_you_mean(key, s.TOP_LEVEL)}; "
+                                        f"sections: {', '.join(s.TOP_LEVEL)}")
+        self.model_table()
+        self.ground()
+        self.bodies()
+        self.joints()
+        self.drivers()
+        self.forces()
+        self.simulation_table()
+        self.connectivity()
+        return self
+
+    def result(self) -> tuple[dict, dict]:
+        if self.problems:
+            raise ModelError(self.problems)
+        return self.spec, self.simulation
+
+    # helpers ---------------------------------------------------------------
+
+    def problem(self, location: str, message: str) -> None:
+        self.problems.append(Problem(location, message))
+
+    def table(self, key: str) -> dict:
+        value = self.doc.get(key, {})
+        if not isinstance(value, dict):
+            self.problem(key, f"must be a table ([{key}]), got {value!r}")
+            return {}
+        return value
+
+    def entries(self, section: str):
+        """(name, location, table) for each entry of a section of named tables."""
+        for name, raw in self.table(section).items():
+            where = join(section, name)
+            if not isinstance(raw, dict):
+                self.problem(where, f"must be a table ([{section}.{name}]), got {raw!r}")
+                continue
+            yield name, where, raw
+
+    def validate(self, cls: type[Strict], raw: dict, where: str, hint: str = "") -> Strict | None:
+        try:
+            return cls.model_validate(raw)
+        except ValidationError as exc:
+            self.problems.extend(problems_from(exc, where, cls, kind_hint=hint))
+            return None
+
+    def claim(self, name: str, where: str) -> None:
+        """Bodies, joints, drivers and forces share one namespace (channels are ``<name>.<quantity>``)."""
+        if not name or "." in name or name == "ground" or name != name.strip():
+            self.problem(where, f"must be a name without '.' or spaces, other than 'ground', got {name!r}")
+        elif name in self.names:
+            self.problem(where, f"name {name!r} is already used by {self.names[name]}")
+        else:
+            self.names[name] = where
+
+    def tagged(self, raw: dict, tag: str, options: dict, where: str) -> str | None:
+        value = raw.get(tag)
+        if value is None:
+            self.problem(join(where, tag), f"missing required value (one of {', '.join(options)})")
+            return None
+        if not isinstance(value, str) or value not in options:
+            self.problem(join(where, tag), f"must be one of {', '.join(options)}, got {value!r}"
+                                           f"{did_you_mean(value, options)}")
+            return None
+        return value
+
+    def point(self, ref: str, where: str) -> None:
+        body, dot, name = ref.partition(".")
+        if not dot or not body or not name or "." in name:
+            self.problem(where, f'must be a point "body.point" (e.g. "crank.A", "ground.O"), got {ref!r}')
+        elif body not in self.points:
+            self.problem(where, f"no body named {body!r}{did_you_mean(body, self.points)}, got {ref!r}")
+        elif name not in self.points[body]:
+            known = ", ".join(self.points[body]) or "none"
+            self.problem(where, f"body {body!r} has no point {name!r}{did_you_mean(name, self.points[body])} "
+                                f"(its points: {known}), got {ref!r}")
+        else:
+            self.referenced.add(body)
+
+    def body(self, ref: str, where: str) -> None:
+        if ref not in self.points:
+            self.problem(where, f"no body named {ref!r}{did_you_mean(ref, self.points)}")
+        else:
+            self.referenced.add(ref)
+
+    # sections --------------------------------------------------------------
+
+    def model_table(self) -> None:
+        table = self.validate(s.ModelTable, self.table("model"), "model")
+        if table is not None:
+            self.spec["name"] = table.name if table.name is not None else self.default_name
+            self.spec["gravity"] = [float(g) for g in table.gravity]
+
+    def point_table(self, raw: Any, where: str) -> list[dict]:
+        if not isinstance(raw, dict):
+            self.problem(where, f"must be a table of points, e.g. {{ O = [\"0 mm\", \"0 mm\"] }}, got {raw!r}")
+            return []
+        out = []
+        for name, value in raw.items():
+            location = join(where, name)
+            if not name or "." in name or name != name.strip():
+                self.problem(location, f"must be a point name without '.' or spaces, got {name!r}")
+                continue
+            try:
+                x, y = _pair(value, location)
+            except _Bad as bad:
+                self.problem(location, str(bad))
+                continue
+            out.append({"name": name, "position": [x, y]})
+        return out
+
+    def ground(self) -> None:
+        raw = self.table("ground")
+        for key in raw:
+            if key != "points":
+                self.problem(join("ground", key), f"unknown key{did_you_mean(key, ['points'])}; allowed: points")
+        points = self.point_table(raw.get("points", {}), "ground.points")
+        self.spec["ground_points"] = points
+        self.points["ground"] = [p["name"] for p in points]
+
+    def bodies(self) -> None:
+        self.free: set[str] = set()
+        for name, where, raw in self.entries("bodies"):
+            self.claim(name, where)
+            table = self.validate(s.BodyTable, raw, where)
+            points = self.point_table(raw.get("points", {}), join(where, "points"))
+            self.points.setdefault(name, [p["name"] for p in points])
+            if table is None:
+                continue
+            if table.free:
+                self.free.add(name)
+            self.spec["bodies"].append({
+                "name": name, "mass": float(table.mass), "inertia": float(table.inertia),
+                "position": [float(v) for v in table.position], "angle": float(table.angle),
+                "velocity": [float(v) for v in table.velocity], "angular_velocity": float(table.angular_velocity),
+                "points": points,
+            })
+
+    def joints(self) -> None:
+        for name, where, raw in self.entries("joints"):
+            self.claim(name, where)
+            kind = self.tagged(raw, "type", s.JOINTS, where)
+            if kind is None:
+                continue
+            self.joint_types[name] = kind
+            table = self.validate(s.JOINTS[kind], raw, where, hint=f"{kind} joint: ")
+            if table is None:
+                continue
+            if kind == "clearance_revolute":
+                joint = self.clearance_joint(name, where, table, raw)
+            else:
+                joint = {"type": kind, "name": name, "first": table.first, "second": table.second}
+                if kind == "translational":
+                    joint["axis"] = [float(a) for a in table.axis]
+                    if math.hypot(*joint["axis"]) == 0.0:
+                        self.problem(join(where, "axis"), f"must be a non-zero direction, got {raw.get('axis')!r}")
+                for end in ("first", "second"):
+                    self.point(joint[end], join(where, end))
+            if joint is not None:
+                self.spec["joints"].append(joint)
+
+    def clearance_joint(self, name: str, where: str, t: s.ClearanceRevoluteTable, raw: dict) -> dict | None:
+        self.point(t.bearing, join(where, "bearing"))
+        self.point(t.journal, join(where, "journal"))
+        clearance = self.radial_clearance(where, t)
+        contact = self.law(raw, "contact", s.CONTACT_LAWS, where, required=True)
+        stiffness = self.law(raw, "stiffness", s.STIFFNESS_LAWS, where, default={"law": "hertz_cylinder"})
+        friction = self.law(raw, "friction", s.FRICTION_LAWS, where, default={"law": "none"})
+        if stiffness is not None and stiffness["law"] in ("johnson_line", "rogers_andrews") and t.length is None:
+            self.problem(join(where, "length"), f"missing required value: the {stiffness['law']} stiffness law "
+                                                "needs the bearing length, e.g. \"40 mm\"")
+        if stiffness is not None and stiffness["law"].startswith("hertz_cylinder"):
+            exponent = stiffness.pop("exponent", None)
+            stiffness = ({"law": "hertz_cylinder_exponent", "exponent": exponent} if exponent is not None
+                         else {"law": "hertz_cylinder"})
+        if clearance is not None:
+            ex, ey = t.initial_eccentricity
+            if math.hypot(ex, ey) > clearance:
+                self.problem(join(where, "initial_eccentricity"),
+                             f"must lie within the clearance ({_text(clearance)}), got [{ex.text}, {ey.text}]")
+        if None in (clearance, contact, stiffness, friction):
+            return None
+        material = lambda m: {"youngs_modulus": float(m.youngs_modulus), "poisson_ratio": float(m.poisson_ratio)}
+        return {
+            "type": "clearance_revolute", "name": name, "bearing": t.bearing, "journal": t.journal,
+            "bearing_radius": float(t.bearing_radius), "clearance": float(clearance),
+            "length": None if t.length is None else float(t.length),
+            "bearing_material": material(t.bearing_material), "journal_material": material(t.journal_material),
+            "contact": contact, "stiffness": stiffness, "friction": friction,
+            "initial_eccentricity": [float(e) for e in t.initial_eccentricity],
+            "onset_velocity_floor": float(t.onset_velocity_floor),
+            "max_penetration": None if t.max_penetration is None else float(t.max_penetration),
+        }
+
+    def radial_clearance(self, where: str, t: s.ClearanceRevoluteTable) -> float | None:
+        """c = R_b - R_j from ``clearance`` or ``journal_radius`` (exactly one of them)."""
+        rb = t.bearing_radius
+        if (t.clearance is None) == (t.journal_radius is None):
+            what = "both" if t.clearance is not None else "neither"
+            self.problem(join(where, "clearance"), f"give exactly one of clearance or journal_radius, got {what}")
+            return None
+        if t.journal_radius is not None:
+            if t.journal_radius >= rb:
+                self.problem(join(where, "journal_radius"), f"must be smaller than bearing_radius = {rb.text} "
+                                                            f"(the journal would not fit), got {t.journal_radius.text}")
+                return None
+            return Q(float(rb) - float(t.journal_radius), f"{_text(float(rb) - float(t.journal_radius))}")
+        if t.clearance >= rb:
+            self.problem(join(where, "clearance"), f"must be smaller than bearing_radius = {rb.text} "
+                                                   f"(the journal radius would be <= 0), got {t.clearance.text}")
+            return None
+        return t.clearance
+
+    def law(self, raw: dict, key: str, laws: dict, where: str, required: bool = False,
+            default: dict | None = None) -> dict | None:
+        value = raw.get(key)
+        location = join(where, key)
+        if value is None:
+            return None if required else dict(default)  # a missing contact is reported by pydantic
+        if isinstance(value, str):  # law = "hertz" shorthand: contact = "hertz"
+            value = {"law": value}
+        if not isinstance(value, dict):
+            self.problem(location, f"must be a table such as {{ law = \"{next(iter(laws))}\" }}, got {value!r}")
+            return None
+        law = self.tagged(value, "law", laws, location)
+        if law is None:
+            return None
+        table = self.validate(laws[law], value, location, hint=f"{law}: ")
+        if table is None:
+            return None
+        return {k: (float(v) if isinstance(v, float) else v) for k, v in table.model_dump(exclude_none=True).items()}
+
+    def drivers(self) -> None:
+        for name, where, raw in self.entries("drivers"):
+            self.claim(name, where)
+            table = self.validate(s.DriverTable, raw, where)
+            if table is None:
+                continue
+            kind = self.joint_types.get(table.joint)
+            if kind not in DRIVEN_KIND:
+                if kind is None:
+                    hint = did_you_mean(table.joint, self.joint_types)
+                    self.problem(join(where, "joint"), f"no joint named {table.joint!r}{hint}")
+                else:
+                    self.problem(join(where, "joint"), f"joint {table.joint!r} is a {kind} joint; only revolute and "
+                                                       "translational joints can be driven")
+                function_spec(table.function, "angle", join(where, "function"), self.problems)
+                continue
+            function = function_spec(table.function, DRIVEN_KIND[kind], join(where, "function"), self.problems)
+            if function is not None:
+                self.spec["drivers"].append({"name": name, "joint": table.joint, "function": function})
+
+    def forces(self) -> None:
+        for name, where, raw in self.entries("forces"):
+            self.claim(name, where)
+            kind = self.tagged(raw, "type", s.FORCES, where)
+            if kind is None:
+                continue
+            t = self.validate(s.FORCES[kind], raw, where, hint=f"{kind}: ")
+            if t is None:
+                continue
+            force = self.force(kind, name, where, t)
+            if force is not None:
+                self.spec["forces"].append(force)
+
+    def force(self, kind: str, name: str, where: str, t) -> dict | None:
+        if kind == "spring_damper":
+            self.point(t.first, join(where, "first"))
+            self.point(t.second, join(where, "second"))
+            return {"type": kind, "name": name, "first": t.first, "second": t.second, "stiffness": float(t.stiffness),
+                    "damping": float(t.damping), "free_length": float(t.free_length)}
+        if kind == "rotational_spring_damper":
+            self.body(t.first, join(where, "first"))
+            self.body(t.second, join(where, "second"))
+            return {"type": kind, "name": name, "first": t.first, "second": t.second, "stiffness": float(t.stiffness),
+                    "damping": float(t.damping), "free_angle": float(t.free_angle)}
+        if kind == "point_force":
+            self.point(t.point, join(where, "point"))
+            fx = function_spec(t.fx, "force", join(where, "fx"), self.problems)
+            fy = function_spec(t.fy, "force", join(where, "fy"), self.problems)
+            return None if fx is None or fy is None else {"type": kind, "name": name, "point": t.point, "fx": fx, "fy": fy}
+        self.body(t.body, join(where, "body"))
+        torque = function_spec(t.torque, "torque", join(where, "torque"), self.problems)
+        return None if torque is None else {"type": kind, "name": name, "body": t.body, "torque": torque}
+
+    def simulation_table(self) -> None:
+        table = self.validate(s.SimulationTable, self.table("simulation"), "simulation")
+        if table is None:
+            return
+        self.simulation = {k: (float(v) if isinstance(v, float) else v)
+                           for k, v in table.model_dump(exclude_none=True).items()}
+
+    def connectivity(self) -> None:
+        """A body that no joint or force element refers to is a mistake unless marked ``free = true``."""
+        if any(p.location.startswith(("joints", "forces")) for p in self.problems):
+            return  # references are incomplete; do not pile on
+        for body in self.spec["bodies"]:
+            name = body["name"]
+            if name not in self.referenced and name not in self.free:
+                self.problem(join("bodies", name), "is connected to nothing: no joint or force element refers to it "
+                                                   "(write free = true if it is meant to move freely)")
+
+
+class _Bad(ValueError):
+    pass
+
+
+def _pair(value: Any, where: str) -> tuple[float, float]:
+    from pydantic_core import PydanticCustomError
+
+    from .fields import _vector
+
+    try:
+        x, y = _vector(value, "length")
+    except PydanticCustomError as exc:
+        raise _Bad(exc.message()) from None
+    return float(x), float(y)
+
+
+def _text(value: float) -> str:
+    return f"{value * 1e3:.6g} mm"
+

@@ -1,0 +1,169 @@
+"""The standard figures of a run, written to PNG or SVG files.
+
+- time histories of chosen channels (one panel each, shared time axis in ms);
+- the journal-centre orbit of each clearance joint inside its clearance circle
+  (eccentricity in mm, circle of radius c);
+- the contact force of each clearance joint against the crank angle
+  (degrees, unwrapped from the start so that two revolutions read 0-720).
+
+Figures are built with matplotlib's object API on the Agg canvas: no display
+is needed and no global pyplot state is touched.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
+
+from .results import Results
+
+FORMATS = ("png", "svg")
+MAX_DEFAULT_CHANNELS = 8
+
+
+def _figure(width: float = 7.0, height: float = 4.0) -> Figure:
+    fig = Figure(figsize=(width, height), layout="constrained")
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def _save(fig: Figure, path: Path) -> Path:
+    fig.savefig(path, dpi=130)
+    return path
+
+
+def clearance_joints(results: Results) -> list[str]:
+    """Names of the clearance joints recorded in ``results``."""
+    return [n.rsplit(".", 1)[0] for n in results.channels if n.endswith(".contact")]
+
+
+def guess_crank(results: Results) -> str | None:
+    """The body turned by the first driver of a revolute joint to the ground, if any."""
+    spec = results.spec or {}
+    joints = {j["name"]: j for j in spec.get("joints", [])}
+    for driver in spec.get("drivers", []):
+        joint = joints.get(driver["joint"])
+        if joint and joint["type"] == "revolute":
+            first, second = joint["first"].split(".")[0], joint["second"].split(".")[0]
+            body = second if first == "ground" else first if second == "ground" else second
+            if f"{body}.angle" in results:
+                return body
+    return None
+
+
+def default_channels(results: Results) -> list[str]:
+    """Key channels: slider accelerations, clearance-joint contact forces and eccentricity ratios,
+    ideal joint reactions, driver efforts (at most eight)."""
+    spec = results.spec or {}
+    chosen: list[str] = []
+    for joint in spec.get("joints", []):
+        if joint["type"] == "translational":
+            chosen.append(f"{joint['second'].split('.')[0]}.ax")
+    for joint in clearance_joints(results):
+        chosen += [f"{joint}.fn", f"{joint}.eccentricity_ratio"]
+    chosen += [f"{j['name']}.f" for j in spec.get("joints", []) if j["type"] != "clearance_revolute"]
+    for driver in spec.get("drivers", []):
+        chosen += [f"{driver['name']}.torque", f"{driver['name']}.force"]
+    if not chosen:
+        chosen = [f"{b['name']}.ax" for b in spec.get("bodies", [])]
+    out = list(dict.fromkeys(c for c in chosen if c in results))
+    return out[:MAX_DEFAULT_CHANNELS]
+
+
+def crank_angle_deg(results: Results, crank: str) -> np.ndarray:
+    """Crank angle [deg], unwrapped, as recorded (``<crank>.angle``)."""
+    return np.degrees(np.unwrap(results[f"{crank}.angle"]))
+
+
+def time_histories(results: Results, channels: Sequence[str], path: Path, label: str | None = None) -> Path:
+    """One panel per channel against time [ms]."""
+    fig = _figure(7.5, 1.9 * len(channels) + 0.8)
+    axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
+    t_ms = results.time * 1e3
+    for ax, name in zip(axes, channels):
+        ax.plot(t_ms, results[name], lw=0.9)
+        ax.set_ylabel(f"{name}\n[{results.unit(name)}]", fontsize=8)
+        ax.grid(alpha=0.3)
+    axes[-1].set_xlabel("time [ms]")
+    fig.suptitle(label or _title(results), fontsize=10)
+    return _save(fig, path)
+
+
+def orbit(results: Results, joint: str, path: Path) -> Path:
+    """Journal-centre path (eccentricity, mm) inside the clearance circle of radius c."""
+    clearance = _clearance(results, joint)
+    fig = _figure(5.2, 5.0)
+    ax = fig.subplots()
+    ex, ey = results[f"{joint}.ex"] * 1e3, results[f"{joint}.ey"] * 1e3
+    ax.plot(ex, ey, lw=0.7, color="tab:blue", label="journal centre")
+    contact = results[f"{joint}.contact"] > 0.5
+    ax.plot(ex[contact], ey[contact], ".", ms=2, color="tab:red", label="in contact")
+    if ex.size:
+        ax.plot(ex[:1], ey[:1], "o", color="black", ms=4, label="start")
+    if clearance is not None:
+        theta = np.linspace(0, 2 * np.pi, 361)
+        c = clearance * 1e3
+        ax.plot(c * np.cos(theta), c * np.sin(theta), "k--", lw=0.8, label=f"clearance c = {c:g} mm")
+        ax.set_xlim(-1.25 * c, 1.25 * c)
+        ax.set_ylim(-1.25 * c, 1.25 * c)
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"{joint}.ex [mm]")
+    ax.set_ylabel(f"{joint}.ey [mm]")
+    ax.legend(fontsize=7, loc="upper right")
+    ax.grid(alpha=0.3)
+    ax.set_title(f"{_title(results)}: journal-centre orbit in {joint}", fontsize=9)
+    return _save(fig, path)
+
+
+def force_vs_crank(results: Results, joint: str, crank: str, path: Path) -> Path:
+    """Contact force of a clearance joint against the crank angle [deg]."""
+    fig = _figure(7.0, 3.6)
+    ax = fig.subplots()
+    ax.plot(crank_angle_deg(results, crank), results[f"{joint}.fn"], lw=0.8)
+    ax.set_xlabel(f"crank angle ({crank}.angle) [deg]")
+    ax.set_ylabel(f"{joint}.fn [{results.unit(f'{joint}.fn')}]")
+    ax.grid(alpha=0.3)
+    ax.set_title(f"{_title(results)}: contact force in {joint}", fontsize=9)
+    return _save(fig, path)
+
+
+def standard_figures(results: Results, out_dir, crank: str | None = None, fmt: str = "png",
+                     channels: Sequence[str] | None = None) -> list[Path]:
+    """Writes the standard figures into ``out_dir`` (created if needed); returns their paths.
+
+    ``channels``: time histories to draw (default :func:`default_channels`); ``crank``: the body whose
+    angle is the abscissa of the contact-force figure (default :func:`guess_crank`); ``fmt``: png or svg.
+    """
+    if fmt not in FORMATS:
+        raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    if results.time.size == 0:
+        return []
+    names = list(channels) if channels else default_channels(results)
+    for name in names:
+        results[name]  # KeyError with a did-you-mean hint for an unknown channel
+    paths = []
+    if names:
+        paths.append(time_histories(results, names, out / f"time_histories.{fmt}"))
+    crank = crank or guess_crank(results)
+    for joint in clearance_joints(results):
+        paths.append(orbit(results, joint, out / f"orbit_{joint}.{fmt}"))
+        if crank is not None:
+            paths.append(force_vs_crank(results, joint, crank, out / f"contact_force_{joint}.{fmt}"))
+    return paths
+
+
+def _clearance(results: Results, joint: str) -> float | None:
+    for j in (results.spec or {}).get("joints", []):
+        if j["name"] == joint and j["type"] == "clearance_revolute":
+            return float(j["clearance"])
+    return None
+
+
+def _title(results: Results) -> str:
+    return (results.spec or {}).get("name", "") or "jointplay"

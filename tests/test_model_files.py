@@ -1,0 +1,306 @@
+"""Model files: validation messages, overrides, round trips builder -> TOML -> load, robustness."""
+
+from __future__ import annotations
+
+import copy
+import importlib.util
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import jointplay as jp
+from jointplay import functions as fn
+from jointplay import laws
+from jointplay.modelfile import from_document
+
+ROOT = Path(__file__).resolve().parents[1]
+DRY = ROOT / "examples" / "flores_slider_crank_dry.toml"
+
+
+def problems(overrides: list[str], path: Path = DRY) -> list[str]:
+    with pytest.raises(jp.ModelError) as info:
+        jp.load(path, overrides)
+    return [str(p) for p in info.value.problems]
+
+
+# one test per class of bad input, message pinned --------------------------------
+
+@pytest.mark.parametrize("override, message", [
+    ("joints.B.clearance=-0.1 mm", "joints.B.clearance: must be > 0, got -0.1 mm"),
+    ("bodies.crank.mass=0", "bodies.crank.mass: must be > 0, got 0 kg"),
+    ("joints.B.contact.restitution=1.5", "joints.B.contact.restitution: must lie in (0, 1], got 1.5"),
+    ("joints.B.bearing_material.poisson_ratio=0.7",
+     "joints.B.bearing_material.poisson_ratio: must lie in (-1, 0.5), got 0.7"),
+])
+def test_out_of_range_values_name_location_and_value(override, message):
+    assert problems([override]) == [message]
+
+
+@pytest.mark.parametrize("override, message", [
+    ("joints.B.clearence=0.1 mm", 'joints.B.clearence: unknown key (did you mean "clearance"?)'),
+    ("bodies.crank.mas=1 kg", 'bodies.crank.mas: unknown key (did you mean "mass"?)'),
+    ("simulaton.t_end=1", 'simulaton: unknown section (did you mean "simulation"?); '
+                          "sections: model, ground, bodies, joints, drivers, forces, simulation"),
+    ("joints.A.type=revolut", "joints.A.type: must be one of revolute, translational, fixed, clearance_revolute, "
+                              "got 'revolut' (did you mean \"revolute\"?)"),
+    ("joints.B.contact.law=lankarani", "joints.B.contact.law: must be one of hertz, hunt_crossley, "
+                                       "lankarani_nikravesh, flores, gonthier, hu_guo, got 'lankarani' "
+                                       "(did you mean \"lankarani_nikravesh\"?)"),
+])
+def test_unknown_keys_and_words_get_a_did_you_mean_hint(override, message):
+    assert problems([override]) == [message]
+
+
+def test_missing_required_values_say_what_is_expected():
+    assert problems(['bodies.extra={ inertia = "1 kg m^2", free = true }']) == [
+        'bodies.extra.mass: missing required value (a mass, e.g. "0.3 kg")']
+    text = DRY.read_text().replace('contact = { law = "lankarani_nikravesh", restitution = 0.9 }\n', "")
+    with pytest.raises(jp.ModelError) as info:
+        jp.loads(text)
+    assert [str(p) for p in info.value.problems] == [
+        "joints.B.contact: missing required value "
+        "(a table such as { law = \"lankarani_nikravesh\", restitution = 0.9 })"]
+
+
+@pytest.mark.parametrize("override, message", [
+    ("joints.A.second=rod.C", "joints.A.second: body 'rod' has no point 'C' (its points: A, B), got 'rod.C'"),
+    ("joints.A.second=rdo.A", "joints.A.second: no body named 'rdo' (did you mean \"rod\"?), got 'rdo.A'"),
+    ("joints.A.second=rod", "joints.A.second: must be a point \"body.point\" (e.g. \"crank.A\", \"ground.O\"), "
+                            "got 'rod'"),
+    ("drivers.motor.joint=guid", "drivers.motor.joint: no joint named 'guid' (did you mean \"guide\"?)"),
+    ('forces.B={ type = "torque", body = "crank", torque = "1 N m" }',
+     "forces.B: name 'B' is already used by joints.B"),
+])
+def test_references_to_missing_things_are_errors(override, message):
+    assert problems([override]) == [message]
+
+
+@pytest.mark.parametrize("override, message", [
+    ("bodies.crank.mass=5 mm", "bodies.crank.mass: must be a mass (e.g. \"0.3 kg\"), got '5 mm', which is a length"),
+    ("joints.B.bearing_radius=5 kg",
+     "joints.B.bearing_radius: must be a length (e.g. \"0.5 mm\"), got '5 kg', which is a mass"),
+    ("drivers.motor.function.rate=3 m/s", "drivers.motor.function.rate: must be an angular velocity "
+                                          "(e.g. \"5000 rpm\"), got '3 m/s', which is a velocity"),
+    ("model.gravity.1=5 kg", "model.gravity: y component must be an acceleration (e.g. \"9.81 m/s^2\"), "
+                             "got '5 kg', which is a mass"),
+])
+def test_wrong_dimensions_are_errors(override, message):
+    assert problems([override]) == [message]
+
+
+@pytest.mark.parametrize("override, message", [
+    ("joints.B.clearance=12 mm", "joints.B.clearance: must be smaller than bearing_radius = 10 mm "
+                                 "(the journal radius would be <= 0), got 12 mm"),
+    ("joints.B.initial_eccentricity=[\"1 mm\", 0]",
+     "joints.B.initial_eccentricity: must lie within the clearance (0.5 mm), got [1 mm, 0 m]"),
+])
+def test_impossible_geometry_is_an_error(override, message):
+    assert problems([override]) == [message]
+
+
+def test_journal_larger_than_bearing_is_an_error():
+    text = DRY.read_text().replace('clearance = "0.5 mm"', 'journal_radius = "10.5 mm"')
+    with pytest.raises(jp.ModelError) as info:
+        jp.loads(text)
+    assert [str(p) for p in info.value.problems] == [
+        "joints.B.journal_radius: must be smaller than bearing_radius = 10 mm (the journal would not fit), got 10.5 mm"]
+
+
+def test_journal_radius_instead_of_clearance_gives_the_same_model():
+    text = DRY.read_text().replace('clearance = "0.5 mm"', 'journal_radius = "9.5 mm"')
+    assert jp.loads(text).joint("B")["clearance"] == pytest.approx(0.5e-3, rel=1e-12)
+
+
+def test_over_constrained_mechanism_is_an_error():
+    assert problems(['joints.weld={ type = "fixed", first = "ground.O", second = "crank.O" }']) == [
+        "joints: the mechanism is over-constrained: 10 constraint equations for 9 coordinates"]
+
+
+def test_redundant_constraint_is_an_error_at_the_element():
+    (message,) = problems(['joints.O2={ type = "revolute", first = "ground.O", second = "crank.O" }'])
+    assert message.startswith("joints.O2: singular constraint Jacobian")
+    assert "redundantly constrained" in message
+
+
+def test_body_connected_to_nothing_is_an_error_unless_free():
+    assert problems(['bodies.extra={ mass = 1, inertia = 1 }']) == [
+        "bodies.extra: is connected to nothing: no joint or force element refers to it "
+        "(write free = true if it is meant to move freely)"]
+    model = jp.load(DRY, ['bodies.extra={ mass = 1, inertia = 1, free = true }'])
+    assert model.check()["degrees_of_freedom"] == 5
+
+
+def test_every_problem_is_reported_at_once():
+    found = problems(["joints.B.clearance=-0.1 mm", "bodies.crank.mass=5 mm", "joints.B.frcition=1"])
+    assert len(found) == 3
+
+
+def test_core_index_locations_are_mapped_to_names():
+    found = problems(["joints.B.friction.v1=1e-5 m/s"])
+    assert found == ["joints.B.friction: full-friction velocity v1 must be finite and > v0 = 0.0001 m/s, got 0.00001"]
+
+
+def test_invalid_toml_and_missing_file_are_model_errors(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[model\nname = 1")
+    with pytest.raises(jp.ModelError) as info:
+        jp.load(bad)
+    assert str(info.value).startswith(f"{bad}: is not valid TOML")
+    with pytest.raises(jp.ModelError, match="no such file"):
+        jp.load(tmp_path / "missing.toml")
+
+
+# overrides ---------------------------------------------------------------------
+
+def test_overrides_take_units_lists_and_inline_tables():
+    m = jp.load(DRY, ["joints.B.clearance=0.1mm", "model.gravity=[0, 0]", 'joints.B.contact={ law = "hertz" }',
+                      "simulation.t_end=12 ms"])
+    assert m.joint("B")["clearance"] == pytest.approx(1e-4)
+    assert m.joint("B")["contact"] == {"law": "hertz"}
+    assert m.to_spec()["gravity"] == [0.0, 0.0]
+    assert m.simulation["t_end"] == pytest.approx(0.012)
+
+
+def test_override_of_an_entry_that_does_not_exist_is_an_error():
+    assert problems(["joints.Z.clearance=1"]) == ["--set joints.Z.clearance: no entry 'Z' in [joints] "
+                                                  "(entries: O, A, guide, B)"]
+    assert problems(["nonsense"]) == ['--set nonsense: must be PATH=VALUE, e.g. joints.B.clearance="0.1 mm"']
+
+
+# round trips -------------------------------------------------------------------
+
+def _flores_builder():
+    spec = importlib.util.spec_from_file_location("flores_dry", ROOT / "examples" / "flores_slider_crank_dry.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.build_model()
+
+
+def kitchen_sink() -> jp.Model:
+    """Every joint, law, driver function and force element the engine has."""
+    m = jp.Model("kitchen sink", gravity=(0.0, -9.81))
+    m.add_ground_point("O", (0.0, 0.0))
+    m.add_ground_point("rail", (0.0, -0.3))
+    m.add_body("bar", mass=1.0, inertia=0.02, position=(0.25, 0.0), angle=0.0,
+               points={"O": (-0.25, 0.0), "tip": (0.25, 0.0)})
+    m.add_body("arm", mass=0.2, inertia=1e-3, position=(0.6, 0.0), points={"pin": (-0.1, 0.0), "end": (0.1, 0.0)})
+    m.add_body("block", mass=0.5, inertia=1e-3, position=(0.0, -0.3), points={"c": (0.0, 0.0)})
+    m.add_body("weld", mass=0.1, inertia=1e-4, position=(0.0, -0.3), points={"c": (0.0, 0.0)})
+    m.add_revolute("pivot", "ground.O", "bar.O")
+    m.add_clearance_revolute("gap", "bar.tip", "arm.pin", bearing_radius=0.01, clearance=2e-4, length=0.02,
+                             contact=laws.hunt_crossley(0.8), stiffness=laws.johnson_line(),
+                             friction=laws.stiction(0.2, 0.15), initial_eccentricity=(1e-4, 0.0),
+                             max_penetration=1e-4)
+    m.add_translational("rail", "ground.rail", "block.c", axis=(1.0, 0.0))
+    m.add_fixed("glue", "block.c", "weld.c")
+    m.add_driver("push", "rail", fn.cubic_step(0.0, 0.01, 0.0, 0.002))
+    m.add_spring_damper("spring", "bar.tip", "block.c", free_length=0.4, stiffness=100.0, damping=0.5)
+    m.add_rotational_spring_damper("coil", "ground", "bar", stiffness=2.0, damping=0.01, free_angle=0.1)
+    m.add_point_force("wind", "arm.end", fx=fn.sine(1.0, 50.0, phase=0.3), fy=fn.polynomial([0.0, 10.0, -5.0]))
+    m.add_torque("motor", "bar", fn.table([0.0, 0.005, 0.01], [0.0, 0.1, 0.0]))
+    return m
+
+
+@pytest.mark.parametrize("build", [_flores_builder, kitchen_sink], ids=["flores_dry", "kitchen_sink"])
+def test_builder_to_toml_to_load_gives_identical_results(build):
+    built = build()
+    loaded = jp.loads(built.to_toml())
+    assert loaded.to_spec() == built.to_spec()
+    a = built.simulate(0.004, max_step=1e-4)
+    b = loaded.simulate(0.004, max_step=1e-4)
+    assert a.channels == b.channels
+    assert np.array_equal(a.time, b.time)
+    for name in a.channels:
+        assert np.array_equal(a[name], b[name]), name
+
+
+def test_kitchen_sink_keeps_laws_and_functions_through_toml():
+    text = kitchen_sink().to_toml()
+    doc = tomllib.loads(text)
+    assert doc["joints"]["gap"]["friction"]["law"] == "stiction"
+    assert doc["joints"]["gap"]["stiffness"] == {"law": "johnson_line"}
+    assert doc["drivers"]["push"]["function"]["value_end"] == "0.002 m"
+    assert doc["forces"]["wind"]["fy"]["coefficients"] == ["0.0 N", "10.0 N/s^1", "-5.0 N/s^2"]
+
+
+def test_model_save_and_load_keep_simulation_defaults(tmp_path):
+    m = jp.load(DRY)
+    m.save(tmp_path / "copy.toml")
+    again = jp.load(tmp_path / "copy.toml")
+    assert again.to_spec() == m.to_spec()
+    assert again.simulation == m.simulation == {"t_end": 0.024, "method": "dopri5", "rtol": 1e-6, "atol": 1e-9,
+                                                "max_step": 1e-4}
+
+
+def test_model_file_matches_the_python_example():
+    loaded, built = jp.load(DRY).to_spec(), _flores_builder().to_spec()
+    for body_loaded, body_built in zip(loaded["bodies"], built["bodies"]):
+        body_loaded["position"] = body_built["position"] = None  # approximate initial guesses
+    assert loaded == built
+
+
+# robustness: random mutations give a model or a ModelError, nothing else ------
+
+ODD_VALUES = st.one_of(
+    st.floats(allow_nan=True, allow_infinity=True), st.integers(-10**20, 10**20), st.booleans(),
+    st.sampled_from(["5 kg", "0.1 mm", "-1 mm", "3 rpm", "1e308 m", "1e-300 m", "abc", "", "10 Hz", "90 deg",
+                     "ground.O", "rod.X", "crank.A", "revolute", "hertz", "none", "table", "1 mm +", "0 s"]),
+    st.lists(st.floats(-1e3, 1e3), max_size=3), st.just({}), st.just({"law": "hertz"}), st.just({"kind": "table"}),
+)
+
+
+def _leaves(node, path=()):
+    if isinstance(node, dict):
+        yield path
+        for k, v in node.items():
+            yield from _leaves(v, (*path, k))
+    elif isinstance(node, list):
+        yield path
+        for i, v in enumerate(node):
+            yield from _leaves(v, (*path, i))
+    else:
+        yield path
+
+
+BASES = [tomllib.loads(DRY.read_text()), tomllib.loads(kitchen_sink().to_toml())]
+PATHS = [[p for p in _leaves(doc) if p] for doc in BASES]
+
+
+@st.composite
+def mutated(draw):
+    base = draw(st.sampled_from(range(len(BASES))))
+    doc = copy.deepcopy(BASES[base])
+    for _ in range(draw(st.integers(1, 3))):
+        path = draw(st.sampled_from(PATHS[base]))
+        parent = doc
+        try:
+            for key in path[:-1]:
+                parent = parent[key]
+            action = draw(st.sampled_from(["replace", "delete", "add"]))
+            if action == "replace":
+                parent[path[-1]] = draw(ODD_VALUES)
+            elif action == "delete" and isinstance(parent, dict):
+                del parent[path[-1]]
+            elif isinstance(parent, dict):
+                parent[draw(st.sampled_from(["extra", "mass", "type", "law", "kind", "rate", "clearance"]))] = \
+                    draw(ODD_VALUES)
+        except (KeyError, IndexError, TypeError):
+            pass  # an earlier mutation removed or replaced this path
+    return doc
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(mutated())
+def test_random_mutations_give_a_model_or_a_model_error(doc):
+    try:
+        model = from_document(doc)
+    except jp.ModelError as exc:
+        assert exc.problems and all(p.location and p.message for p in exc.problems)
+        return
+    info = model.check()
+    assert math.isfinite(float(np.sum(info["initial_coordinates"])))
