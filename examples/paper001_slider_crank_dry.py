@@ -8,11 +8,13 @@ at 500 rpm; radial clearance 0.5 mm; crank and rod start aligned.
 
 CHOSEN here because the paper's table of joint properties did not survive
 (these are not the paper's values): bearing radius 10 mm and length 40 mm;
-crank inertia 4.04e-5 kg m^2 (a uniform 50 mm bar of 0.194 kg); slider
-inertia 1e-4 kg m^2 (irrelevant: the slider does not rotate);
-Lankarani-Nikravesh contact; Ambrosio's modified Coulomb friction with
-v0 = 1e-4 m/s and v1 = 1e-3 m/s; gravity 9.81 m/s^2 along -y. The results are
-therefore not a reproduction of the paper's figures.
+crank inertia 4.0e-5 kg m^2 (a slender 50 mm bar of 0.194 kg); slider
+inertia 1e-4 kg m^2 (irrelevant: the slider does not rotate); the contact
+law of Flores et al. 2011 (it holds for a restitution as low as 0.5,
+Lankarani-Nikravesh does not); Ambrosio's modified Coulomb friction with
+v0 = 1e-4 m/s and v1 = 1e-3 m/s; gravity 9.81 m/s^2 along -y. The same model
+is examples/paper001_slider_crank_dry.toml. The results are therefore not a
+reproduction of the paper's figures.
 
 Run: python examples/paper001_slider_crank_dry.py [--out DIR] [--revolutions N] [--clearance MM]
 """
@@ -35,11 +37,11 @@ def build_model(clearance: float = 0.5e-3, crank_speed: float = CRANK_SPEED) -> 
     return slider_crank(
         name="paper001_slider_crank_dry",
         crank_length=0.050, rod_length=0.300, masses=(0.194, 1.062, 0.281),
-        inertias=(4.04e-5, 0.034, 1e-4),  # crank and slider inertias chosen, rod from the paper
+        inertias=(4.0e-5, 0.034, 1e-4),  # crank and slider inertias chosen, rod from the paper
         crank_speed=crank_speed,
         clearance=dict(
             bearing_radius=0.010, clearance=clearance, length=0.040,  # radius and length chosen
-            contact=laws.lankarani_nikravesh(0.5),
+            contact=laws.flores(0.5),  # law chosen
             friction=laws.ambrosio(0.01, v0=1e-4, v1=1e-3),  # velocity band chosen
         ),
     )

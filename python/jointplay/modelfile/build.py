@@ -229,6 +229,7 @@ class Builder:
             "bearing_material": material(t.bearing_material), "journal_material": material(t.journal_material),
             "contact": contact, "stiffness": stiffness, "friction": friction,
             "initial_eccentricity": [float(e) for e in t.initial_eccentricity],
+            "lock_at_assembly": bool(t.lock_at_assembly),
             "onset_velocity_floor": float(t.onset_velocity_floor),
             "max_penetration": None if t.max_penetration is None else float(t.max_penetration),
         }

@@ -101,6 +101,8 @@ class ClearanceRevoluteTable(Strict):
     stiffness: Any = None
     friction: Any = None
     initial_eccentricity: vector("length") = ZERO_VECTOR
+    # true: assembly holds the journal at initial_eccentricity with the ideal mechanism's velocities
+    lock_at_assembly: bool = True
     # 1e-4 m/s: small against impact velocities of machinery, bounds delta_dot / delta_dot_minus (core default)
     onset_velocity_floor: quantity("velocity", gt=0) = Q(1e-4, "0.0001 m/s")
     max_penetration: quantity("length", gt=0) = None

@@ -142,6 +142,7 @@ def _joint(j: dict) -> dict:
         "friction": _law(j.get("friction") or {"law": "none"}),
         "bearing_material": _material(j["bearing_material"]), "journal_material": _material(j["journal_material"]),
         "initial_eccentricity": vec(j.get("initial_eccentricity", (0.0, 0.0)), "length"),
+        "lock_at_assembly": bool(j.get("lock_at_assembly", True)),
         "onset_velocity_floor": quantity(j.get("onset_velocity_floor", 1e-4), "velocity"),
         "max_penetration": None if j.get("max_penetration") is None else quantity(j["max_penetration"], "length"),
     }
