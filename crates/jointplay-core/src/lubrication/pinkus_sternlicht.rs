@@ -3,8 +3,9 @@
 //!
 //! The full-film pressure with ambient pressure at the thickest film
 //! (`phi = pi`) is, in our conventions (`wbar = omega_j + omega_b - 2 gamma_dot`),
-//! `p = (6 mu R^2 / c^2) [ -eps wbar sin(phi) (2 - eps cos(phi)) / (2 + eps^2)
-//!   + eps_dot (1 + cos(phi)) (2 + eps - eps cos(phi)) / (1 + eps)^2 ] / D^2`
+//! `p = (6 mu R^2 / c^2) [P_w + P_s] / D^2` with the wedge part
+//! `P_w = -eps wbar sin(phi) (2 - eps cos(phi)) / (2 + eps^2)` and the squeeze part
+//! `P_s = eps_dot (1 + cos(phi)) (2 + eps - eps cos(phi)) / (1 + eps)^2`,
 //! `= (12 mu R^2 / c^2) cos(phi/2) f(phi) / D^2`, with
 //! `f = -eps wbar sin(phi/2) (2 - eps cos)/(2 + eps^2) + eps_dot cos(phi/2) (2 + eps - eps cos)/(1 + eps)^2`.
 //! Only the positive part carries load. Besides `phi = pi`, the pressure
