@@ -93,3 +93,48 @@ def stiction(static_coefficient: float, kinetic_coefficient: float,
     return {"law": "stiction", "static_coefficient": float(static_coefficient),
             "kinetic_coefficient": float(kinetic_coefficient),
             "stiction_velocity": float(stiction_velocity), "transition_velocity": float(transition_velocity)}
+
+
+# lubrication ---------------------------------------------------------------
+
+FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamrock_long", "frene_short",
+               "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
+
+
+def centipoise(value: float) -> float:
+    """Viscosity in cP to Pa s (1 cP = 1e-3 Pa s)."""
+    return value * 1e-3
+
+
+def lubrication(model: str, viscosity: float, transition: dict | None = None, *, cavitation: str = "swift_stieber",
+                n_circumferential: int | None = None, n_axial: int | None = None, ambient_pressure: float = 0.0,
+                groove_supply_pressure: float | None = None) -> dict:
+    """A lubricant film for a clearance joint: ``model`` one of :data:`FILM_MODELS`, ``viscosity`` [Pa s]
+    (see :func:`centipoise`), ``transition`` from :func:`wang_transition` (default), :func:`flores_transition`
+    or :func:`switch_transition`. The Reynolds models take the cavitation condition (``gumbel``,
+    ``swift_stieber``, ``elrod_adams``), the grid, the ambient pressure at the ends [Pa] and the supply
+    pressure of a circumferential groove at mid-length [Pa]."""
+    if model not in FILM_MODELS:
+        raise ValueError(f"unknown film model {model!r}; choose one of {', '.join(FILM_MODELS)}")
+    spec = {"model": model, "viscosity": float(viscosity), "transition": transition or wang_transition()}
+    if model.startswith("reynolds"):
+        spec["reynolds"] = {"cavitation": cavitation, "n_circumferential": n_circumferential, "n_axial": n_axial,
+                            "ambient_pressure": float(ambient_pressure),
+                            "groove_supply_pressure": None if groove_supply_pressure is None else float(groove_supply_pressure)}
+    return spec
+
+
+def wang_transition(safe_film_thickness: float | None = None) -> dict:
+    """Paper 001's transition: squeeze and wedge film faded out from the safe film thickness [m]
+    (default 0.00015 of the diameter) to contact."""
+    return {"law": "wang_improved", "safe_film_thickness": safe_film_thickness}
+
+
+def flores_transition(lubricated_limit: float = 0.95) -> dict:
+    """Flores et al.: squeeze film only, faded out between eccentricity ratio ``lubricated_limit`` and contact."""
+    return {"law": "flores", "lubricated_limit": float(lubricated_limit)}
+
+
+def switch_transition() -> dict:
+    """Film force until contact, contact force after (paper 000's squeeze-film joint)."""
+    return {"law": "switch"}

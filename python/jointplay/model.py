@@ -115,14 +115,17 @@ class Model:
                                stiffness: dict | None = None, friction: dict | None = None,
                                bearing_material: dict = STEEL, journal_material: dict = STEEL,
                                initial_eccentricity: Vector = (0.0, 0.0), lock_at_assembly: bool = True,
-                               onset_velocity_floor: float = 1e-4, max_penetration: float | None = None) -> str:
+                               onset_velocity_floor: float = 1e-4, max_penetration: float | None = None,
+                               lubrication: dict | None = None) -> str:
         """Dry revolute joint with radial clearance: bore of radius ``bearing_radius`` [m] centred at
         ``bearing``, journal of radius ``bearing_radius - clearance`` centred at ``journal``.
         ``contact``, ``stiffness`` and ``friction`` come from :mod:`jointplay.laws`. Assembly holds the
         journal at ``initial_eccentricity`` [m] with the velocities of the ideal mechanism unless
         ``lock_at_assembly`` is False (then the bodies' own approximate positions and velocities count).
         ``onset_velocity_floor`` [m/s] bounds the damping term for grazing contacts; the run stops if the
-        penetration exceeds ``max_penetration`` [m] (default 5 % of the journal radius)."""
+        penetration exceeds ``max_penetration`` [m] (default 5 % of the journal radius). ``lubrication``
+        (:func:`jointplay.laws.lubrication`) fills the clearance with a lubricant film; dry contact still
+        acts once the journal touches the bore."""
         joint = {
             "type": "clearance_revolute", "name": name, "bearing": bearing, "journal": journal,
             "bearing_radius": float(bearing_radius), "clearance": float(clearance),
@@ -134,6 +137,7 @@ class Model:
             "lock_at_assembly": bool(lock_at_assembly),
             "onset_velocity_floor": float(onset_velocity_floor),
             "max_penetration": None if max_penetration is None else float(max_penetration),
+            "lubrication": None if lubrication is None else copy.deepcopy(lubrication),
         }
         return self._joint(joint)
 

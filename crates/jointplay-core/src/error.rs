@@ -117,6 +117,16 @@ pub enum SimulationError {
         /// The bound [m].
         bound: f64,
     },
+    /// A film model failed (for example the Reynolds solver did not converge).
+    #[error("film model of {element} failed at t = {time:.6e} s: {cause}")]
+    FilmModel {
+        /// Time [s].
+        time: f64,
+        /// Clearance joint.
+        element: String,
+        /// What went wrong.
+        cause: String,
+    },
     /// The integration was asked for something it cannot do (bad options, t_end before t0, wrong state length).
     #[error("invalid integration input at t = {time:.6e} s: {message}")]
     InvalidInput {
@@ -151,6 +161,7 @@ impl SimulationError {
             | Self::ConstraintViolation { time, .. }
             | Self::ExcessivePenetration { time, .. }
             | Self::InvalidInput { time, .. }
+            | Self::FilmModel { time, .. }
             | Self::Interrupted { time } => *time,
         }
     }
@@ -162,7 +173,8 @@ impl SimulationError {
             Self::NonFinite { element, .. }
             | Self::SingularConfiguration { element, .. }
             | Self::ConstraintViolation { element, .. }
-            | Self::ExcessivePenetration { element, .. } => Some(element),
+            | Self::ExcessivePenetration { element, .. }
+            | Self::FilmModel { element, .. } => Some(element),
             Self::TooManySteps { .. } | Self::InvalidInput { .. } | Self::Interrupted { .. } => None,
         }
     }

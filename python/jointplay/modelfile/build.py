@@ -219,7 +219,8 @@ class Builder:
             if math.hypot(ex, ey) > clearance:
                 self.problem(join(where, "initial_eccentricity"),
                              f"must lie within the clearance ({_text(clearance)}), got [{ex.text}, {ey.text}]")
-        if None in (clearance, contact, stiffness, friction):
+        lubrication = self.lubrication(raw.get("lubrication"), join(where, "lubrication"), t.length, where)
+        if None in (clearance, contact, stiffness, friction) or lubrication is False:
             return None
         material = lambda m: {"youngs_modulus": float(m.youngs_modulus), "poisson_ratio": float(m.poisson_ratio)}
         return {
@@ -232,7 +233,47 @@ class Builder:
             "lock_at_assembly": bool(t.lock_at_assembly),
             "onset_velocity_floor": float(t.onset_velocity_floor),
             "max_penetration": None if t.max_penetration is None else float(t.max_penetration),
+            "lubrication": lubrication,
         }
+
+    def lubrication(self, raw: Any, where: str, length: Any, joint_where: str) -> dict | None | bool:
+        """The core's lubrication dict, None for a dry joint, False after adding problems."""
+        if raw is None:
+            return None
+        if not isinstance(raw, dict):
+            self.problem(where, f'must be a table such as {{ model = "hamrock_short", viscosity = "400 cP" }}, got {raw!r}')
+            return False
+        table = self.validate(s.LubricationTable, raw, where)
+        if table is None:
+            return False
+        if length is None:
+            self.problem(join(joint_where, "length"), 'missing required value: a lubricated joint needs the bearing '
+                                                      'length, e.g. "40 mm"')
+            return False
+        transition = self.law(raw, "transition", s.TRANSITION_LAWS, where, default={"law": "wang_improved"})
+        if transition is None:
+            return False
+        spec = {"model": table.model, "viscosity": float(table.viscosity), "transition": transition}
+        if table.model.startswith("reynolds"):
+            grid = self.grid(table.grid, join(where, "grid"))
+            if grid is False:
+                return False
+            spec["reynolds"] = {
+                "cavitation": table.cavitation, "n_circumferential": grid[0], "n_axial": grid[1],
+                "ambient_pressure": float(table.ambient_pressure),
+                "groove_supply_pressure": None if table.groove_supply_pressure is None else float(table.groove_supply_pressure),
+            }
+        return spec
+
+    def grid(self, raw: Any, where: str) -> tuple[int | None, int | None] | bool:
+        """``grid = [n_circumferential, n_axial]`` of the Reynolds solver, or the solver's default."""
+        if raw is None:
+            return (None, None)
+        if (isinstance(raw, list) and len(raw) == 2 and all(isinstance(n, int) and not isinstance(n, bool) and n >= 4
+                                                            for n in raw)):
+            return (raw[0], raw[1])
+        self.problem(where, f"must be [cells around, cells along the axis], whole numbers >= 4, got {raw!r}")
+        return False
 
     def radial_clearance(self, where: str, t: s.ClearanceRevoluteTable) -> float | None:
         """c = R_b - R_j from ``clearance`` or ``journal_radius`` (exactly one of them)."""

@@ -102,10 +102,11 @@ class ClearanceRevoluteTable(Strict):
     friction: Any = None
     initial_eccentricity: vector("length") = ZERO_VECTOR
     # true: assembly holds the journal at initial_eccentricity with the ideal mechanism's velocities
-    lock_at_assembly: bool = True
+    lock_at_assembly: Flag = True
     # 1e-4 m/s: small against impact velocities of machinery, bounds delta_dot / delta_dot_minus (core default)
     onset_velocity_floor: quantity("velocity", gt=0) = Q(1e-4, "0.0001 m/s")
     max_penetration: quantity("length", gt=0) = None
+    lubrication: Any = None
 
 
 JOINTS: dict[str, type[Strict]] = {
@@ -280,3 +281,48 @@ class SimulationTable(Strict):
 
 
 TOP_LEVEL = ("model", "ground", "bodies", "joints", "drivers", "forces", "simulation")
+
+
+# lubrication ---------------------------------------------------------------
+
+FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamrock_long", "frene_short",
+               "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
+
+
+class LubricationTable(Strict):
+    """``lubrication = { model = "hamrock_short", viscosity = "400 cP" }`` in a clearance joint."""
+
+    model: choice(*FILM_MODELS) = _req(f"a film model, one of {', '.join(FILM_MODELS)}")
+    viscosity: quantity("viscosity", gt=0) = _req('a viscosity, e.g. "400 cP"')
+    transition: Any = None
+    cavitation: choice("gumbel", "swift_stieber", "elrod_adams", aliases={"reynolds": "swift_stieber",
+                                                                          "half_sommerfeld": "gumbel",
+                                                                          "jfo": "elrod_adams"}) = "swift_stieber"
+    grid: Any = None
+    ambient_pressure: quantity("pressure") = Q(0.0, "0 Pa")
+    groove_supply_pressure: quantity("pressure") = None
+
+
+class SwitchTransition(Strict):
+    """``transition = { law = "switch" }``: film until contact, contact after."""
+
+    law: str
+
+
+class FloresTransition(Strict):
+    """``transition = { law = "flores", lubricated_limit = 0.95 }``."""
+
+    law: str
+    lubricated_limit: quantity("dimensionless", gt=0, lt=1) = Q(0.95, "0.95")
+
+
+class WangTransition(Strict):
+    """``transition = { law = "wang_improved" }``: from the safe film thickness (0.00015 D by default) to contact."""
+
+    law: str
+    safe_film_thickness: quantity("length", gt=0) = None
+
+
+TRANSITION_LAWS: dict[str, type[Strict]] = {
+    "switch": SwitchTransition, "flores": FloresTransition, "wang_improved": WangTransition,
+}

@@ -145,7 +145,25 @@ def _joint(j: dict) -> dict:
         "lock_at_assembly": bool(j.get("lock_at_assembly", True)),
         "onset_velocity_floor": quantity(j.get("onset_velocity_floor", 1e-4), "velocity"),
         "max_penetration": None if j.get("max_penetration") is None else quantity(j["max_penetration"], "length"),
+        "lubrication": None if j.get("lubrication") is None else _lubrication(j["lubrication"]),
     }
+
+
+def _lubrication(lub: dict) -> dict:
+    transition = dict(lub.get("transition") or {"law": "wang_improved"})
+    if transition.get("safe_film_thickness") is not None:
+        transition["safe_film_thickness"] = quantity(transition["safe_film_thickness"], "length")
+    out = {"model": lub["model"], "viscosity": quantity(lub["viscosity"], "viscosity"),
+           "transition": {k: v for k, v in transition.items() if v is not None}}
+    reynolds = lub.get("reynolds")
+    if lub["model"].startswith("reynolds") and reynolds:
+        out["cavitation"] = reynolds.get("cavitation", "swift_stieber")
+        if reynolds.get("n_circumferential") is not None and reynolds.get("n_axial") is not None:
+            out["grid"] = [int(reynolds["n_circumferential"]), int(reynolds["n_axial"])]
+        out["ambient_pressure"] = quantity(reynolds.get("ambient_pressure", 0.0), "pressure")
+        if reynolds.get("groove_supply_pressure") is not None:
+            out["groove_supply_pressure"] = quantity(reynolds["groove_supply_pressure"], "pressure")
+    return out
 
 
 def _force(f: dict) -> dict:

@@ -32,6 +32,8 @@ pub(crate) enum Source {
     DriverEffort(usize),
     /// Clearance joint quantity (see `clearance_value`).
     Clearance(usize, u8),
+    /// Film of a lubricated clearance joint (see `film_value`).
+    Film(usize, u8),
     /// Force element: 0 primary, 1 secondary.
     Force(usize, u8),
     /// 0 kinetic, 1 potential, 2 total mechanical energy.
@@ -85,6 +87,7 @@ fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace) -> f64 {
         Source::Reaction(e, which) => reaction_value(model, e, which, ws),
         Source::DriverEffort(e) => driver_effort(model, e, ws),
         Source::Clearance(j, which) => clearance_value(model, j, which, ws),
+        Source::Film(j, which) => film_value(j, which, ws),
         Source::Force(f, 0) => ws.force_outputs[f].primary,
         Source::Force(f, _) => ws.force_outputs[f].secondary,
         Source::Energy(which) => energy(model, which, y, ws),
@@ -151,6 +154,19 @@ fn clearance_value(model: &Model, j: usize, which: u8, ws: &Workspace) -> f64 {
     }
 }
 
+fn film_value(j: usize, which: u8, ws: &Workspace) -> f64 {
+    let f = &ws.films[j];
+    match which {
+        0 => f.film_min,
+        1 => f.force_on_journal.x,
+        2 => f.force_on_journal.y,
+        3 => f.force_on_journal.norm(),
+        4 => f.peak_pressure,
+        5 => f.weight,
+        _ => f64::from(f.mode),
+    }
+}
+
 /// `d|e|/dt` while the journal is free [m/s].
 fn relative_radial_velocity(model: &Model, j: usize, ws: &Workspace) -> f64 {
     let joint = &model.clearance_joints[j];
@@ -199,4 +215,15 @@ pub(crate) const CLEARANCE_QUANTITIES: [(&str, &str, &str); 12] = [
     ("vn", "m/s", "normal relative velocity d|e|/dt (positive when approaching the wall)"),
     ("vt", "m/s", "sliding velocity of the journal surface on the bore"),
     ("contact", "1", "1 while in contact, 0 while free"),
+];
+
+/// Names of the film quantities of a lubricated clearance joint, by `Source::Film` index.
+pub(crate) const FILM_QUANTITIES: [(&str, &str, &str); 7] = [
+    ("film_min", "m", "minimum film thickness c - |e| (0 in contact)"),
+    ("fhx", "N", "film (hydrodynamic) force on the journal after the transition weight, x"),
+    ("fhy", "N", "film force on the journal, y"),
+    ("fh", "N", "film force magnitude"),
+    ("peak_pressure", "Pa", "peak film pressure (gauge)"),
+    ("film_weight", "1", "share of the film force in the transition to contact"),
+    ("mode", "1", "0 hydrodynamic, 1 transition, 2 contact"),
 ];

@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES};
+use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES, FILM_QUANTITIES};
 use super::frame::{perp, BodyIndex, BodyPoint, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model};
 use crate::error::ModelErrors;
@@ -13,8 +13,11 @@ use crate::spec::{ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpe
 
 #[path = "compile/laws.rs"]
 mod laws;
+#[path = "compile/lubrication.rs"]
+mod lubrication;
 
 use laws::{build_friction, build_function, build_normal_force_law, build_stiffness};
+use lubrication::build_lubrication;
 
 /// Default bound on penetration as a fraction of the journal radius: far
 /// beyond elastic contact of metals, so reaching it means a wrong input.
@@ -256,7 +259,14 @@ impl<'s> Compiler<'s> {
         let stiffness = build_stiffness(c, journal_radius, loc, &mut self.errors);
         let law = build_normal_force_law(&c.contact, &format!("{loc}.contact"), &mut self.errors);
         let friction = build_friction(&c.friction, &format!("{loc}.friction"), &mut self.errors);
-        let (Some(a), Some(b), Some(stiffness), Some(law), Some(friction)) = (a, b, stiffness, law, friction) else { return };
+        let lubrication = match &c.lubrication {
+            Some(l) if journal_radius > 0.0 => build_lubrication(c, l, journal_radius, loc, &mut self.errors).map(Some),
+            Some(_) => None,
+            None => Some(None),
+        };
+        let (Some(a), Some(b), Some(stiffness), Some(law), Some(friction), Some(lubrication)) = (a, b, stiffness, law, friction, lubrication) else {
+            return;
+        };
         if !self.distinct_bodies(loc, a, b) {
             return;
         }
@@ -279,11 +289,17 @@ impl<'s> Compiler<'s> {
             onset_velocity_floor: c.onset_velocity_floor,
             max_penetration,
             initial_eccentricity: e0,
+            lubrication,
         });
         self.model.clearance_names.push(c.name.clone());
         self.clearance_specs.push(c);
         for (q, (quantity, unit, description)) in CLEARANCE_QUANTITIES.iter().enumerate() {
             self.channel(&c.name, quantity, unit, description.to_string(), Source::Clearance(index, q as u8));
+        }
+        if c.lubrication.is_some() {
+            for (q, (quantity, unit, description)) in FILM_QUANTITIES.iter().enumerate() {
+                self.channel(&c.name, quantity, unit, description.to_string(), Source::Film(index, q as u8));
+            }
         }
     }
 

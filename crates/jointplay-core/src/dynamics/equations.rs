@@ -14,7 +14,7 @@ use super::state::ContactMemory;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 use crate::force::gravity_generalised_force;
-use crate::joint::ConstraintRows;
+use crate::joint::{ConstraintRows, Lubrication};
 use crate::linalg::{cholesky_factor, cholesky_solve, RankDeficiency};
 
 /// How constraint drift is controlled.
@@ -125,7 +125,7 @@ pub(crate) fn singular_error(model: &Model, t: f64, deficiency: RankDeficiency) 
 
 /// Applied generalised forces: gravity, force elements and clearance
 /// contacts (whose evaluations are kept in the workspace).
-fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, ws: &mut Workspace) {
+fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, ws: &mut Workspace) -> Result<(), SimulationError> {
     ws.generalised_force.fill(0.0);
     gravity_generalised_force(&model.masses, model.gravity, &mut ws.generalised_force);
     for (k, element) in model.forces.iter().enumerate() {
@@ -133,13 +133,26 @@ fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, ws: &mut Work
     }
     for (k, joint) in model.clearance_joints.iter().enumerate() {
         let c = joint.evaluate(&ws.frames, memory[k].onset_velocity);
+        let (bi, bj) = (joint.bearing.body, joint.journal.body);
         if c.in_contact {
-            let (bi, bj) = (joint.bearing.body, joint.journal.body);
             add_point_force(&mut ws.generalised_force, &ws.frames[bj.0], bj, c.journal_contact_point, c.force_on_journal);
             add_point_force(&mut ws.generalised_force, &ws.frames[bi.0], bi, c.bearing_contact_point, -c.force_on_journal);
         }
         ws.contacts[k] = c;
+        if let Some(lubrication) = &joint.lubrication {
+            let (fi, fj) = (&ws.frames[bi.0], &ws.frames[bj.0]);
+            let (pi, pj) = (fi.point(joint.bearing.local), fj.point(joint.journal.local));
+            let kinematics = Lubrication::kinematics(fi, fj, pi, pj);
+            let film = lubrication.evaluate(&kinematics, ws.film_solvers[k].as_mut(), ws.detailed).map_err(|cause| SimulationError::FilmModel {
+                time: t,
+                element: model.clearance_names[k].clone(),
+                cause,
+            })?;
+            Lubrication::apply(&film, &mut ws.generalised_force, (&ws.frames[bi.0], bi, pi), (&ws.frames[bj.0], bj, pj));
+            ws.films[k] = film;
+        }
     }
+    Ok(())
 }
 
 /// Evaluates the accelerations `ws.accelerations` and multipliers
@@ -155,7 +168,7 @@ pub fn accelerations(
 ) -> Result<(), SimulationError> {
     let n = model.n_coordinates();
     update_frames(model, q, qdot, &mut ws.frames);
-    applied_forces(model, memory, t, ws);
+    applied_forces(model, memory, t, ws)?;
     let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
     if let Stabilization::Baumgarte { alpha, beta } = stabilization {
         constraint_residuals(model, model.n_dynamic_constraints, t, ws);

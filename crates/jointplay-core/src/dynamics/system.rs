@@ -133,7 +133,9 @@ impl OdeSystem for MechanismSystem<'_> {
             project_positions(self.model, m, t, q, self.options.position_tolerance, PROJECTION_ITERATIONS, self.ws)?;
             project_velocities(self.model, m, t, q, qdot, self.options.position_tolerance, self.ws)?;
         }
+        self.ws.detailed = true;
         let evaluated = accelerations(self.model, self.memory, t, &sample[..n], &sample[n..], self.options.stabilization, self.ws);
+        self.ws.detailed = false;
         if evaluated.is_ok() {
             self.trajectory.push(self.model, t, &sample, self.ws);
         }

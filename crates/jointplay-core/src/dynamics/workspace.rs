@@ -4,7 +4,7 @@
 use super::frame::Frame;
 use super::Model;
 use crate::force::ForceOutput;
-use crate::joint::ContactEvaluation;
+use crate::joint::{ContactEvaluation, FilmEvaluation, ReynoldsSolver};
 use crate::linalg::DenseMatrix;
 
 /// Buffers sized once for a model.
@@ -34,6 +34,12 @@ pub struct Workspace {
     pub sample: Vec<f64>,
     /// Last evaluation of each clearance joint.
     pub contacts: Vec<ContactEvaluation>,
+    /// Last film evaluation of each clearance joint (default for dry joints).
+    pub films: Vec<FilmEvaluation>,
+    /// Reynolds solver of each clearance joint in the exact mode.
+    pub film_solvers: Vec<Option<ReynoldsSolver>>,
+    /// Whether this evaluation is for a recorded sample (outputs that only samples need are computed).
+    pub detailed: bool,
     /// Last outputs of each force element.
     pub force_outputs: Vec<ForceOutput>,
 }
@@ -56,6 +62,9 @@ impl Workspace {
             scratch: vec![0.0; n],
             sample: vec![0.0; 2 * n],
             contacts: vec![ContactEvaluation::default(); model.clearance_joints.len()],
+            films: vec![FilmEvaluation::default(); model.clearance_joints.len()],
+            film_solvers: model.clearance_joints.iter().map(|_| None).collect(),
+            detailed: false,
             force_outputs: vec![ForceOutput::default(); model.forces.len()],
         }
     }

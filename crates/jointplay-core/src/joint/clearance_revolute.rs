@@ -15,7 +15,7 @@ use crate::dynamics::frame::{perp, BodyPoint, Frame, Vec2};
 use crate::friction::FrictionLaw;
 
 /// A dry revolute clearance joint.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct ClearanceRevolute {
     /// Bearing centre on the first body.
     pub bearing: BodyPoint,
@@ -39,6 +39,8 @@ pub struct ClearanceRevolute {
     pub max_penetration: f64,
     /// Initial eccentricity vector (journal from bearing centre, global) [m].
     pub initial_eccentricity: Vec2,
+    /// Lubricant film, if the joint is lubricated.
+    pub lubrication: Option<super::Lubrication>,
 }
 
 /// Everything one evaluation of a clearance joint produces.

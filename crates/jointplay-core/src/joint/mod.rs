@@ -1,15 +1,18 @@
 //! Joints. Ideal joints and drivers are constraint equations
 //! `Phi(q, t) = 0` built from three primitives (point coincidence, relative
 //! angle, axial projection); the clearance revolute joint is not a
-//! constraint but a force element between a bearing and a journal.
+//! constraint but a force element between a bearing and a journal, with an
+//! optional lubricant film.
 
 mod axial_projection;
 mod clearance_revolute;
+mod lubricated_film;
 mod point_coincidence;
 mod relative_angle;
 
 pub use axial_projection::AxialProjection;
 pub use clearance_revolute::{ClearanceRevolute, ContactEvaluation};
+pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication, ReynoldsSolver};
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
 

@@ -44,10 +44,16 @@ pub enum ClosedFormBearing {
 impl ClosedFormBearing {
     /// Film force on the journal, peak pressure and friction torque for one state.
     pub fn film_force(&self, geometry: &BearingGeometry, kinematics: &FilmKinematics) -> FilmForce {
+        self.film_force_with(geometry, kinematics, true)
+    }
+
+    /// As [`Self::film_force`]; without `with_peak` the short-bearing models skip the numerical
+    /// search for the peak pressure (reported as NaN), which costs more than the force itself.
+    pub fn film_force_with(&self, geometry: &BearingGeometry, kinematics: &FilmKinematics, with_peak: bool) -> FilmForce {
         match self {
-            ClosedFormBearing::HamrockShort => hamrock::short_film_force(geometry, kinematics),
+            ClosedFormBearing::HamrockShort => hamrock::short_film_force_with(geometry, kinematics, with_peak),
             ClosedFormBearing::HamrockLong => hamrock::long_film_force(geometry, kinematics),
-            ClosedFormBearing::FreneShort => frene::short_film_force(geometry, kinematics),
+            ClosedFormBearing::FreneShort => frene::short_film_force_with(geometry, kinematics, with_peak),
             ClosedFormBearing::FreneLong => frene::long_film_force(geometry, kinematics),
             ClosedFormBearing::PinkusSternlichtLong => pinkus_sternlicht::long_film_force(geometry, kinematics),
         }
@@ -73,6 +79,11 @@ pub fn moving_half_film(state: &LineOfCentres) -> Option<(f64, f64)> {
 
 /// Short-bearing film over `[a, b]` (line-of-centres angles) [N, Pa, rad, N m].
 pub fn short_film_over(geometry: &BearingGeometry, kinematics: &FilmKinematics, state: &LineOfCentres, a: f64, b: f64) -> FilmForce {
+    short_film_over_with(geometry, kinematics, state, a, b, true)
+}
+
+/// As [`short_film_over`]; without `with_peak` the peak pressure is NaN.
+pub fn short_film_over_with(geometry: &BearingGeometry, kinematics: &FilmKinematics, state: &LineOfCentres, a: f64, b: f64, with_peak: bool) -> FilmForce {
     let BearingGeometry { radius: r, length: l, clearance: c, viscosity: mu } = *geometry;
     let (eps, sq, wd) = (state.eccentricity_ratio, state.squeeze_rate, state.wedge_rate);
     let m = FilmMoments::over(eps, a, b);
@@ -85,7 +96,7 @@ pub fn short_film_over(geometry: &BearingGeometry, kinematics: &FilmKinematics, 
         let (s, co) = phi.sin_cos();
         p_scale * (2.0 * sq * co - wd * s) / (1.0 - eps * co).powi(3)
     };
-    let (phi_peak, peak) = maximise(pressure, a, b);
+    let (phi_peak, peak) = if with_peak { maximise(pressure, a, b) } else { (f64::NAN, f64::NAN) };
     finish(geometry, kinematics, state, f_n, f_t, phi_peak, peak)
 }
 

@@ -17,15 +17,20 @@
 //! Negative gauge pressures are kept: the model holds for a submerged or
 //! pressurised bearing. See docs/theory/bearing-frene.md.
 
-use crate::lubrication::closed_form::{long_film_over, short_film_over};
+use crate::lubrication::closed_form::{long_film_over, short_film_over_with};
 use crate::lubrication::film::{BearingGeometry, FilmForce, FilmKinematics};
 use crate::lubrication::line_of_centres::LineOfCentres;
 use std::f64::consts::PI;
 
 /// Short bearing, full film [N, Pa, rad, N m].
 pub fn short_film_force(geometry: &BearingGeometry, kinematics: &FilmKinematics) -> FilmForce {
+    short_film_force_with(geometry, kinematics, true)
+}
+
+/// As [`short_film_force`]; without `with_peak` the peak pressure is NaN.
+pub fn short_film_force_with(geometry: &BearingGeometry, kinematics: &FilmKinematics, with_peak: bool) -> FilmForce {
     let state = LineOfCentres::new(geometry, kinematics);
-    short_film_over(geometry, kinematics, &state, -PI, PI)
+    short_film_over_with(geometry, kinematics, &state, -PI, PI, with_peak)
 }
 
 /// Long bearing, full film, ambient pressure at the thickest film [N, Pa, rad, N m].

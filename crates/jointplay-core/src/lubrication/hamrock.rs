@@ -22,15 +22,20 @@
 //! (`pi/2 - 8/(pi (2+eps^2))` squeeze term), which are exact only for pure
 //! wedge. See docs/theory/bearing-hamrock.md.
 
-use crate::lubrication::closed_form::{long_film_over, moving_half_film, short_film_over};
+use crate::lubrication::closed_form::{long_film_over, moving_half_film, short_film_over_with};
 use crate::lubrication::film::{BearingGeometry, FilmForce, FilmKinematics};
 use crate::lubrication::line_of_centres::{FilmMoments, LineOfCentres};
 
 /// Short bearing, Gümbel film on the moving half [N, Pa, rad, N m].
 pub fn short_film_force(geometry: &BearingGeometry, kinematics: &FilmKinematics) -> FilmForce {
+    short_film_force_with(geometry, kinematics, true)
+}
+
+/// As [`short_film_force`]; without `with_peak` the peak pressure is NaN.
+pub fn short_film_force_with(geometry: &BearingGeometry, kinematics: &FilmKinematics, with_peak: bool) -> FilmForce {
     let state = LineOfCentres::new(geometry, kinematics);
     match moving_half_film(&state) {
-        Some((a, b)) => short_film_over(geometry, kinematics, &state, a, b),
+        Some((a, b)) => short_film_over_with(geometry, kinematics, &state, a, b, with_peak),
         None => at_rest(geometry, kinematics, &state),
     }
 }

@@ -7,8 +7,10 @@
 //! `"ground.O"` for a point of the ground.
 
 mod laws;
+mod lubrication;
 
 pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
+pub use lubrication::{CavitationSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
 use serde::{Deserialize, Serialize};
 
 /// Name of the fixed frame.
@@ -160,6 +162,9 @@ pub struct ClearanceJointSpec {
     /// Penetration at which the simulation stops as unphysical [m]; default 5 % of the journal radius.
     #[serde(default)]
     pub max_penetration: Option<f64>,
+    /// Lubricant film; a dry joint when absent.
+    #[serde(default)]
+    pub lubrication: Option<LubricationSpec>,
 }
 
 /// Clearance joints start as the ideal mechanism unless told otherwise.
