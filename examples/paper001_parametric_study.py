@@ -1,0 +1,175 @@
+"""Paper 001's parametric study of a lubricated slider-crank, as one command.
+
+The slider-crank of ``paper001_slider_crank_dry.py`` with its rod/slider
+joint lubricated, in three series (two crank revolutions each):
+
+- clearance 0.1 / 0.3 / 0.5 / 1 mm at 500 rpm and 400 cP;
+- crank speed 300 / 500 / 800 / 1000 rpm at 0.5 mm and 400 cP;
+- viscosity 400 / 300 / 180 cP at 0.5 mm and 500 rpm.
+
+Writes, per series, the slider acceleration, the joint reaction force and
+the minimum film thickness against crank angle, and a table of the minimum
+film thickness per case (Markdown and CSV).
+
+CHOSEN here (paper 001's joint table did not survive): the geometry of the
+dry example (bearing radius 10 mm, length 40 mm, so L/D = 2, a long
+bearing); the film model of Hamrock for the infinitely long bearing with the
+moving Gümbel region; paper 001's transition to contact from the safe film
+thickness 0.00015 D; the dry contact and friction laws of the dry example;
+no gravity (the paper states none, and its trends concern the inertial
+loading: with gravity along -y the rod's weight dominates the joint load at
+300 rpm and the film there comes out thinner than at 500 rpm). These are not
+the paper's numbers; the trends are what the study shows. The film at
+c = 0.1 mm cannot be thicker than 0.1 mm, so across clearances the relative
+film h_min / c is the fair comparison (it is in the table).
+
+Run: python examples/paper001_parametric_study.py [--out DIR] [--revolutions N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+import jointplay as jp
+from jointplay import functions as fn
+from jointplay import laws
+from paper001_slider_crank_dry import build_model as build_dry_model
+
+FILM_MODEL = "hamrock_long"  # chosen: L/D = 2
+
+
+@dataclass(frozen=True)
+class Case:
+    """One run of the study."""
+
+    clearance: float  # m
+    speed_rpm: float  # rev/min
+    viscosity_cp: float  # cP
+
+    @property
+    def label(self) -> str:
+        return f"c = {self.clearance * 1e3:g} mm, {self.speed_rpm:g} rpm, {self.viscosity_cp:g} cP"
+
+
+SERIES = {
+    "clearance": [Case(c, 500, 400) for c in (0.1e-3, 0.3e-3, 0.5e-3, 1.0e-3)],
+    "speed": [Case(0.5e-3, n, 400) for n in (300, 500, 800, 1000)],
+    "viscosity": [Case(0.5e-3, 500, mu) for mu in (400, 300, 180)],
+}
+
+
+def build_model(case: Case) -> jp.Model:
+    """The lubricated paper 001 slider-crank for one case."""
+    model = build_dry_model(clearance=case.clearance, crank_speed=fn.rpm(case.speed_rpm))
+    model.joint("B")["lubrication"] = laws.lubrication(FILM_MODEL, laws.centipoise(case.viscosity_cp))
+    model.set_gravity((0.0, 0.0))  # chosen, see the module docstring
+    model._spec["name"] = "paper001_slider_crank_lubricated"
+    return model
+
+
+def run_case(case: Case, revolutions: float = 2.0) -> jp.Results:
+    """Simulates one case for ``revolutions`` crank turns, 720 samples per turn."""
+    t_end = revolutions * 60.0 / case.speed_rpm
+    return build_model(case).simulate(t_end, rtol=1e-7, atol=1e-10, max_step=1e-4,
+                                      output_step=t_end / (720 * revolutions))
+
+
+def run_study(revolutions: float = 2.0) -> dict[str, list[tuple[Case, jp.Results]]]:
+    """Every series; a case shared by several series is simulated once."""
+    done: dict[Case, jp.Results] = {}
+    study = {}
+    for name, cases in SERIES.items():
+        study[name] = []
+        for case in cases:
+            if case not in done:
+                done[case] = run_case(case, revolutions)
+            study[name].append((case, done[case]))
+    return study
+
+
+def minimum_film_table(study) -> list[dict]:
+    """One row per case and series: minimum film thickness [m] and where (crank angle [deg])."""
+    rows = []
+    for series, runs in study.items():
+        for case, results in runs:
+            film = results["B.film_min"]
+            k = int(np.argmin(film))
+            rows.append({"series": series, "clearance_mm": case.clearance * 1e3, "speed_rpm": case.speed_rpm,
+                         "viscosity_cP": case.viscosity_cp, "film_min_um": film[k] * 1e6,
+                         "film_min_over_clearance": film[k] / case.clearance,
+                         "crank_angle_deg": np.degrees(results["crank.angle"][k]) % 360.0,
+                         "peak_force_N": float(np.max(results["B.fh"] + results["B.f"])),
+                         "contact_fraction": results.summary()["clearance_joints"]["B"]["contact_fraction"]})
+    return rows
+
+
+def write_figures(study, out: Path) -> list[Path]:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    paths = []
+    for series, runs in study.items():
+        fig, axes = plt.subplots(3, 1, figsize=(8, 10), sharex=True)
+        for case, results in runs:
+            angle = np.degrees(results["crank.angle"])
+            axes[0].plot(angle, results["slider.ax"], lw=0.8, label=case.label)
+            axes[1].plot(angle, results["B.fh"] + results["B.f"], lw=0.8)
+            axes[2].plot(angle, results["B.film_min"] * 1e6, lw=0.8)
+        axes[0].set_ylabel("slider acceleration [m/s^2]")
+        axes[1].set_ylabel("joint reaction force [N]")
+        axes[2].set_ylabel("minimum film thickness [um]")
+        axes[2].set_xlabel("crank angle [deg]")
+        axes[0].legend(fontsize=8)
+        for ax in axes:
+            ax.grid(alpha=0.3)
+        fig.suptitle(f"paper 001 slider-crank, lubricated joint: {series} series")
+        fig.tight_layout()
+        path = out / f"paper001_{series}.png"
+        fig.savefig(path, dpi=120)
+        plt.close(fig)
+        paths.append(path)
+    return paths
+
+
+def write_table(rows: list[dict], out: Path) -> list[Path]:
+    csv_path, md_path = out / "paper001_film_min.csv", out / "paper001_film_min.md"
+    with csv_path.open("w", newline="") as handle:
+        writer = csv.DictWriter(handle, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    md_path.write_text(markdown_table(rows) + "\n")
+    return [csv_path, md_path]
+
+
+def markdown_table(rows: list[dict]) -> str:
+    lines = ["| series | clearance [mm] | speed [rpm] | viscosity [cP] | h_min [um] | h_min / c | at crank angle [deg] | peak force [N] | contact fraction |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        lines.append(f"| {r['series']} | {r['clearance_mm']:g} | {r['speed_rpm']:g} | {r['viscosity_cP']:g} | "
+                     f"{r['film_min_um']:.3f} | {r['film_min_over_clearance']:.3f} | {r['crank_angle_deg']:.1f} | {r['peak_force_N']:.1f} | {r['contact_fraction']:.3f} |")
+    return "\n".join(lines)
+
+
+def main(argv: list[str] | None = None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=Path("out/paper001_study"))
+    parser.add_argument("--revolutions", type=float, default=2.0)
+    args = parser.parse_args(argv)
+    study = run_study(args.revolutions)
+    rows = minimum_film_table(study)
+    print(markdown_table(rows))
+    args.out.mkdir(parents=True, exist_ok=True)
+    for path in write_figures(study, args.out) + write_table(rows, args.out):
+        print(f"wrote {path}")
+    return study, rows
+
+
+if __name__ == "__main__":
+    main()
