@@ -6,5 +6,6 @@
 
 pub mod film;
 pub mod reynolds;
+pub mod steady;
 
 pub use film::{BearingGeometry, FilmForce, FilmKinematics};
