@@ -89,3 +89,90 @@ fn swift_stieber_satisfies_the_complementarity_conditions() {
     assert!(s.pressure().iter().all(|p| *p >= 0.0));
     assert!(s.complementarity_residual() < 1e-6, "{}", s.complementarity_residual());
 }
+
+/// A tiny deterministic generator for test states in [0, 1).
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn random_state(rng: &mut Lcg, c: f64) -> FilmKinematics {
+    let (eps, angle) = (0.95 * rng.next(), 2.0 * PI * rng.next());
+    let rate = 200.0 * c * (rng.next() - 0.5);
+    let rate_angle = 2.0 * PI * rng.next();
+    FilmKinematics {
+        eccentricity: Vector2::new(angle.cos(), angle.sin()) * eps * c,
+        eccentricity_rate: Vector2::new(rate_angle.cos(), rate_angle.sin()) * rate,
+        journal_spin: 200.0 * (rng.next() - 0.3),
+        bearing_spin: 50.0 * (rng.next() - 0.5),
+    }
+}
+
+/// Scaling every velocity by k scales the force by k; turning the whole state
+/// turns the force (to the grid's rotation error); spin and whirl enter only
+/// through V_w = eps (omega_j + omega_b - 2 gamma_dot) / 2.
+#[test]
+fn force_is_homogeneous_and_rotates_with_the_state() {
+    let g = geometry(0.5);
+    let o = ReynoldsOptions { tolerance: 1e-10, ..Default::default() };
+    let mut s = ReynoldsSolver::new(g, o).unwrap();
+    let k = FilmKinematics {
+        eccentricity: Vector2::new(6e-6, 2e-6),
+        eccentricity_rate: Vector2::new(-4e-4, 9e-4),
+        journal_spin: 80.0,
+        bearing_spin: -20.0,
+    };
+    let f = s.solve(&k).unwrap().force_on_journal;
+    let scaled = FilmKinematics { eccentricity_rate: k.eccentricity_rate * 3.0, journal_spin: 240.0, bearing_spin: -60.0, ..k };
+    assert!((s.solve(&scaled).unwrap().force_on_journal - f * 3.0).norm() < 1e-6 * f.norm());
+    let rot = nalgebra::Rotation2::new(0.7);
+    let turned = FilmKinematics { eccentricity: rot * k.eccentricity, eccentricity_rate: rot * k.eccentricity_rate, ..k };
+    let f_turned = s.solve(&turned).unwrap().force_on_journal;
+    println!("rotation: {f_turned} vs {}", rot * f);
+    assert!((f_turned - rot * f).norm() < 5e-3 * f.norm());
+    // extra whirl gamma_dot with 2 gamma_dot added to the spin: same V_w, same force
+    let e = k.eccentricity;
+    let t = Vector2::new(-e.y, e.x) / e.norm();
+    let whirl = 10.0;
+    let shifted = FilmKinematics { eccentricity_rate: k.eccentricity_rate + t * (whirl * e.norm()), journal_spin: 80.0 + 2.0 * whirl, ..k };
+    let f_shifted = s.solve(&shifted).unwrap().force_on_journal;
+    // equal up to the O(dtheta^2) difference between the central difference of H (wedge) and the exact dh/dt (squeeze)
+    assert!((f_shifted - f).norm() < 1e-3 * f.norm(), "{f_shifted} vs {f}");
+}
+
+/// Fast mode against the exact solver (same grid) on random states up to eps = 0.95.
+#[test]
+fn force_table_matches_the_exact_solver() {
+    let lod = 0.5;
+    let t0 = std::time::Instant::now();
+    let table = ForceTable::build(lod, &ForceTableOptions::default()).unwrap();
+    let build = t0.elapsed();
+    let g = geometry(lod);
+    let mut s = ReynoldsSolver::new(g, ReynoldsOptions::default()).unwrap();
+    let mut rng = Lcg(7);
+    let (mut worst, mut sum, n) = (0.0_f64, 0.0, 300);
+    let (mut exact_time, mut fast_time) = (std::time::Duration::ZERO, std::time::Duration::ZERO);
+    for _ in 0..n {
+        let k = random_state(&mut rng, g.clearance);
+        let t1 = std::time::Instant::now();
+        let exact = s.solve(&k).unwrap().film_force();
+        exact_time += t1.elapsed();
+        let t2 = std::time::Instant::now();
+        let fast = table.film_force(&g, &k);
+        fast_time += t2.elapsed();
+        let err = (fast.force_on_journal - exact.force_on_journal).norm() / exact.force_on_journal.norm();
+        let torque_err = (fast.friction_torque - exact.friction_torque).abs() / exact.friction_torque.abs();
+        assert!(torque_err < 0.01, "torque error {torque_err}");
+        worst = worst.max(err);
+        sum += err;
+    }
+    println!(
+        "table build {build:?}; force error mean {:.2e} max {worst:.2e}; exact {:?}, fast {:?} per state",
+        sum / n as f64, exact_time / n as u32, fast_time / n as u32
+    );
+    assert!(worst < 0.005, "largest relative force error {worst}");
+}
+
