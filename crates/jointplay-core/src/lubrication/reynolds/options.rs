@@ -42,7 +42,7 @@ pub struct ReynoldsOptions {
     /// to it) at the ambient pressure with a full film: an axial feed groove
     /// there, as Raimondi and Boyd (1958) assume for the full bearing.
     pub feed_at_thickest_film: bool,
-    /// Convergence: largest change of a sweep relative to the pressure scale [-].
+    /// Convergence: largest change of a sweep relative to the pressure variation (max - min) over the film [-].
     pub tolerance: f64,
     /// Largest number of relaxation sweeps before giving up [-].
     pub max_iterations: usize,

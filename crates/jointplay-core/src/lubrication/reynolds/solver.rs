@@ -222,10 +222,10 @@ impl ReynoldsSolver {
                 Cavitation::SwiftStieber => sweep::sor(s, &mut self.pressure, w, true),
                 Cavitation::ElrodAdams => sweep::elrod_adams(s, &mut self.pressure, &mut self.fill, w, scale),
             };
-            let peak = match o.cavitation {
-                Cavitation::Gumbel => self.full_film.iter().fold(0.0_f64, |m, v| m.max(v.abs())),
-                _ => self.pressure.iter().fold(0.0_f64, |m, v| m.max(*v)),
-            };
+            // relative to the pressure variation over the film (an ambient level does not count)
+            let field = if o.cavitation == Cavitation::Gumbel { &self.full_film } else { &self.pressure };
+            let (low, high) = field.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(*v), h.max(*v)));
+            let peak = high - low;
             if change <= o.tolerance * peak.max(1e-9 * scale) {
                 break;
             }
