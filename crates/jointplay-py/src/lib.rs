@@ -2,6 +2,7 @@
 //! Python and [`jointplay_core`]. Errors come back as data; the Python
 //! package raises its own exception types from them.
 
+mod bearing;
 mod conv;
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -141,6 +142,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<CoreModel>()?;
     m.add_class::<CoreProgress>()?;
     m.add_function(wrap_pyfunction!(compile_model, m)?)?;
+    m.add_function(wrap_pyfunction!(bearing::reynolds_solve, m)?)?;
+    m.add_function(wrap_pyfunction!(bearing::steady_bearing, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

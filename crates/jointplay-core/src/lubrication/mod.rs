@@ -13,6 +13,7 @@ pub mod pinkus_sternlicht;
 pub mod reference_closed_forms;
 pub mod reynolds;
 pub mod squeeze_film;
+pub mod steady;
 pub mod transition;
 
 pub use film::{BearingGeometry, FilmForce, FilmKinematics};
