@@ -4,7 +4,8 @@
 use super::frame::Frame;
 use super::Model;
 use crate::force::ForceOutput;
-use crate::joint::{ContactEvaluation, FilmEvaluation, ReynoldsSolver};
+use crate::joint::{ContactEvaluation, FilmEvaluation};
+use crate::lubrication::reynolds::ReynoldsSolver;
 use crate::linalg::DenseMatrix;
 
 /// Buffers sized once for a model.
@@ -63,7 +64,7 @@ impl Workspace {
             sample: vec![0.0; 2 * n],
             contacts: vec![ContactEvaluation::default(); model.clearance_joints.len()],
             films: vec![FilmEvaluation::default(); model.clearance_joints.len()],
-            film_solvers: model.clearance_joints.iter().map(|_| None).collect(),
+            film_solvers: model.clearance_joints.iter().map(|j| j.lubrication.as_ref().and_then(|l| l.new_solver())).collect(),
             detailed: false,
             force_outputs: vec![ForceOutput::default(); model.forces.len()],
         }

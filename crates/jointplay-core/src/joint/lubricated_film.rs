@@ -10,12 +10,11 @@
 use crate::dynamics::frame::{cross, Frame, Vec2};
 use crate::lubrication::squeeze_film::SqueezeFilm;
 use crate::lubrication::transition::{LubricationRegime, TransitionLaw};
-use crate::lubrication::closed_form::ClosedFormBearing;
-use crate::lubrication::{BearingGeometry, FilmForce, FilmKinematics};
+use std::sync::Arc;
 
-/// Placeholder until the Reynolds solver lands (replaced at merge).
-#[derive(Clone, Debug)]
-pub struct ReynoldsSolver;
+use crate::lubrication::closed_form::ClosedFormBearing;
+use crate::lubrication::reynolds::{ForceTable, ReynoldsOptions, ReynoldsSolver};
+use crate::lubrication::{BearingGeometry, FilmForce, FilmKinematics};
 
 /// Every film model a joint can use.
 #[derive(Clone, Debug)]
@@ -24,6 +23,10 @@ pub enum FilmModel {
     ClosedForm(ClosedFormBearing),
     /// Squeeze film only (paper 000, after Phelan).
     SqueezeFilm(SqueezeFilm),
+    /// Finite-difference Reynolds solution at every evaluation (the solver lives in the workspace).
+    ReynoldsExact(ReynoldsOptions),
+    /// Interpolation in dimensionless force tables precomputed by the Reynolds solver.
+    ReynoldsTable(Arc<ForceTable>),
 }
 
 /// Lubricant, film model and transition law of one joint.
@@ -90,10 +93,23 @@ impl Lubrication {
         Ok(out)
     }
 
-    fn film_force(&self, kinematics: &FilmKinematics, _solver: Option<&mut ReynoldsSolver>, detailed: bool) -> Result<FilmForce, String> {
+    fn film_force(&self, kinematics: &FilmKinematics, solver: Option<&mut ReynoldsSolver>, detailed: bool) -> Result<FilmForce, String> {
         match &self.model {
             FilmModel::ClosedForm(model) => Ok(model.film_force_with(&self.geometry, kinematics, detailed)),
             FilmModel::SqueezeFilm(model) => Ok(model.film_force(kinematics)),
+            FilmModel::ReynoldsTable(table) => Ok(table.film_force(&self.geometry, kinematics)),
+            FilmModel::ReynoldsExact(_) => match solver {
+                Some(solver) => solver.solve(kinematics).map(|s| s.film_force()),
+                None => Err("the Reynolds solver of this joint is missing from the workspace".to_string()),
+            },
+        }
+    }
+
+    /// A Reynolds solver for this joint's exact mode (None for the other models).
+    pub fn new_solver(&self) -> Option<ReynoldsSolver> {
+        match &self.model {
+            FilmModel::ReynoldsExact(options) => ReynoldsSolver::new(self.geometry, *options).ok(),
+            _ => None,
         }
     }
 

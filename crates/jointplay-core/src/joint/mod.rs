@@ -12,7 +12,7 @@ mod relative_angle;
 
 pub use axial_projection::AxialProjection;
 pub use clearance_revolute::{ClearanceRevolute, ContactEvaluation};
-pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication, ReynoldsSolver};
+pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication};
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
 

@@ -1,12 +1,15 @@
 //! Building the lubricant film of a clearance joint from its description.
 
+use std::sync::{Arc, Mutex, OnceLock};
+
 use crate::error::ModelErrors;
 use crate::joint::{FilmModel, Lubrication};
 use crate::lubrication::closed_form::ClosedFormBearing;
+use crate::lubrication::reynolds::{Cavitation, ForceTable, ForceTableOptions, Groove, ReynoldsOptions, ReynoldsSolver};
 use crate::lubrication::squeeze_film::{SqueezeFilm, SqueezeFilmTheory};
 use crate::lubrication::transition::TransitionLaw;
 use crate::lubrication::BearingGeometry;
-use crate::spec::{ClearanceJointSpec, FilmModelSpec, LubricationSpec, TransitionSpec};
+use crate::spec::{CavitationSpec, ClearanceJointSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
 
 pub(super) fn build_lubrication(
     c: &ClearanceJointSpec,
@@ -36,12 +39,72 @@ pub(super) fn build_lubrication(
         FilmModelSpec::FreneShort => FilmModel::ClosedForm(ClosedFormBearing::FreneShort),
         FilmModelSpec::FreneLong => FilmModel::ClosedForm(ClosedFormBearing::FreneLong),
         FilmModelSpec::PinkusSternlichtLong => FilmModel::ClosedForm(ClosedFormBearing::PinkusSternlichtLong),
-        FilmModelSpec::ReynoldsExact | FilmModelSpec::ReynoldsTable => {
-            errors.push(format!("{loc}.model"), "the Reynolds film models are not available yet".to_string());
-            return None;
+        FilmModelSpec::ReynoldsExact => {
+            let options = reynolds_options(&spec.reynolds, &loc, errors)?;
+            // build one solver now so that a bad set-up is a model error, not a run-time failure
+            if let Err(message) = ReynoldsSolver::new(geometry, options) {
+                errors.push(format!("{loc}.reynolds"), message);
+                return None;
+            }
+            FilmModel::ReynoldsExact(options)
+        }
+        FilmModelSpec::ReynoldsTable => {
+            let options = reynolds_options(&spec.reynolds, &loc, errors)?;
+            if options.cavitation == Cavitation::ElrodAdams || options.groove.is_some() || options.ambient_pressure != 0.0 {
+                errors.push(
+                    format!("{loc}.model"),
+                    "force tables cover Gumbel and Swift-Stieber cavitation with ambient ends and no groove; use reynolds_exact".to_string(),
+                );
+                return None;
+            }
+            match cached_table(length / (2.0 * journal_radius), options) {
+                Ok(table) => FilmModel::ReynoldsTable(table),
+                Err(message) => {
+                    errors.push(format!("{loc}.reynolds"), message);
+                    return None;
+                }
+            }
         }
     };
     errors.is_empty().then_some(Lubrication { geometry, model, transition })
+}
+
+fn reynolds_options(spec: &ReynoldsSpec, loc: &str, errors: &mut ModelErrors) -> Option<ReynoldsOptions> {
+    let defaults = ReynoldsOptions::default();
+    let options = ReynoldsOptions {
+        n_circumferential: spec.n_circumferential.unwrap_or(defaults.n_circumferential),
+        n_axial: spec.n_axial.unwrap_or(defaults.n_axial),
+        cavitation: match spec.cavitation {
+            CavitationSpec::Gumbel => Cavitation::Gumbel,
+            CavitationSpec::SwiftStieber => Cavitation::SwiftStieber,
+            CavitationSpec::ElrodAdams => Cavitation::ElrodAdams,
+        },
+        ambient_pressure: spec.ambient_pressure,
+        // paper 000: the supply pressure holds on the mid-plane z = 0 (a line groove)
+        groove: spec.groove_supply_pressure.map(|p| Groove { supply_pressure: p, width: 0.0 }),
+        ..defaults
+    };
+    match options.validate() {
+        Ok(()) => Some(options),
+        Err(message) => {
+            errors.push(format!("{loc}.reynolds"), message);
+            None
+        }
+    }
+}
+
+/// Force tables already built in this process, by L/D and solver options: a
+/// parameter study compiles the same bearing many times and a table takes seconds.
+fn cached_table(length_over_diameter: f64, solver: ReynoldsOptions) -> Result<Arc<ForceTable>, String> {
+    static TABLES: OnceLock<Mutex<Vec<(f64, ReynoldsOptions, Arc<ForceTable>)>>> = OnceLock::new();
+    let tables = TABLES.get_or_init(|| Mutex::new(Vec::new()));
+    let mut tables = tables.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    if let Some((_, _, table)) = tables.iter().find(|(ratio, options, _)| *ratio == length_over_diameter && *options == solver) {
+        return Ok(Arc::clone(table));
+    }
+    let table = Arc::new(ForceTable::build(length_over_diameter, &ForceTableOptions { solver, ..Default::default() })?);
+    tables.push((length_over_diameter, solver, Arc::clone(&table)));
+    Ok(table)
 }
 
 fn build_transition(t: &TransitionSpec, geometry: &BearingGeometry, loc: &str, errors: &mut ModelErrors) -> Option<TransitionLaw> {
