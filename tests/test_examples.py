@@ -10,7 +10,8 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 def test_every_python_example_is_covered_here():
-    covered = {"flores_slider_crank_dry", "flores_slider_crank_ideal", "paper001_slider_crank_dry"}
+    covered = {"flores_slider_crank_dry", "flores_slider_crank_ideal", "paper001_slider_crank_dry",
+               "flores_slider_crank_lubricated", "paper001_parametric_study"}
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 
@@ -44,3 +45,22 @@ def test_paper001_example_runs_with_the_adams_method():
     assert results.error is None
     assert results.options["method"] == "adams"
     assert results.summary()["clearance_joints"]["B"]["impacts"] >= 1
+
+
+def test_flores_lubricated_example_compares_dry_and_lubricated(tmp_path):
+    import flores_slider_crank_lubricated as example
+
+    runs = example.main(["--out", str(tmp_path), "--revolutions", "1"])
+    assert set(runs) == {"dry", "lubricated"}
+    assert (tmp_path / "flores_dry_vs_lubricated.png").stat().st_size > 10_000
+    assert runs["lubricated"]["B.film_min"].min() > 0
+
+
+def test_paper001_study_writes_its_figures_and_table(tmp_path):
+    import paper001_parametric_study as example
+
+    study, rows = example.main(["--out", str(tmp_path), "--revolutions", "0.5"])
+    assert len(rows) == 11 and {r["series"] for r in rows} == {"clearance", "speed", "viscosity"}
+    for name in ("paper001_clearance.png", "paper001_speed.png", "paper001_viscosity.png",
+                 "paper001_film_min.csv", "paper001_film_min.md"):
+        assert (tmp_path / name).exists()

@@ -61,6 +61,10 @@ class Results:
             hint = f"; did you mean {', '.join(close)}?" if close else ""
             raise KeyError(f"no channel {name!r}{hint}") from None
 
+    def get(self, name: str, default=None):
+        """The channel's values, or ``default`` when the results have no such channel."""
+        return self[name] if name in self._index else default
+
     def unit(self, name: str) -> str:
         """SI unit of a channel."""
         return self._units[self._index[name]]
