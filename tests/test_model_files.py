@@ -244,10 +244,10 @@ def test_model_file_matches_the_python_example():
     assert loaded == built
 
 
-def test_paper001_model_file_matches_the_python_example():
-    import paper001_slider_crank_dry as example
-
-    loaded = jp.load(DRY.parent / "paper001_slider_crank_dry.toml").to_spec()
+@pytest.mark.parametrize("stem", ["paper001_slider_crank_dry", "flores_slider_crank_lubricated"])
+def test_model_file_matches_its_python_example(stem):
+    example = __import__(stem)
+    loaded = jp.load(DRY.parent / f"{stem}.toml").to_spec()
     built = example.build_model().to_spec()
     for spec in (loaded, built):
         for body in spec["bodies"]:

@@ -127,7 +127,9 @@ def lubrication(model: str, viscosity: float, transition: dict | None = None, *,
 def wang_transition(safe_film_thickness: float | None = None) -> dict:
     """Paper 001's transition: squeeze and wedge film faded out from the safe film thickness [m]
     (default 0.00015 of the diameter) to contact."""
-    return {"law": "wang_improved", "safe_film_thickness": safe_film_thickness}
+    if safe_film_thickness is None:
+        return {"law": "wang_improved"}
+    return {"law": "wang_improved", "safe_film_thickness": float(safe_film_thickness)}
 
 
 def flores_transition(lubricated_limit: float = 0.95) -> dict:
