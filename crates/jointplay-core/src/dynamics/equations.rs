@@ -64,31 +64,26 @@ pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, 
 /// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's bodies.
 pub(crate) fn jacobian_times(model: &Model, rows: usize, ws: &Workspace, v: &[f64], out: &mut [f64]) {
     let (jacobian, cols) = (ws.jacobian.as_slice(), ws.jacobian.cols());
-    for r in 0..rows {
+    for (r, (o, bodies)) in out[..rows].iter_mut().zip(&model.row_bodies).enumerate() {
         let mut s = 0.0;
-        for &c in &model.row_bodies[r] {
-            if c != usize::MAX {
-                let j = &jacobian[r * cols + c..r * cols + c + 3];
-                s += j[0] * v[c] + j[1] * v[c + 1] + j[2] * v[c + 2];
-            }
+        for &c in bodies.iter().filter(|&&c| c != usize::MAX) {
+            let (j, x) = (&jacobian[r * cols + c..r * cols + c + 3], &v[c..c + 3]);
+            s += j[0] * x[0] + j[1] * x[1] + j[2] * x[2];
         }
-        out[r] = s;
+        *o = s;
     }
 }
 
 /// `out = Phi_q^T w` over the first `rows` rows, touching only each row's bodies.
 pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &crate::linalg::DenseMatrix, w: &[f64], out: &mut [f64]) {
-    let cols = jacobian.cols();
-    let data = jacobian.as_slice();
+    let (data, cols) = (jacobian.as_slice(), jacobian.cols());
     out.fill(0.0);
-    for r in 0..rows {
-        for &c in &model.row_bodies[r] {
-            if c != usize::MAX {
-                let j = &data[r * cols + c..r * cols + c + 3];
-                out[c] += j[0] * w[r];
-                out[c + 1] += j[1] * w[r];
-                out[c + 2] += j[2] * w[r];
-            }
+    for (r, (&wr, bodies)) in w[..rows].iter().zip(&model.row_bodies).enumerate() {
+        for &c in bodies.iter().filter(|&&c| c != usize::MAX) {
+            let (j, o) = (&data[r * cols + c..r * cols + c + 3], &mut out[c..c + 3]);
+            o[0] += j[0] * wr;
+            o[1] += j[1] * wr;
+            o[2] += j[2] * wr;
         }
     }
 }

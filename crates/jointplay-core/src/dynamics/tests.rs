@@ -242,3 +242,4 @@ fn compile_reports_every_problem_with_its_location() {
 }
 
 
+
