@@ -115,3 +115,21 @@ def test_laws_reach_the_core():
     m.joint("B")["stiffness"] = laws.johnson_line()
     results = flores.simulate(m, revolutions=0.3)
     assert results.summary()["clearance_joints"]["B"]["impacts"] >= 1
+
+
+def test_a_long_simulation_releases_the_gil():
+    # while the core runs in another thread, this thread must keep executing Python; with the
+    # GIL held it would be frozen for the whole run and count nothing
+    import threading
+
+    model = flores.build_model()
+    model.joint("B")["lubrication"] = laws.lubrication("reynolds_exact", laws.centipoise(400))
+    model.compile()
+    done = threading.Event()
+    worker = threading.Thread(target=lambda: (flores.simulate(model, revolutions=0.05), done.set()))
+    worker.start()
+    counted = 0
+    while not done.is_set():
+        counted += 1
+    worker.join()
+    assert counted > 10_000

@@ -56,14 +56,17 @@ def guess_crank(results: Results) -> str | None:
 
 
 def default_channels(results: Results) -> list[str]:
-    """Key channels: slider accelerations, clearance-joint contact forces and eccentricity ratios,
-    ideal joint reactions, driver efforts (at most eight)."""
+    """Key channels: slider accelerations, clearance-joint contact forces and eccentricity ratios (with the
+    film force and minimum film thickness of a lubricated joint), ideal joint reactions, driver efforts
+    (at most eight)."""
     spec = results.spec or {}
     chosen: list[str] = []
     for joint in spec.get("joints", []):
         if joint["type"] == "translational":
             chosen.append(f"{joint['second'].split('.')[0]}.ax")
     for joint in clearance_joints(results):
+        if f"{joint}.fh" in results:
+            chosen += [f"{joint}.fh", f"{joint}.film_min"]
         chosen += [f"{joint}.fn", f"{joint}.eccentricity_ratio"]
     chosen += [f"{j['name']}.f" for j in spec.get("joints", []) if j["type"] != "clearance_revolute"]
     for driver in spec.get("drivers", []):
