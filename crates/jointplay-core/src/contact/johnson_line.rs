@@ -88,47 +88,12 @@ mod tests {
     }
 
     #[test]
-    fn test_round_trip_force_to_penetration_from_1e_minus_3_to_1e6_newton() {
+    fn test_round_trip_monotonicity_and_energy() {
+        use super::super::implicit_law_checks::{assert_energy_matches_trapezoid, assert_monotone, assert_round_trip};
         let law = example();
-        assert!(law.limit_force() > 1e6);
-        for step in 0..=90 {
-            let force = 10f64.powf(-3.0 + step as f64 / 10.0);
-            let back = law.elastic_force(law.penetration(force));
-            assert!((back / force - 1.0).abs() < 1e-10, "F = {force}: got {back}");
-        }
-    }
-
-    #[test]
-    fn test_force_is_monotone_in_penetration() {
-        let law = example();
-        let top = 2.0 * law.penetration(law.limit_force());
-        let mut previous = 0.0;
-        for step in 1..=2000 {
-            let force = law.elastic_force(top * step as f64 / 2000.0);
-            assert!(force > previous, "not increasing at step {step}");
-            previous = force;
-        }
-    }
-
-    #[test]
-    fn test_energy_matches_trapezoid_integration() {
-        let law = example();
-        for penetration in
-            [law.penetration(10.0), law.penetration(1e5), 1.5 * law.penetration(law.limit_force())]
-        {
-            let intervals = 200_000;
-            let width = penetration / intervals as f64;
-            let mut integral = 0.5 * law.elastic_force(penetration);
-            for k in 1..intervals {
-                integral += law.elastic_force(k as f64 * width);
-            }
-            integral *= width;
-            let energy = law.elastic_energy(penetration);
-            assert!(
-                (energy / integral - 1.0).abs() < 1e-6,
-                "δ = {penetration}: {energy} vs {integral}"
-            );
-        }
+        assert_round_trip(&law);
+        assert_monotone(&law);
+        assert_energy_matches_trapezoid(&law);
     }
 
     #[test]

@@ -21,6 +21,8 @@ mod rogers_andrews;
 
 #[cfg(test)]
 mod impact_test;
+#[cfg(test)]
+mod implicit_law_checks;
 
 pub use hertz_cylinder::HertzCylinder;
 pub use johnson_line::JohnsonLine;

@@ -13,7 +13,7 @@
 //! After a (re)start the order ramps from 1 up to [`MAX_ORDER`] as history
 //! accumulates; two rejections in a row drop the history back to order 1.
 
-use super::control::{error_norm, eval, starting_step, StartScratch, StepController};
+use super::control::{error_norm, eval, eval_start, starting_step, StartScratch, StepController};
 use super::polynomial::{integral, lagrange_basis, node_product_integral, Poly, MAX_NODES};
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
@@ -134,10 +134,7 @@ impl Stepper for Adams {
         h_hint: Option<f64>,
     ) -> Result<f64, SimulationError> {
         // history restarts from the single derivative at (t, y): order 1
-        eval(system, stats, t, y, &mut self.history_f[0])?;
-        if !self.history_f[0].iter().all(|v| v.is_finite()) {
-            return Err(SimulationError::NonFinite { time: t, element: "state derivative".to_string() });
-        }
+        eval_start(system, stats, t, y, &mut self.history_f[0])?;
         self.history_t[0] = t;
         self.history_len = 1;
         self.rejections_in_a_row = 0;

@@ -22,6 +22,21 @@ pub(crate) fn eval<S: OdeSystem>(
     system.rhs(t, y, dydt)
 }
 
+/// Evaluates the derivative at a (re)start point, which must be finite: a restart cannot shrink a step.
+pub(crate) fn eval_start<S: OdeSystem>(
+    system: &mut S,
+    stats: &mut Statistics,
+    t: f64,
+    y: &[f64],
+    dydt: &mut [f64],
+) -> Result<(), SimulationError> {
+    eval(system, stats, t, y, dydt)?;
+    if !dydt.iter().all(|v| v.is_finite()) {
+        return Err(SimulationError::NonFinite { time: t, element: "state derivative".to_string() });
+    }
+    Ok(())
+}
+
 /// RMS of `scale * err_i / (atol + rtol * max(|y_old_i|, |y_new_i|))`; 0 for an empty state.
 pub(crate) fn error_norm(scale: f64, err: &[f64], y_old: &[f64], y_new: &[f64], opts: &IntegratorOptions) -> f64 {
     if err.is_empty() {

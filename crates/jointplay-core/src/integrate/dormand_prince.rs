@@ -7,7 +7,7 @@
 //! Hairer, Nørsett & Wanner, Solving ODEs I, 2nd ed., Table II.5.2 and
 //! Section II.6 (Shampine 1986), checked against the published `dopri5` code.
 
-use super::control::{error_norm, eval, starting_step, StartScratch, StepController};
+use super::control::{error_norm, eval, eval_start, starting_step, StartScratch, StepController};
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
 
@@ -142,10 +142,7 @@ impl Stepper for DormandPrince {
         h_hint: Option<f64>,
     ) -> Result<f64, SimulationError> {
         // derivative at the (new) initial state
-        eval(system, stats, t, y, &mut self.k[0])?;
-        if !self.k[0].iter().all(|v| v.is_finite()) {
-            return Err(SimulationError::NonFinite { time: t, element: "state derivative".to_string() });
-        }
+        eval_start(system, stats, t, y, &mut self.k[0])?;
         self.control.reset();
         match h_hint {
             Some(h) => Ok(h),
