@@ -103,7 +103,7 @@ def minimum_film_table(study) -> list[dict]:
                          "viscosity_cP": case.viscosity_cp, "film_min_um": film[k] * 1e6,
                          "film_min_over_clearance": film[k] / case.clearance,
                          "crank_angle_deg": np.degrees(results["crank.angle"][k]) % 360.0,
-                         "peak_force_N": float(np.max(results["B.fh"] + results["B.f"])),
+                         "peak_force_N": float(np.max(results["B.f"])),
                          "contact_fraction": results.summary()["clearance_joints"]["B"]["contact_fraction"]})
     return rows
 
@@ -120,7 +120,7 @@ def write_figures(study, out: Path) -> list[Path]:
         for case, results in runs:
             angle = np.degrees(results["crank.angle"])
             axes[0].plot(angle, results["slider.ax"], lw=0.8, label=case.label)
-            axes[1].plot(angle, results["B.fh"] + results["B.f"], lw=0.8)
+            axes[1].plot(angle, results["B.f"], lw=0.8)
             axes[2].plot(angle, results["B.film_min"] * 1e6, lw=0.8)
         axes[0].set_ylabel("slider acceleration [m/s^2]")
         axes[1].set_ylabel("joint reaction force [N]")
