@@ -247,10 +247,14 @@ def print_summary(results) -> None:
         peaks.add_row(name, _fmt(value, results.unit(name)))
     out.print(peaks)
     if s["clearance_joints"]:
-        t = Table("clearance joint", "impacts", "time in contact", "max penetration")
+        lubricated = any("min_film" in c for c in s["clearance_joints"].values())
+        columns = ("clearance joint", "impacts", "time in contact", "max penetration")
+        t = Table(*columns, *(("min film", "peak film pressure") if lubricated else ()))
         for name, c in s["clearance_joints"].items():
-            t.add_row(name, str(c["impacts"]), f"{100 * c['contact_fraction']:.1f} %",
-                      f"{c['max_penetration'] * 1e6:.3g} um")
+            cells = [name, str(c["impacts"]), f"{100 * c['contact_fraction']:.1f} %", f"{c['max_penetration'] * 1e6:.3g} um"]
+            if lubricated:
+                cells += [f"{c['min_film'] * 1e6:.3g} um", _fmt(c["peak_film_pressure"], "Pa")] if "min_film" in c else ["-", "-"]
+            t.add_row(*cells)
         out.print(t)
     st = s["statistics"]
     t = Table("integrator", "value")

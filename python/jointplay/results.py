@@ -161,6 +161,9 @@ class Results:
                 "contact_fraction": contact_fraction(self.time, flag),
                 "max_penetration": float(np.max(self[f"{element}.penetration"])) if self.time.size else 0.0,
             }
+            if f"{element}.film_min" in self._index and self.time.size:
+                contact[element]["min_film"] = float(np.min(self[f"{element}.film_min"]))
+                contact[element]["peak_film_pressure"] = float(np.max(self[f"{element}.peak_pressure"]))
         out["clearance_joints"] = contact
         out["point_accelerations"] = {}
         for body in (self.spec or {}).get("bodies", []) if self.time.size else []:
