@@ -11,7 +11,8 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 def test_every_python_example_is_covered_here():
     covered = {"flores_slider_crank_dry", "flores_slider_crank_ideal", "paper001_slider_crank_dry",
-               "flores_slider_crank_lubricated", "paper001_parametric_study"}
+               "flores_slider_crank_lubricated", "paper001_parametric_study",
+               "paper000_joint_models"}  # the last has its own tests/test_paper000_example.py
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 
