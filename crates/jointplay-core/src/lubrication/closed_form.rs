@@ -48,14 +48,14 @@ impl ClosedFormBearing {
     }
 
     /// As [`Self::film_force`]; without `with_peak` the short-bearing models skip the numerical
-    /// search for the peak pressure (reported as NaN), which costs more than the force itself.
+    /// search for the peak pressure and the long-bearing models its evaluation (reported as NaN).
     pub fn film_force_with(&self, geometry: &BearingGeometry, kinematics: &FilmKinematics, with_peak: bool) -> FilmForce {
         match self {
             ClosedFormBearing::HamrockShort => hamrock::short_film_force_with(geometry, kinematics, with_peak),
-            ClosedFormBearing::HamrockLong => hamrock::long_film_force(geometry, kinematics),
+            ClosedFormBearing::HamrockLong => hamrock::long_film_force_with(geometry, kinematics, with_peak),
             ClosedFormBearing::FreneShort => frene::short_film_force_with(geometry, kinematics, with_peak),
-            ClosedFormBearing::FreneLong => frene::long_film_force(geometry, kinematics),
-            ClosedFormBearing::PinkusSternlichtLong => pinkus_sternlicht::long_film_force(geometry, kinematics),
+            ClosedFormBearing::FreneLong => frene::long_film_force_with(geometry, kinematics, with_peak),
+            ClosedFormBearing::PinkusSternlichtLong => pinkus_sternlicht::long_film_force_with(geometry, kinematics, with_peak),
         }
     }
 
@@ -102,13 +102,27 @@ pub fn short_film_over_with(geometry: &BearingGeometry, kinematics: &FilmKinemat
 
 /// Long-bearing film over `[a, b]` with numerator constant `k` (see the module doc) [N, Pa, rad, N m].
 pub fn long_film_over(geometry: &BearingGeometry, kinematics: &FilmKinematics, state: &LineOfCentres, a: f64, b: f64, k: f64) -> FilmForce {
+    let m = FilmMoments::over(state.eccentricity_ratio, a, b);
+    long_film_with_moments(geometry, kinematics, state, (a, b), &m, k, true)
+}
+
+/// As [`long_film_over`] with the film moments over `[a, b]` already computed; without
+/// `with_peak` the peak pressure is NaN (it costs two more moment evaluations).
+pub fn long_film_with_moments(
+    geometry: &BearingGeometry,
+    kinematics: &FilmKinematics,
+    state: &LineOfCentres,
+    (a, b): (f64, f64),
+    m: &FilmMoments,
+    k: f64,
+    with_peak: bool,
+) -> FilmForce {
     let BearingGeometry { radius: r, length: l, clearance: c, viscosity: mu } = *geometry;
-    let (eps, sq, wd) = (state.eccentricity_ratio, state.squeeze_rate, state.wedge_rate);
-    let m = FilmMoments::over(eps, a, b);
+    let (sq, wd) = (state.squeeze_rate, state.wedge_rate);
     let scale = 6.0 * mu * r.powi(3) * l / (c * c);
     let f_n = scale * (-wd * m.sin_cos - 2.0 * sq * m.sin_sin + k * m.sin);
     let f_t = -scale * (-wd * m.cos_cos - 2.0 * sq * m.sin_cos + k * m.cos);
-    let (phi_peak, peak) = long_peak(geometry, state, a, b, k);
+    let (phi_peak, peak) = if with_peak { long_peak(geometry, state, a, b, k) } else { (f64::NAN, f64::NAN) };
     finish(geometry, kinematics, state, f_n, f_t, phi_peak, peak)
 }
 

@@ -17,9 +17,9 @@
 //! Negative gauge pressures are kept: the model holds for a submerged or
 //! pressurised bearing. See docs/theory/bearing-frene.md.
 
-use crate::lubrication::closed_form::{long_film_over, short_film_over_with};
+use crate::lubrication::closed_form::{long_film_with_moments, short_film_over_with};
 use crate::lubrication::film::{BearingGeometry, FilmForce, FilmKinematics};
-use crate::lubrication::line_of_centres::LineOfCentres;
+use crate::lubrication::line_of_centres::{FilmMoments, LineOfCentres};
 use std::f64::consts::PI;
 
 /// Short bearing, full film [N, Pa, rad, N m].
@@ -35,8 +35,14 @@ pub fn short_film_force_with(geometry: &BearingGeometry, kinematics: &FilmKinema
 
 /// Long bearing, full film, ambient pressure at the thickest film [N, Pa, rad, N m].
 pub fn long_film_force(geometry: &BearingGeometry, kinematics: &FilmKinematics) -> FilmForce {
+    long_film_force_with(geometry, kinematics, true)
+}
+
+/// As [`long_film_force`]; without `with_peak` the peak pressure is NaN.
+pub fn long_film_force_with(geometry: &BearingGeometry, kinematics: &FilmKinematics, with_peak: bool) -> FilmForce {
     let state = LineOfCentres::new(geometry, kinematics);
-    long_film_over(geometry, kinematics, &state, -PI, PI, sommerfeld_constant(&state))
+    let m = FilmMoments::over(state.eccentricity_ratio, -PI, PI);
+    long_film_with_moments(geometry, kinematics, &state, (-PI, PI), &m, sommerfeld_constant(&state), with_peak)
 }
 
 /// Sommerfeld's constant of the long-bearing numerator, from periodicity of

@@ -22,7 +22,7 @@
 //! (`pi/2 - 8/(pi (2+eps^2))` squeeze term), which are exact only for pure
 //! wedge. See docs/theory/bearing-hamrock.md.
 
-use crate::lubrication::closed_form::{long_film_over, moving_half_film, short_film_over_with};
+use crate::lubrication::closed_form::{long_film_with_moments, moving_half_film, short_film_over_with};
 use crate::lubrication::film::{BearingGeometry, FilmForce, FilmKinematics};
 use crate::lubrication::line_of_centres::{FilmMoments, LineOfCentres};
 
@@ -42,9 +42,19 @@ pub fn short_film_force_with(geometry: &BearingGeometry, kinematics: &FilmKinema
 
 /// Long bearing, pi film with `p = 0` at both ends of the moving half [N, Pa, rad, N m].
 pub fn long_film_force(geometry: &BearingGeometry, kinematics: &FilmKinematics) -> FilmForce {
+    long_film_force_with(geometry, kinematics, true)
+}
+
+/// As [`long_film_force`]; without `with_peak` the peak pressure is NaN.
+pub fn long_film_force_with(geometry: &BearingGeometry, kinematics: &FilmKinematics, with_peak: bool) -> FilmForce {
     let state = LineOfCentres::new(geometry, kinematics);
     match moving_half_film(&state) {
-        Some((a, b)) => long_film_over(geometry, kinematics, &state, a, b, pi_film_constant(&state, a, b)),
+        Some((a, b)) => {
+            // one evaluation of the film moments serves the constant K and the force
+            let m = FilmMoments::over(state.eccentricity_ratio, a, b);
+            let k = pi_film_constant_from(&state, &m);
+            long_film_with_moments(geometry, kinematics, &state, (a, b), &m, k, with_peak)
+        }
         None => at_rest(geometry, kinematics, &state),
     }
 }
@@ -52,7 +62,11 @@ pub fn long_film_force(geometry: &BearingGeometry, kinematics: &FilmKinematics) 
 /// Constant `K` of the long-bearing numerator that gives `p(a) = p(b) = 0`:
 /// `int N / D^3 = 0` over `[a, b]` [1/s].
 pub fn pi_film_constant(state: &LineOfCentres, a: f64, b: f64) -> f64 {
-    let m = FilmMoments::over(state.eccentricity_ratio, a, b);
+    pi_film_constant_from(state, &FilmMoments::over(state.eccentricity_ratio, a, b))
+}
+
+/// [`pi_film_constant`] from the film moments over the film.
+fn pi_film_constant_from(state: &LineOfCentres, m: &FilmMoments) -> f64 {
     (state.wedge_rate * m.cos + 2.0 * state.squeeze_rate * m.sin) / m.one
 }
 

@@ -20,17 +20,25 @@
 //! the whole film), and its force is not continuous there for oblique
 //! motion (unlike the Hamrock and Frêne models). See docs/theory/bearing-pinkus-sternlicht.md.
 
-use crate::lubrication::closed_form::{friction_torque, long_film_over};
+use crate::lubrication::closed_form::{friction_torque, long_film_with_moments};
 use crate::lubrication::film::{BearingGeometry, FilmForce, FilmKinematics};
 use crate::lubrication::frene::sommerfeld_constant;
-use crate::lubrication::line_of_centres::LineOfCentres;
+use crate::lubrication::line_of_centres::{FilmMoments, LineOfCentres};
 use std::f64::consts::PI;
 
 /// Long bearing, positive part of the Sommerfeld pressure [N, Pa, rad, N m].
 pub fn long_film_force(geometry: &BearingGeometry, kinematics: &FilmKinematics) -> FilmForce {
+    long_film_force_with(geometry, kinematics, true)
+}
+
+/// As [`long_film_force`]; without `with_peak` the peak pressure is NaN.
+pub fn long_film_force_with(geometry: &BearingGeometry, kinematics: &FilmKinematics, with_peak: bool) -> FilmForce {
     let state = LineOfCentres::new(geometry, kinematics);
     match positive_film(&state) {
-        Some((a, b)) => long_film_over(geometry, kinematics, &state, a, b, sommerfeld_constant(&state)),
+        Some((a, b)) => {
+            let m = FilmMoments::over(state.eccentricity_ratio, a, b);
+            long_film_with_moments(geometry, kinematics, &state, (a, b), &m, sommerfeld_constant(&state), with_peak)
+        }
         None => FilmForce { friction_torque: friction_torque(geometry, kinematics, &state, 0.0), ..FilmForce::default() },
     }
 }
