@@ -59,15 +59,15 @@ class FilmParameters:
     """Lubricant and transition, SI units."""
 
     viscosity: float = 0.400  # mu [Pa s] (400 cP)
-    # h_safe [m]; None -> 0.00015 * D with D the JOURNAL diameter 2 (R_b - c),
-    # which is what the engine uses (19 mm -> 2.85 um for the Flores joint).
+    # h_safe [m]; None -> 0.00015 * D with D the bearing (bore) diameter 2 R_b,
+    # as paper 001's rule reads (20 mm -> 3 um for the Flores joint).
     safe_film_thickness: Optional[float] = None
     film_torque: bool = True  # apply the shear torque T_j on the rod
 
     def h_safe(self, p: FloresParameters) -> float:
         if self.safe_film_thickness is not None:
             return float(self.safe_film_thickness)
-        return SAFE_FILM_PER_DIAMETER * 2.0 * p.journal_radius
+        return SAFE_FILM_PER_DIAMETER * 2.0 * p.bearing_radius
 
     def lubricated_limit(self, p: FloresParameters) -> float:
         """eps0 = 1 - h_safe / c."""

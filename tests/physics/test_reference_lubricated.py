@@ -123,10 +123,10 @@ def test_torque_is_petroff_at_the_centre_and_the_journal_spin_is_resisted():
 
 def test_transition_weight_and_safe_film_of_the_flores_joint():
     p, f = FloresParameters(), rl.FilmParameters()
-    # engine convention: D is the journal diameter (2 x 9.5 mm) -> h_safe 2.85 um
-    assert f.h_safe(p) == pytest.approx(2.85e-6, rel=1e-12)
+    # paper 001's rule: D is the bearing (bore) diameter, 20 mm -> h_safe 3 um
+    assert f.h_safe(p) == pytest.approx(3.0e-6, rel=1e-12)
     eps0 = f.lubricated_limit(p)
-    assert eps0 == pytest.approx(1 - 2.85e-6 / 0.5e-3, rel=1e-12)
+    assert eps0 == pytest.approx(1 - 3.0e-6 / 0.5e-3, rel=1e-12)
     assert rl.film_weight(eps0, eps0) == 1.0
     assert rl.film_weight(1.0, eps0) == 0.0
     assert rl.film_weight(0.5 * (1 + eps0), eps0) == pytest.approx(0.5, abs=1e-12)

@@ -79,9 +79,10 @@ impl TransitionLaw {
         TransitionLaw::Flores { lubricated_limit: FLORES_DEFAULT_LUBRICATED_LIMIT }
     }
 
-    /// Paper 001's law with the safe film thickness of this bearing (`0.00015 D`).
+    /// Paper 001's law with the safe film thickness of this bearing (`0.00015 D`, `D` the bearing
+    /// (bore) diameter `2 (R + c)`, `R` being the journal radius of the film geometry).
     pub fn wang_improved(geometry: &BearingGeometry) -> Self {
-        TransitionLaw::WangImproved { safe_film_thickness: safe_film_thickness(2.0 * geometry.radius) }
+        TransitionLaw::WangImproved { safe_film_thickness: safe_film_thickness(2.0 * (geometry.radius + geometry.clearance)) }
     }
 
     /// Eccentricity ratio `eps0` below which only the film acts [-].
@@ -151,12 +152,12 @@ mod tests {
     use super::*;
 
     fn geometry() -> BearingGeometry {
-        BearingGeometry { radius: 0.01, length: 0.02, clearance: 0.5e-3, viscosity: 0.4 }
+        BearingGeometry { radius: 0.0095, length: 0.02, clearance: 0.5e-3, viscosity: 0.4 }
     }
 
     #[test]
     fn test_safe_film_thickness_rule_gives_paper_001_threshold() {
-        // D = 20 mm: h_safe = 3 um, eps0 = 1 - 3e-6/5e-4 = 0.994
+        // journal radius 9.5 mm in a 10 mm bore, D = 20 mm: h_safe = 3 um, eps0 = 1 - 3e-6/5e-4 = 0.994
         let law = TransitionLaw::wang_improved(&geometry());
         assert!((safe_film_thickness(0.02) - 3.0e-6).abs() < 1e-18);
         assert!((law.lubricated_limit(&geometry()) - 0.994).abs() < 1e-12);
