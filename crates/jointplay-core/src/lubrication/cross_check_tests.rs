@@ -211,12 +211,13 @@ fn long_full_film_and_pinkus_sternlicht_match_the_solver_at_the_midplane() {
 /// Hamrock's long bearing (and the long squeeze film, its pure-squeeze case)
 /// puts the pi film on the half where the Reynolds source is negative, with
 /// `p = 0` at both ends. That is where the short-bearing Gümbel pressure is
-/// positive, but not the long one: there the full-film pressure
-/// `(6 mu R^2/c^2)[eps_dot / (eps D^2) + ...] + C` changes sign elsewhere
-/// (for the finite bearing with ambient ends, `C` makes the `h^3`-weighted mean zero).
-/// `C = 1/(1 + 3 eps^2/2)` for pure squeeze: its positive part, integrated
-/// analytically, is +13.77 % (approach) and -56.65 % (recess) off the model
-/// at eps = 0.5, as the solver finds (+13.78 %, -56.66 %).
+/// positive, but not the long one: under pure squeeze the full-film long
+/// pressure is `(6 mu R^2/c^2)(eps_dot/eps)(1/D^2 - C)`, with
+/// `C = 1/(1 + 3 eps^2/2)` for a bearing with ambient ends (the `h^3`-weighted
+/// mean of the mid-plane pressure vanishes), so it changes sign elsewhere than
+/// at the ends of the half. Its positive part, integrated analytically, is
+/// +13.77 % (approach) and -56.65 % (recess) off the model at eps = 0.5, as
+/// the solver finds (+13.78 %, -56.66 %).
 /// The model is the Gümbel long bearing for pure wedge only (tolerance as
 /// above; observed -0.02 %); with squeeze it is off by 10 to 57 %. Pinned
 /// here so that a change of either side is noticed; see
