@@ -349,6 +349,9 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
         out.print(f"wrote {path}")
 
 
+from . import cli_bearing  # noqa: E402,F401  (registers `jointplay bearing`; imports `app` from here)
+
+
 def main() -> None:
     """Entry point of the ``jointplay`` script."""
     app()

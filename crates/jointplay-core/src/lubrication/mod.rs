@@ -17,3 +17,6 @@ pub mod steady;
 pub mod transition;
 
 pub use film::{BearingGeometry, FilmForce, FilmKinematics};
+
+#[cfg(test)]
+mod cross_check_tests;
