@@ -2,9 +2,10 @@
 400 cP, next to the dry joint.
 
 Same mechanism as ``flores_slider_crank_dry.py`` (5000 rpm, radial clearance
-0.5 mm, bore radius 10 mm, length 40 mm, so L/D = 2). The film is Hamrock's
-infinitely long bearing with the moving Gümbel region (chosen for L/D = 2;
-``--film`` picks another model, e.g. ``reynolds_table``), handed over to
+0.5 mm, bore radius 10 mm, length 40 mm, so L/D = 2). The film is the
+Pinkus-Sternlicht infinitely long bearing (chosen for L/D = 2; it agrees with
+the Reynolds solver in mixed squeeze and wedge motion; ``--film`` picks
+another model, e.g. ``reynolds_table``), handed over to
 the dry contact of the dry example by paper 001's transition law from the
 safe film thickness (0.00015 D) to contact. Two crank revolutions; prints
 peak slider acceleration, peak joint force and minimum film thickness of
@@ -28,7 +29,7 @@ from jointplay import laws
 VISCOSITY = laws.centipoise(400.0)  # Pa s
 
 
-def build_model(film: str = "hamrock_long", viscosity: float = VISCOSITY) -> jp.Model:
+def build_model(film: str = "pinkus_sternlicht_long", viscosity: float = VISCOSITY) -> jp.Model:
     """The Flores slider-crank with joint B lubricated by ``film`` at ``viscosity`` [Pa s]."""
     model = build_dry_model()
     model.joint("B")["lubrication"] = laws.lubrication(film, viscosity)
@@ -41,7 +42,7 @@ def joint_force(results: jp.Results) -> np.ndarray:
     return results["B.f"]
 
 
-def compare(revolutions: float = 2.0, film: str = "hamrock_long") -> dict[str, jp.Results]:
+def compare(revolutions: float = 2.0, film: str = "pinkus_sternlicht_long") -> dict[str, jp.Results]:
     """Dry and lubricated runs on one output grid (720 samples per revolution)."""
     grid = revolutions_to_time(1.0) / 720
     return {"dry": simulate(build_dry_model(), revolutions, output_step=grid),
@@ -77,7 +78,7 @@ def write_figure(runs: dict[str, jp.Results], path: Path) -> Path:
 def main(argv: list[str] | None = None) -> dict[str, jp.Results]:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=None, help="folder for the figure and the NetCDF files")
-    parser.add_argument("--film", default="hamrock_long", choices=laws.FILM_MODELS)
+    parser.add_argument("--film", default="pinkus_sternlicht_long", choices=laws.FILM_MODELS)
     parser.add_argument("--revolutions", type=float, default=2.0)
     args = parser.parse_args(argv)
     runs = compare(args.revolutions, args.film)

@@ -13,8 +13,9 @@ film thickness per case (Markdown and CSV).
 
 CHOSEN here (paper 001's joint table did not survive): the geometry of the
 dry example (bearing radius 10 mm, length 40 mm, so L/D = 2, a long
-bearing); the film model of Hamrock for the infinitely long bearing with the
-moving Gümbel region; paper 001's transition to contact from the safe film
+bearing); the Pinkus-Sternlicht infinitely long bearing (the positive part
+of the Sommerfeld pressure), which agrees with the finite-difference Reynolds
+solver in mixed squeeze and wedge motion (docs/theory/lubrication-validation.md); paper 001's transition to contact from the safe film
 thickness 0.00015 D; the dry contact and friction laws of the dry example;
 no gravity (the paper states none, and its trends concern the inertial
 loading: with gravity along -y the rod's weight dominates the joint load at
@@ -40,7 +41,7 @@ from jointplay import functions as fn
 from jointplay import laws
 from paper001_slider_crank_dry import build_model as build_dry_model
 
-FILM_MODEL = "hamrock_long"  # chosen: L/D = 2
+FILM_MODEL = "pinkus_sternlicht_long"  # chosen: L/D = 2; checked against the Reynolds solver in mixed squeeze and wedge
 
 
 @dataclass(frozen=True)
