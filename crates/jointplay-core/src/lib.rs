@@ -23,6 +23,8 @@
 //! [`dynamics::State`] with a reusable [`dynamics::Workspace`] and returns a
 //! [`dynamics::Trajectory`] of named channels in SI units.
 #![warn(missing_docs)]
+// units are written in brackets, `[m]`, `[N]`: they are not links
+#![allow(rustdoc::broken_intra_doc_links)]
 
 pub mod contact;
 pub mod dynamics;
