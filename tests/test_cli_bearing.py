@@ -91,7 +91,8 @@ def test_chart_and_pressure_figures_are_written(tmp_path):
 
 @pytest.mark.parametrize("args, message", [
     (["--l-over-d", "1"],
-     "error: --eccentricity, --load: give one of them (the operating point by eccentricity ratio or by load)"),
+     "error: --eccentricity, --load: give one of them (the operating point by eccentricity ratio or by load), "
+     "or only --chart"),
     (["--l-over-d", "1", "-e", "0.5", "--load", "2 kN", *GEOMETRY],
      "error: --eccentricity, --load: give one of them, not both"),
     (["--l-over-d", "1", "--load", "2 kg", *GEOMETRY],
@@ -128,3 +129,11 @@ def test_every_problem_is_reported_at_once():
         "e.g. 120x16, got '12x7'",
     ]
     assert no_traceback(result)
+
+
+def test_chart_alone_needs_no_operating_point(tmp_path):
+    chart = tmp_path / "chart.png"
+    result = invoke("--l-over-d", "1", "--chart", str(chart), "--grid", "48x8")
+    assert result.exit_code == 0, result.output
+    assert chart.stat().st_size > 10_000 and f"wrote {chart}" in result.output
+

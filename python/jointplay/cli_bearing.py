@@ -144,8 +144,9 @@ def _read(l_over_d, eccentricity, load, radius, diameter, clearance, viscosity, 
     mu = _quantity("--viscosity", viscosity, "viscosity", problems)
     omega = _quantity("--speed", speed, "angular velocity", problems)
     n = None if omega is None else omega / (2.0 * math.pi)
-    if eccentricity is None and load is None:
-        problems.append("--eccentricity, --load: give one of them (the operating point by eccentricity ratio or by load)")
+    if eccentricity is None and load is None and chart is None:
+        problems.append("--eccentricity, --load: give one of them (the operating point by eccentricity ratio or by "
+                        "load), or only --chart")
     elif eccentricity is not None and load is not None:
         problems.append("--eccentricity, --load: give one of them, not both")
     given = {"--radius (or --diameter)": radius or diameter, "--clearance": clearance, "--viscosity": viscosity,
@@ -252,6 +253,10 @@ def bearing(
 ) -> None:
     inputs = _read(l_over_d, eccentricity, load, radius, diameter, clearance, viscosity, speed, grid, chart, pressure)
     n_t, n_a = inputs.grid
+    if inputs.eccentricity_ratio is None and inputs.load is None:  # the chart alone
+        _bearing.chart(inputs.length_over_diameter, chart, n_circumferential=n_t, n_axial=n_a)
+        out.print(f"wrote {chart}")
+        return
     geometry = {k: v for k, v in inputs.geometry().items() if v is not None}
     try:
         point = _bearing.steady(inputs.length_over_diameter, eccentricity_ratio=inputs.eccentricity_ratio,
