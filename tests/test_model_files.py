@@ -315,3 +315,32 @@ def test_random_mutations_give_a_model_or_a_model_error(doc):
         return
     info = model.check()
     assert math.isfinite(float(np.sum(info["initial_coordinates"])))
+
+
+LUBRICATED = DRY.parent / "flores_slider_crank_lubricated.toml"
+LUBRICATION_LINE = ('lubrication = { model = "pinkus_sternlicht_long", viscosity = "400 cP", '
+                    'transition = { law = "wang_improved" } }')
+
+
+@pytest.mark.parametrize("replacement, messages", [
+    ('lubrication = { model = "hamrock_short", viscosity = "5 kg", transition = { law = "flores", lubricated_limit = 1.5 } }',
+     ["joints.B.lubrication.viscosity: must be a viscosity (e.g. \"400 cP\"), got '5 kg', which is a mass",
+      "joints.B.lubrication.transition.lubricated_limit:"]),
+    ('lubrication = { model = "hamrok_long", viscosity = "400 cP" }',
+     ['joints.B.lubrication.model: must be one of', '(did you mean "hamrock_long"?)']),
+    ('lubrication = { model = "reynolds_exact", viscosity = "40 cP", cavitation = "elrod_adams" }',
+     ["joints.B.lubrication.cavitation: elrod_adams (mass-conserving) needs a lubricant supply: set "
+      "groove_supply_pressure or an ambient_pressure > 0"]),
+    ('lubrication = { model = "reynolds_table", viscosity = "40 cP", groove_supply_pressure = "2 bar" }',
+     ["joints.B.lubrication.model: force tables cover Gumbel and Swift-Stieber cavitation with ambient ends and "
+      "no groove; use reynolds_exact"]),
+    ('lubrication = { model = "reynolds_exact", viscosity = "40 cP", grid = [3, 3] }',
+     ["joints.B.lubrication.grid: must be [cells around, cells along the axis], whole numbers >= 4, got [3, 3]"]),
+])
+def test_bad_lubrication_is_reported_at_its_location(replacement, messages):
+    text = LUBRICATED.read_text()
+    assert LUBRICATION_LINE in text
+    with pytest.raises(jp.ModelError) as info:
+        jp.loads(text.replace(LUBRICATION_LINE, replacement)).compile()
+    for message in messages:
+        assert message in str(info.value), str(info.value)

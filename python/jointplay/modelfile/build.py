@@ -243,15 +243,14 @@ class Builder:
         if not isinstance(raw, dict):
             self.problem(where, f'must be a table such as {{ model = "hamrock_short", viscosity = "400 cP" }}, got {raw!r}')
             return False
+        # every problem of the table is reported, so the transition is read even when the rest is bad
         table = self.validate(s.LubricationTable, raw, where)
-        if table is None:
-            return False
+        transition = self.law(raw, "transition", s.TRANSITION_LAWS, where, default={"law": "wang_improved"})
         if length is None:
             self.problem(join(joint_where, "length"), 'missing required value: a lubricated joint needs the bearing '
                                                       'length, e.g. "40 mm"')
             return False
-        transition = self.law(raw, "transition", s.TRANSITION_LAWS, where, default={"law": "wang_improved"})
-        if transition is None:
+        if table is None or transition is None:
             return False
         spec = {"model": table.model, "viscosity": float(table.viscosity), "transition": transition}
         if table.model.startswith("reynolds"):

@@ -49,14 +49,15 @@ pub(super) fn build_lubrication(
             FilmModel::ReynoldsExact(options)
         }
         FilmModelSpec::ReynoldsTable => {
-            let options = reynolds_options(&spec.reynolds, &loc, errors)?;
-            if options.cavitation == Cavitation::ElrodAdams || options.groove.is_some() || options.ambient_pressure != 0.0 {
+            let r = &spec.reynolds;
+            if r.cavitation == CavitationSpec::ElrodAdams || r.groove_supply_pressure.is_some() || r.ambient_pressure != 0.0 {
                 errors.push(
                     format!("{loc}.model"),
                     "force tables cover Gumbel and Swift-Stieber cavitation with ambient ends and no groove; use reynolds_exact".to_string(),
                 );
                 return None;
             }
+            let options = reynolds_options(r, &loc, errors)?;
             match cached_table(length / (2.0 * journal_radius), options) {
                 Ok(table) => FilmModel::ReynoldsTable(table),
                 Err(message) => {
@@ -84,6 +85,13 @@ fn reynolds_options(spec: &ReynoldsSpec, loc: &str, errors: &mut ModelErrors) ->
         groove: spec.groove_supply_pressure.map(|p| Groove { supply_pressure: p, width: 0.0 }),
         ..defaults
     };
+    if options.cavitation == Cavitation::ElrodAdams && options.groove.is_none() && options.ambient_pressure <= 0.0 {
+        errors.push(
+            format!("{loc}.cavitation"),
+            "elrod_adams (mass-conserving) needs a lubricant supply: set groove_supply_pressure or an ambient_pressure > 0".to_string(),
+        );
+        return None;
+    }
     match options.validate() {
         Ok(()) => Some(options),
         Err(message) => {
