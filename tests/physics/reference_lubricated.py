@@ -37,10 +37,9 @@ from dataclasses import dataclass, field
 from typing import List, Optional
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 import reference_slider_crank as dry
-from reference_slider_crank import FloresParameters, ideal_initial_state
+from reference_slider_crank import FloresParameters
 
 __all__ = [
     "FilmParameters",
@@ -368,76 +367,14 @@ def simulate_lubricated(
     onset velocity is latched for the Lankarani-Nikravesh damping.
     """
     p = params
-    if t_end is None:
-        t_end = 2.0 * p.crank_period
-    t_end = float(t_end)
+    t_end = float(2.0 * p.crank_period if t_end is None else t_end)
     wall0 = time.perf_counter()
-    grid = None
-    if dense is True:
-        n = max(2, int(round(3600 * t_end / p.crank_period)))
-        grid = np.linspace(0.0, t_end, n + 1)
-    elif dense is not False and dense is not None:
-        grid = np.asarray(dense, dtype=float)
-
-    t0 = 0.0
-    y0 = ideal_initial_state(p)
-    latched: Optional[float] = None
-    pieces = []
-    impacts: List[float] = []
-    separations: List[float] = []
-    onset_velocities: List[float] = []
-    nfev = 0
-    n_steps = 0
-    while True:
-        rhs, event, detail = _make_model(p, film, latched)
-        event.terminal = True
-        event.direction = 1.0 if latched is None else -1.0
-        sol = solve_ivp(rhs, (t0, t_end), y0, method=method, rtol=rtol, atol=atol, max_step=max_step,
-                        events=event, dense_output=grid is not None)
-        if sol.status < 0:
-            raise RuntimeError(f"solve_ivp failed at t = {sol.t[-1]!r}: {sol.message}")
-        nfev += int(sol.nfev)
-        n_steps += len(sol.t) - 1
-        pieces.append((sol.t, sol.y, detail, sol.sol))
-        if sol.status != 1:
-            break
-        t0 = float(sol.t_events[0][0])
-        y0 = np.array(sol.y_events[0][0], dtype=float)
-        if latched is None:
-            latched = max(dry._onset_velocity(p, t0, y0), p.onset_velocity_floor)
-            impacts.append(t0)
-            onset_velocities.append(latched)
-        else:
-            latched = None
-            separations.append(t0)
-        if len(pieces) >= max_pieces:
-            raise RuntimeError(f"more than {max_pieces} contact pieces before t = {t0}")
-        if t0 >= t_end:
-            break
-
-    ts, ys, ks = [], [], []
-    if grid is None:
-        for k, (t, y, _det, _s) in enumerate(pieces):
-            s = 0 if k == 0 else 1
-            ts.append(t[s:])
-            ys.append(y[:, s:])
-            ks.append(np.full(len(t) - s, k))
-    else:
-        starts = np.array([pc[0][0] for pc in pieces])
-        idx = np.clip(np.searchsorted(starts, grid, side="right") - 1, 0, len(pieces) - 1)
-        for k, pc in enumerate(pieces):
-            sel = grid[idx == k]
-            if sel.size:
-                ts.append(sel)
-                ys.append(np.atleast_2d(pc[3](sel)).reshape(4, -1))
-                ks.append(np.full(sel.size, k))
-    t_all = np.concatenate(ts)
-    y_all = np.concatenate(ys, axis=1)
-    k_all = np.concatenate(ks)
-    out = np.empty((11, t_all.size))
-    for i, (ti, yi, ki) in enumerate(zip(t_all.tolist(), y_all.T.tolist(), k_all.tolist())):
-        out[:, i] = pieces[ki][2](ti, *yi)
+    run = dry.integrate_in_pieces(p, lambda latched: _make_model(p, film, latched), t_end, rtol, atol, max_step,
+                                  method, dense, max_pieces, n_details=11)
     wall = time.perf_counter() - wall0
+    t_all, y_all, out = run.t, run.y, run.details
+    nfev, n_steps, impacts = run.nfev, run.n_steps, run.impacts
+    separations, onset_velocities = run.separations, run.onset_velocities
     return LubricatedResult(
         t=t_all, phi=y_all[0].copy(), x_s=y_all[1].copy(), phidot=y_all[2].copy(), x_sdot=y_all[3].copy(),
         slider_ax=out[1].copy(), fhx=out[2].copy(), fhy=out[3].copy(), fh=np.hypot(out[2], out[3]),

@@ -360,6 +360,100 @@ def ideal_slider_position(p: FloresParameters, t):
     return a * np.cos(th) + np.sqrt(L * L - (a * np.sin(th)) ** 2)
 
 
+@dataclass
+class Pieces:
+    """A run integrated in pieces between contact onsets and separations, sampled."""
+
+    t: np.ndarray  # sample times [s]
+    y: np.ndarray  # states (4 x n): phi, x_s, phidot, x_sdot
+    details: np.ndarray  # the model's detail outputs (n_details x n)
+    nfev: int
+    n_steps: int
+    impacts: List[float]
+    separations: List[float]
+    onset_velocities: List[float]
+
+
+def output_grid(p: FloresParameters, t_end: float, dense) -> Optional[np.ndarray]:
+    """None (every accepted step), a grid of 3600 intervals per revolution (True), or the given times."""
+    if dense is True:
+        n = max(2, int(round(3600 * t_end / p.crank_period)))
+        return np.linspace(0.0, t_end, n + 1)
+    if dense is not False and dense is not None:
+        return np.asarray(dense, dtype=float)
+    return None
+
+
+def integrate_in_pieces(p: FloresParameters, make_model, t_end: float, rtol: float, atol: float, max_step: float,
+                        method: str, dense, max_pieces: int, n_details: int) -> Pieces:
+    """Integrates from the ideal initial state with ``solve_ivp``, one piece per contact state.
+
+    ``make_model(latched)`` returns ``(rhs, event, detail)`` for the latched onset velocity (None while the
+    journal is free). The event (|e| = c) is terminal: at an onset the normal approach velocity is latched
+    (floored), at a separation it is cleared, and integration restarts from the event state.
+    ``detail(t, phi, x_s, phid, x_sd)`` gives ``n_details`` outputs per sample.
+    """
+    grid = output_grid(p, t_end, dense)
+    t0, y0 = 0.0, ideal_initial_state(p)
+    latched: Optional[float] = None
+    pieces = []  # (t array, y array, detail, OdeSolution or None)
+    impacts: List[float] = []
+    separations: List[float] = []
+    onset_velocities: List[float] = []
+    nfev = n_steps = 0
+    while True:
+        rhs, event, detail = make_model(latched)
+        event.terminal = True
+        event.direction = 1.0 if latched is None else -1.0
+        sol = solve_ivp(rhs, (t0, t_end), y0, method=method, rtol=rtol, atol=atol, max_step=max_step,
+                        events=event, dense_output=grid is not None)
+        if sol.status < 0:
+            raise RuntimeError(f"solve_ivp failed at t = {sol.t[-1]!r}: {sol.message}")
+        nfev += int(sol.nfev)
+        n_steps += len(sol.t) - 1
+        pieces.append((sol.t, sol.y, detail, sol.sol))
+        if sol.status != 1:
+            break
+        t0 = float(sol.t_events[0][0])
+        y0 = np.array(sol.y_events[0][0], dtype=float)
+        if latched is None:
+            latched = max(_onset_velocity(p, t0, y0), p.onset_velocity_floor)
+            impacts.append(t0)
+            onset_velocities.append(latched)
+        else:
+            latched = None
+            separations.append(t0)
+        if len(pieces) >= max_pieces:
+            raise RuntimeError(f"more than {max_pieces} contact pieces before t = {t0}")
+        if t0 >= t_end:
+            break
+
+    # samples: every accepted step of every piece, or the grid from each piece's dense output
+    ts, ys, ks = [], [], []
+    if grid is None:
+        for k, (t, y, _detail, _sol) in enumerate(pieces):
+            s = 0 if k == 0 else 1  # piece k starts at the event that ended piece k-1
+            ts.append(t[s:])
+            ys.append(y[:, s:])
+            ks.append(np.full(len(t) - s, k))
+    else:
+        starts = np.array([pc[0][0] for pc in pieces])
+        idx = np.clip(np.searchsorted(starts, grid, side="right") - 1, 0, len(pieces) - 1)
+        for k, pc in enumerate(pieces):
+            sel = grid[idx == k]
+            if sel.size:
+                ts.append(sel)
+                ys.append(np.atleast_2d(pc[3](sel)).reshape(4, -1))
+                ks.append(np.full(sel.size, k))
+    t_all = np.concatenate(ts)
+    y_all = np.concatenate(ys, axis=1)
+    k_all = np.concatenate(ks)
+    details = np.empty((n_details, t_all.size))
+    for i, (ti, yi, ki) in enumerate(zip(t_all.tolist(), y_all.T.tolist(), k_all.tolist())):
+        details[:, i] = pieces[ki][2](ti, *yi)
+    return Pieces(t_all, y_all, details, nfev, n_steps, impacts, separations, onset_velocities)
+
+
 def simulate_reference(
     params: FloresParameters = FloresParameters(),
     t_end: Optional[float] = None,
@@ -379,95 +473,12 @@ def simulate_reference(
     output.  ``nfev``/``n_steps`` are summed over pieces in all cases.
     """
     p = params
-    if t_end is None:
-        t_end = 2.0 * p.crank_period
-    t_end = float(t_end)
+    t_end = float(2.0 * p.crank_period if t_end is None else t_end)
     wall0 = time.perf_counter()
-
-    grid = None
-    if dense is True:
-        n = max(2, int(round(3600 * t_end / p.crank_period)))
-        grid = np.linspace(0.0, t_end, n + 1)
-    elif dense is not False and dense is not None:
-        grid = np.asarray(dense, dtype=float)
-
-    t0 = 0.0
-    y0 = ideal_initial_state(p)
-    latched: Optional[float] = None
-    pieces = []  # (t array, y array, latched, OdeSolution or None)
-    impacts: List[float] = []
-    separations: List[float] = []
-    onset_velocities: List[float] = []
-    nfev = 0
-    n_steps = 0
-    while True:
-        rhs, event, detail = _make_model(p, latched)
-        event.terminal = True
-        event.direction = 1.0 if latched is None else -1.0
-        sol = solve_ivp(
-            rhs,
-            (t0, t_end),
-            y0,
-            method=method,
-            rtol=rtol,
-            atol=atol,
-            max_step=max_step,
-            events=event,
-            dense_output=grid is not None,
-        )
-        if sol.status < 0:
-            raise RuntimeError(f"solve_ivp failed at t = {sol.t[-1]!r}: {sol.message}")
-        nfev += int(sol.nfev)
-        n_steps += len(sol.t) - 1
-        pieces.append((sol.t, sol.y, latched, detail, sol.sol))
-        if sol.status != 1:
-            break
-        t0 = float(sol.t_events[0][0])
-        y0 = np.array(sol.y_events[0][0], dtype=float)
-        if latched is None:
-            dd = _onset_velocity(p, t0, y0)
-            latched = max(dd, p.onset_velocity_floor)
-            impacts.append(t0)
-            onset_velocities.append(latched)
-        else:
-            latched = None
-            separations.append(t0)
-        if len(pieces) >= max_pieces:
-            raise RuntimeError(f"more than {max_pieces} contact pieces before t = {t0}")
-        if t0 >= t_end:
-            break
-
-    # ---- assemble outputs -------------------------------------------------
-    ts, ys, dets = [], [], []
-    if grid is None:
-        for k, (t, y, _lat, det, _s) in enumerate(pieces):
-            s = 0 if k == 0 else 1  # piece k starts at the event that ended k-1
-            ts.append(t[s:])
-            ys.append(y[:, s:])
-            dets.append(np.full(len(t) - s, k))
-    else:
-        starts = np.array([pc[0][0] for pc in pieces])
-        idx = np.searchsorted(starts, grid, side="right") - 1
-        idx = np.clip(idx, 0, len(pieces) - 1)
-        for k, pc in enumerate(pieces):
-            sel = grid[idx == k]
-            if sel.size == 0:
-                continue
-            ts.append(sel)
-            ys.append(np.atleast_2d(pc[4](sel)).reshape(4, -1))
-            dets.append(np.full(sel.size, k))
-    t_all = np.concatenate(ts)
-    y_all = np.concatenate(ys, axis=1)
-    k_all = np.concatenate(dets)
-    npts = t_all.size
-    out = np.empty((8, npts))
-    yl = y_all.T.tolist()
-    tl = t_all.tolist()
-    kl = k_all.tolist()
-    for i in range(npts):
-        phi, xs, phid, xsd = yl[i]
-        out[:, i] = pieces[kl[i]][3](tl[i], phi, xs, phid, xsd)
+    run = integrate_in_pieces(p, lambda latched: _make_model(p, latched), t_end, rtol, atol, max_step, method,
+                              dense, max_pieces, n_details=8)
     wall = time.perf_counter() - wall0
+    out, y_all, t_all = run.details, run.y, run.t
     pen = out[4]
     return ReferenceResult(
         t=t_all,
@@ -482,12 +493,12 @@ def simulate_reference(
         ex=out[5].copy(),
         ey=out[6].copy(),
         contact=pen > 0.0,
-        nfev=nfev,
-        n_steps=n_steps,
-        impacts=impacts,
+        nfev=run.nfev,
+        n_steps=run.n_steps,
+        impacts=run.impacts,
         wall_time=wall,
-        separations=separations,
-        onset_velocities=onset_velocities,
+        separations=run.separations,
+        onset_velocities=run.onset_velocities,
         torque=out[7].copy(),
         theta=p.crank_speed * t_all,
         t_end=t_end,
