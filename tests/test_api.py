@@ -37,6 +37,17 @@ def test_bad_simulation_options_are_model_errors_naming_the_option():
         pendulum().simulate(-1.0, method="euler", rtol=0.0)
     locations = {p.location for p in info.value.problems}
     assert locations == {"simulation.t_end", "simulation.method", "simulation.rtol"}
+    assert "must be one of ['adams', 'bdf', 'dopri5'], got 'euler'" in str(info.value)
+
+
+def test_every_method_swings_the_pendulum_alike():
+    runs = {method: pendulum().simulate(1.0, method=method, rtol=1e-9, atol=1e-12) for method in ("dopri5", "adams", "bdf")}
+    final = {method: results["bar.angle"][-1] for method, results in runs.items()}
+    assert abs(final["dopri5"] + 1.0) < 1.5  # it swung
+    for method in ("adams", "bdf"):
+        assert final[method] == pytest.approx(final["dopri5"], abs=1e-6), method
+    assert runs["bdf"].statistics["jacobian_evaluations"] >= 1
+    assert runs["dopri5"].statistics["jacobian_evaluations"] == 0
 
 
 def test_results_give_arrays_units_and_an_xarray_dataset(tmp_path):

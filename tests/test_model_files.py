@@ -166,6 +166,11 @@ def test_overrides_take_units_lists_and_inline_tables():
     assert m.simulation["t_end"] == pytest.approx(0.012)
 
 
+@pytest.mark.parametrize("word, method", [("bdf", "bdf"), ("ndf", "bdf"), ("adams_pc", "adams"), ("rk45", "dopri5")])
+def test_simulation_method_words_and_aliases(word, method):
+    assert jp.load(DRY, [f'simulation.method="{word}"']).simulation["method"] == method
+
+
 def test_override_of_an_entry_that_does_not_exist_is_an_error():
     assert problems(["joints.Z.clearance=1"]) == ["--set joints.Z.clearance: no entry 'Z' in [joints] "
                                                   "(entries: O, A, guide, B)"]

@@ -26,7 +26,8 @@ from .results import Results
 
 Vector = Sequence[float]
 
-METHODS = {"dopri5": "dopri5", "rk45": "dopri5", "dormand_prince": "dopri5", "adams": "adams", "adams_pc": "adams"}
+METHODS = {"dopri5": "dopri5", "rk45": "dopri5", "dormand_prince": "dopri5", "adams": "adams", "adams_pc": "adams",
+           "bdf": "bdf", "ndf": "bdf"}
 STABILIZATIONS = ("projection", "baumgarte", "none")
 
 
@@ -252,7 +253,8 @@ class Model:
         """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
 
         ``method``: ``"dopri5"`` (adaptive Dormand-Prince 5(4), contact onsets located by dense
-        output) or ``"adams"`` (variable-step Adams predictor-corrector). ``rtol``/``atol``: error
+        output), ``"adams"`` (variable-step Adams predictor-corrector) or ``"bdf"`` (implicit
+        variable-order NDF/BDF with Newton iterations, for stiff models such as lubricated joints). ``rtol``/``atol``: error
         tolerances; ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
         accepted step). ``progress`` is called with the simulated time about ten times a second.
 

@@ -16,6 +16,7 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
         o.integrator.method = match method.extract::<String>()?.as_str() {
             "dopri5" => Method::DormandPrince45,
             "adams" => Method::AdamsPredictorCorrector,
+            "bdf" => Method::NumericalDifferentiation,
             other => return Err(PyValueError::new_err(format!("unknown method {other:?}"))),
         };
     }
@@ -85,6 +86,8 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, o: &SimulationOutcome) -
     stats.set_item("smallest_step", s.smallest_step)?;
     stats.set_item("largest_step", s.largest_step)?;
     stats.set_item("restarts", s.restarts)?;
+    stats.set_item("jacobian_evaluations", s.jacobian_evaluations)?;
+    stats.set_item("factorizations", s.factorizations)?;
     out.set_item("statistics", stats)?;
     let g = &o.diagnostics;
     let diag = PyDict::new(py);

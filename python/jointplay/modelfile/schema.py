@@ -268,8 +268,8 @@ class SimulationTable(Strict):
 
     t_end: quantity("time", gt=0) = None
     t0: quantity("time") = None
-    method: choice("dopri5", "adams", aliases={"rk45": "dopri5", "dormand_prince": "dopri5",
-                                               "adams_pc": "adams"}) = None
+    method: choice("dopri5", "adams", "bdf", aliases={"rk45": "dopri5", "dormand_prince": "dopri5",
+                                                      "adams_pc": "adams", "ndf": "bdf"}) = None
     rtol: quantity("dimensionless", gt=0) = None
     atol: quantity("dimensionless", ge=0) = None
     max_step: quantity("time", gt=0) = None

@@ -7,9 +7,12 @@
 //!   control, 4th-order dense output (`docs/theory/integrator-dormand-prince.md`);
 //! - [`Method::AdamsPredictorCorrector`]: variable-step Adams-Bashforth-Moulton
 //!   PECE up to order 4 with Milne's error estimate, the method class of
-//!   paper 001 (`docs/theory/integrator-adams.md`).
+//!   paper 001 (`docs/theory/integrator-adams.md`);
+//! - [`Method::NumericalDifferentiation`]: implicit variable-order NDF/BDF
+//!   with simplified Newton iterations, for stiff problems such as
+//!   lubricated joints (`docs/theory/integrator-ndf.md`).
 //!
-//! Both share one driver: after each accepted step the event functions are
+//! All share one driver: after each accepted step the event functions are
 //! checked for a rise through zero, the earliest root is located on the
 //! dense output, the step is cut there, outputs are recorded, the system
 //! handles the event and the step (`on_event`, `accept`), and the method
@@ -19,6 +22,7 @@
 #![allow(clippy::needless_range_loop)]
 
 mod adams;
+mod bdf;
 mod control;
 mod dormand_prince;
 mod driver;
@@ -147,6 +151,10 @@ pub fn integrate<S: OdeSystem>(
         }
         Method::AdamsPredictorCorrector => {
             let mut stepper = adams::Adams::new(n, options);
+            driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
+        }
+        Method::NumericalDifferentiation => {
+            let mut stepper = bdf::Ndf::new(n, options);
             driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
         }
     };

@@ -10,6 +10,10 @@ pub enum Method {
     /// Variable-step Adams-Bashforth-Moulton PECE of order up to 4 with
     /// Milne's error estimate, started with an order ramp from order 1.
     AdamsPredictorCorrector,
+    /// Variable-order (1 to 5) numerical differentiation formulas of
+    /// Shampine & Reichelt (1997), implicit, with simplified Newton
+    /// iterations on a finite-difference Jacobian: for stiff problems.
+    NumericalDifferentiation,
 }
 
 /// Options of [`integrate`](super::integrate); check them with [`IntegratorOptions::validate`].

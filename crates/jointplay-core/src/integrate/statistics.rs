@@ -18,6 +18,11 @@ pub struct Statistics {
     pub largest_step: f64,
     /// Restarts after an event or after `accept()` returned true.
     pub restarts: usize,
+    /// Finite-difference Jacobians formed (implicit method only; each costs
+    /// n + 1 of the `rhs_evaluations`).
+    pub jacobian_evaluations: usize,
+    /// LU factorisations of the Newton iteration matrix (implicit method only).
+    pub factorizations: usize,
 }
 
 impl Statistics {

@@ -5,11 +5,14 @@
 //! be solved without allocating. nalgebra's decompositions consume or
 //! allocate their matrices, so the one factorisation the hot loop needs, a
 //! Cholesky factorisation of the symmetric positive (semi)definite matrix
-//! `Phi_q M^-1 Phi_q^T` in a caller-owned buffer, lives here. nalgebra is
+//! `Phi_q M^-1 Phi_q^T` in a caller-owned buffer, lives here, with the LU
+//! factorisation of the implicit integrator's iteration matrix. nalgebra is
 //! used for fixed-size 2D vectors and, in tests, as the independent check.
 
 mod cholesky;
 mod dense;
+mod lu;
 
 pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency};
 pub use dense::DenseMatrix;
+pub use lu::{lu_factor, lu_solve, SingularMatrix};

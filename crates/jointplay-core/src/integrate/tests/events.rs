@@ -95,7 +95,9 @@ fn bouncing_ball_bounce_times_follow_geometric_series() {
         for (n, (t, _)) in ball.events.iter().enumerate() {
             let exact = bounce_time(height, e, n as i32 + 1);
             let rel = (t - exact).abs() / exact;
-            assert!(rel < 1e-9, "{method:?}: bounce {} at {t}, exact {exact} (rel {rel:e})", n + 1);
+            // the NDF restarts at order 1 after every bounce: its error builds up faster
+            let bound = if method == Method::NumericalDifferentiation { 1e-8 } else { 1e-9 };
+            assert!(rel < bound, "{method:?}: bounce {} at {t}, exact {exact} (rel {rel:e})", n + 1);
         }
         assert_eq!((stats.events, stats.restarts), (7, 7), "{method:?}");
     }
@@ -147,13 +149,14 @@ fn earliest_of_two_events_in_one_step_fires_first() {
 fn rhs_evaluations_with_events_follow_the_restart_rule() {
     // DOPRI: 6 per attempted step + 1 initial + 1 starting-step probe + 1 per restart;
     // Adams: 2 per accepted + 1 per rejected step + 1 initial + 1 probe + 1 probe per restart
-    for method in METHODS {
+    for method in EXPLICIT_METHODS {
         let mut ball = Ball::new(vec![0.0], Some(0.8));
         let (stats, result, _) = run(&mut ball, 0.0, 3.0, &[1.0, 0.0], &options(method, 1e-8));
         result.unwrap();
         let expected = match method {
             Method::DormandPrince45 => 6 * (stats.accepted_steps + stats.rejected_steps) + 2 + stats.restarts,
             Method::AdamsPredictorCorrector => 2 * stats.accepted_steps + stats.rejected_steps + 2 + stats.restarts,
+            Method::NumericalDifferentiation => unreachable!("implicit: counted in tests/stiff.rs"),
         };
         assert_eq!(stats.rhs_evaluations, expected, "{method:?}: {stats:?}");
         assert_eq!(stats.rhs_evaluations, ball.calls, "{method:?}");

@@ -1,4 +1,4 @@
-//! Tests of both integrators against closed forms: accuracy and order,
+//! Tests of the integrators against closed forms: accuracy and order,
 //! output sampling and statistics, events, projection in `accept()`, errors.
 
 mod accuracy;
@@ -6,12 +6,15 @@ mod errors;
 mod events;
 mod outputs;
 mod projection;
+mod stiff;
 
 use super::{integrate, IntegratorOptions, Method, OdeSystem, Statistics};
 use crate::error::SimulationError;
 
-/// Both methods, for tests that must hold for each.
-pub(super) const METHODS: [Method; 2] = [Method::DormandPrince45, Method::AdamsPredictorCorrector];
+/// Every method, for tests that must hold for each.
+pub(super) const METHODS: [Method; 3] = [Method::DormandPrince45, Method::AdamsPredictorCorrector, Method::NumericalDifferentiation];
+/// The explicit methods, whose evaluation count follows a formula of the step counts.
+pub(super) const EXPLICIT_METHODS: [Method; 2] = [Method::DormandPrince45, Method::AdamsPredictorCorrector];
 
 /// Options with the given method and tolerance (atol = rtol).
 pub(super) fn options(method: Method, tol: f64) -> IntegratorOptions {
@@ -84,11 +87,12 @@ pub(super) fn pendulum_energy(y: &[f64]) -> f64 {
 /// 4th-order estimate (local extrapolation), so its global error stays within
 /// a small multiple of the tolerance. The Adams corrector's own error is
 /// controlled per step without extrapolation, so its global error is bounded
-/// by the sum of the local errors: twice the tolerance times the step count.
+/// by the sum of the local errors: twice the tolerance times the step count;
+/// the same holds for the NDF.
 pub(super) fn tolerance_bound(method: Method, tol: f64, stats: &Statistics) -> f64 {
     match method {
         Method::DormandPrince45 => 20.0 * tol,
-        Method::AdamsPredictorCorrector => 2.0 * tol * stats.accepted_steps as f64,
+        Method::AdamsPredictorCorrector | Method::NumericalDifferentiation => 2.0 * tol * stats.accepted_steps as f64,
     }
 }
 
