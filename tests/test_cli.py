@@ -152,3 +152,12 @@ def test_override_changes_the_run(tmp_path):
     with xr.open_dataset(a, engine="h5netcdf") as da, xr.open_dataset(b, engine="h5netcdf") as db:
         assert 'clearance = "0.0001 m"' in db.attrs["model_toml"]
         assert float(abs(db["B.ex"]).max()) < float(abs(da["B.ex"]).max())
+
+
+def test_run_with_the_implicit_method_reports_its_jacobians(tmp_path):
+    lubricated = str(ROOT / "examples" / "flores_slider_crank_lubricated.toml")
+    result = invoke("run", lubricated, *SHORT, "--set", "simulation.method=bdf", "-o", str(tmp_path / "r.nc"))
+    assert result.exit_code == 0, result.output
+    assert "jacobian evaluations" in result.output and "factorizations" in result.output
+    dry = invoke("run", DRY, *SHORT, "-o", str(tmp_path / "d.nc"))
+    assert dry.exit_code == 0 and "jacobian evaluations" not in dry.output

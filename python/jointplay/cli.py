@@ -261,6 +261,9 @@ def print_summary(results) -> None:
     for key in ("accepted_steps", "rejected_steps", "rhs_evaluations", "events", "restarts"):
         if key in st:
             t.add_row(key.replace("_", " "), str(st[key]))
+    for key in ("jacobian_evaluations", "factorizations"):  # implicit method only
+        if st.get(key):
+            t.add_row(key.replace("_", " "), str(st[key]))
     for key in ("smallest_step", "largest_step"):
         if key in st:
             t.add_row(key.replace("_", " "), _fmt(st[key], "s"))
