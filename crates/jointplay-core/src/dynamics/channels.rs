@@ -69,8 +69,11 @@ impl Trajectory {
         self.channels.iter().position(|c| c.name == name).map(|k| self.values[k].as_slice())
     }
 
-    /// Appends one sample from an evaluated workspace.
-    pub(crate) fn push(&mut self, model: &Model, t: f64, y: &[f64], ws: &Workspace) {
+    /// Appends one sample from an evaluated workspace (whose
+    /// `constraint_forces` it fills first, once for all reaction channels).
+    pub(crate) fn push(&mut self, model: &Model, t: f64, y: &[f64], ws: &mut Workspace) {
+        update_constraint_forces(model, ws);
+        let ws = &*ws;
         self.time.push(t);
         for (k, channel) in model.channels.iter().enumerate() {
             self.values[k].push(value(model, channel.source, y, ws));
@@ -94,6 +97,16 @@ fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace) -> f64 {
     }
 }
 
+/// Fills `ws.constraint_forces` for every element acting during the
+/// simulation (assembly locks keep zero).
+fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
+    for (e, element) in model.elements.iter().enumerate() {
+        if element.constraints.end <= model.n_dynamic_constraints {
+            ws.constraint_forces[e] = constraint_force_on_second(model, e, ws);
+        }
+    }
+}
+
 /// Generalised constraint force `(fx, fy, moment about the centre of mass)`
 /// that element `e` exerts on its second body (`-Phi_q^T lambda` over its rows).
 fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 3] {
@@ -112,7 +125,7 @@ fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 
 }
 
 fn reaction_value(model: &Model, e: usize, which: u8, ws: &Workspace) -> f64 {
-    let [fx, fy, moment] = constraint_force_on_second(model, e, ws);
+    let [fx, fy, moment] = ws.constraint_forces[e];
     match which {
         0 => fx,
         1 => fy,
@@ -128,7 +141,7 @@ fn reaction_value(model: &Model, e: usize, which: u8, ws: &Workspace) -> f64 {
 
 fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
     let element = &model.elements[e];
-    let [fx, fy, moment] = constraint_force_on_second(model, e, ws);
+    let [fx, fy, moment] = ws.constraint_forces[e];
     match element.kind {
         ElementKind::DisplacementDriver => ws.frames[element.first.0].rotate(element.axis).dot(&nalgebra::Vector2::new(fx, fy)),
         _ => moment,

@@ -61,29 +61,53 @@ pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, 
     ws.residual[..rows].iter().enumerate().fold((0.0, 0), |(m, i), (r, v)| if v.abs() > m { (v.abs(), r) } else { (m, i) })
 }
 
+/// Splits a row-major buffer whose coordinates come in `(x, y, phi)` triples
+/// into those triples: body `k` of a row of `3 m` entries is block `k`.
+#[inline]
+fn body_blocks(values: &[f64]) -> &[[f64; 3]] {
+    values.as_chunks::<3>().0
+}
+
+/// Mutable [`body_blocks`].
+#[inline]
+fn body_blocks_mut(values: &mut [f64]) -> &mut [[f64; 3]] {
+    values.as_chunks_mut::<3>().0
+}
+
+/// Bodies of one equation row, as indices of their coordinate triples.
+#[inline]
+fn row_body_blocks(bodies: &[usize; 2]) -> impl Iterator<Item = usize> + '_ {
+    bodies.iter().filter(|&&c| c != usize::MAX).map(|&c| c / 3)
+}
+
+/// `a . b` for two coordinate triples, summed in the order x, y, phi.
+#[inline]
+fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
 /// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's bodies.
 pub(crate) fn jacobian_times(model: &Model, rows: usize, ws: &Workspace, v: &[f64], out: &mut [f64]) {
-    let (jacobian, cols) = (ws.jacobian.as_slice(), ws.jacobian.cols());
-    for (r, (o, bodies)) in out[..rows].iter_mut().zip(&model.row_bodies).enumerate() {
-        let mut s = 0.0;
-        for &c in bodies.iter().filter(|&&c| c != usize::MAX) {
-            let (j, x) = (&jacobian[r * cols + c..r * cols + c + 3], &v[c..c + 3]);
-            s += j[0] * x[0] + j[1] * x[1] + j[2] * x[2];
-        }
-        *o = s;
+    let cols = ws.jacobian.cols();
+    let x = body_blocks(v);
+    let jacobian_rows = ws.jacobian.as_slice().chunks_exact(cols);
+    for ((o, bodies), row) in out[..rows].iter_mut().zip(&model.row_bodies).zip(jacobian_rows) {
+        let j = body_blocks(row);
+        *o = row_body_blocks(bodies).fold(0.0, |s, k| s + dot3(&j[k], &x[k]));
     }
 }
 
 /// `out = Phi_q^T w` over the first `rows` rows, touching only each row's bodies.
 pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &crate::linalg::DenseMatrix, w: &[f64], out: &mut [f64]) {
-    let (data, cols) = (jacobian.as_slice(), jacobian.cols());
     out.fill(0.0);
-    for (r, (&wr, bodies)) in w[..rows].iter().zip(&model.row_bodies).enumerate() {
-        for &c in bodies.iter().filter(|&&c| c != usize::MAX) {
-            let (j, o) = (&data[r * cols + c..r * cols + c + 3], &mut out[c..c + 3]);
-            o[0] += j[0] * wr;
-            o[1] += j[1] * wr;
-            o[2] += j[2] * wr;
+    let o = body_blocks_mut(out);
+    let jacobian_rows = jacobian.as_slice().chunks_exact(jacobian.cols());
+    for ((&wr, bodies), row) in w[..rows].iter().zip(&model.row_bodies).zip(jacobian_rows) {
+        let j = body_blocks(row);
+        for k in row_body_blocks(bodies) {
+            for (oi, ji) in o[k].iter_mut().zip(&j[k]) {
+                *oi += ji * wr;
+            }
         }
     }
 }
@@ -94,12 +118,15 @@ pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &cr
 pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
     let schur = &mut ws.schur[..rows * rows];
     schur.fill(0.0);
-    let (jacobian, cols) = (ws.jacobian.as_slice(), ws.jacobian.cols());
+    let blocks_per_row = ws.jacobian.cols() / 3;
+    let jacobian = body_blocks(ws.jacobian.as_slice());
+    let inverse_mass = body_blocks(&model.inverse_mass);
     for &(a, b, c) in &model.schur_pattern {
         if a >= rows {
             break;
         }
-        let (ra, rb, w) = (&jacobian[a * cols + c..a * cols + c + 3], &jacobian[b * cols + c..b * cols + c + 3], &model.inverse_mass[c..c + 3]);
+        let k = c / 3;
+        let (ra, rb, w) = (&jacobian[a * blocks_per_row + k], &jacobian[b * blocks_per_row + k], &inverse_mass[k]);
         schur[a * rows + b] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
     }
     cholesky_factor(schur, rows)

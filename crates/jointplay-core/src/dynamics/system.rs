@@ -66,6 +66,21 @@ impl MechanismSystem<'_> {
     }
 }
 
+impl MechanismSystem<'_> {
+    /// Frames of the bodies of the clearance joints from the state y (the
+    /// only frames the event functions read).
+    fn update_clearance_frames(&mut self, y: &[f64]) {
+        let n = self.model.n_coordinates();
+        for joint in &self.model.clearance_joints {
+            for body in [joint.bearing.body, joint.journal.body] {
+                if let Some(c) = body.coordinate() {
+                    self.ws.frames[body.0] = Frame::from_coordinates(&y[c..c + 3], &y[n + c..n + c + 3]);
+                }
+            }
+        }
+    }
+}
+
 impl OdeSystem for MechanismSystem<'_> {
     fn len(&self) -> usize {
         2 * self.model.n_coordinates()
@@ -84,18 +99,19 @@ impl OdeSystem for MechanismSystem<'_> {
     }
 
     fn event_functions(&mut self, _t: f64, y: &[f64], g: &mut [f64]) {
-        // only the bodies of the clearance joints matter here
-        let n = self.model.n_coordinates();
-        for joint in &self.model.clearance_joints {
-            for body in [joint.bearing.body, joint.journal.body] {
-                if let Some(c) = body.coordinate() {
-                    self.ws.frames[body.0] = Frame::from_coordinates(&y[c..c + 3], &y[n + c..n + c + 3]);
-                }
-            }
-        }
+        self.update_clearance_frames(y);
         for (k, joint) in self.model.clearance_joints.iter().enumerate() {
             g[k] = joint.penetration(&self.ws.frames);
         }
+    }
+
+    fn event_functions_and_rates(&mut self, _t: f64, y: &[f64], g: &mut [f64], rates: &mut [f64]) -> bool {
+        self.update_clearance_frames(y);
+        for (k, joint) in self.model.clearance_joints.iter().enumerate() {
+            g[k] = joint.penetration(&self.ws.frames);
+            rates[k] = joint.penetration_rate(&self.ws.frames);
+        }
+        true
     }
 
     fn on_event(&mut self, _t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {

@@ -43,6 +43,9 @@ pub struct Workspace {
     pub detailed: bool,
     /// Last outputs of each force element.
     pub force_outputs: Vec<ForceOutput>,
+    /// Constraint force `(fx [N], fy [N], moment about the centre of mass [N m])`
+    /// of each element on its second body at the last recorded sample.
+    pub constraint_forces: Vec<[f64; 3]>,
 }
 
 impl Workspace {
@@ -67,6 +70,7 @@ impl Workspace {
             film_solvers: model.clearance_joints.iter().map(|j| j.lubrication.as_ref().and_then(|l| l.new_solver())).collect(),
             detailed: false,
             force_outputs: vec![ForceOutput::default(); model.forces.len()],
+            constraint_forces: vec![[0.0; 3]; model.elements.len()],
         }
     }
 }

@@ -27,7 +27,7 @@ pub(crate) fn run<S: OdeSystem, P: Stepper>(
     if t_end == t0 {
         return Ok(());
     }
-    system.event_functions(t0, y, &mut events.g_old);
+    events.evaluate_at_step_start(system, t0, y);
     let mut h = stepper.start(system, stats, t0, y, opts.initial_step)?;
     let mut t = t0;
     while t < t_end {
@@ -96,7 +96,7 @@ fn finish_step<S: OdeSystem, P: Stepper>(
     restart |= system.accept(t_stop, y)?;
     check_state(t_stop, y)?;
     grid.record_at_stop(system, t_stop, y)?;
-    system.event_functions(t_stop, y, &mut events.g_old);
+    events.evaluate_at_step_start(system, t_stop, y);
     Ok((t_stop, restart))
 }
 

@@ -7,6 +7,11 @@
 //! excursion that starts and ends inside one long step (a short flight
 //! between two impacts) is not missed; the first sub-interval with a rise
 //! through zero holds the earliest event.
+//!
+//! When the system knows the rates dg/dt, a step whose ends lie, for every
+//! event function, on the same side of zero and farther from it than the
+//! function could plausibly move inside the step is not sampled inside
+//! ([`EventBuffers::crossing_implausible`]).
 
 use super::OdeSystem;
 
@@ -16,6 +21,14 @@ const BISECT_AFTER: usize = 60;
 pub(crate) const EVENT_SUBDIVISIONS: usize = 8;
 /// Hard cap on root-finding iterations (bisection from 1 s to 1e-15 s takes 50).
 const MAX_ITERATIONS: usize = 200;
+/// Largest excursion of a cubic Hermite interpolant beyond the range of its
+/// end values, per unit of h (|g'_0| + |g'_1|): the maximum of s (1 - s)^2
+/// on [0, 1], reached at s = 1/3.
+const HERMITE_EXCURSION: f64 = 4.0 / 27.0;
+/// Safety factor on [`HERMITE_EXCURSION`] before a step is left unsampled:
+/// the reach h (|g'_0| + |g'_1|) covers event functions far less smooth
+/// than a cubic over the step.
+const SKIP_SAFETY: f64 = 27.0 / 4.0;
 
 /// Time tolerance of the located root [s]: 4 eps |t| + 1e-15 s.
 pub(crate) fn time_tolerance(t: f64) -> f64 {
@@ -30,8 +43,16 @@ pub(crate) struct EventBuffers {
     pub g_lo: Vec<f64>,
     /// g at the end of the sub-interval being scanned.
     pub g_hi: Vec<f64>,
+    /// g at the end of the current step.
+    pub g_new: Vec<f64>,
     /// g at a trial time.
     pub g_tmp: Vec<f64>,
+    /// dg/dt at the start of the current step [unit of g per s].
+    pub rate_old: Vec<f64>,
+    /// dg/dt at the end of the current step [unit of g per s].
+    pub rate_new: Vec<f64>,
+    /// Whether the system gave `rate_old`.
+    pub rates_known_old: bool,
     /// State at a trial time.
     pub y_tmp: Vec<f64>,
 }
@@ -40,7 +61,36 @@ impl EventBuffers {
     /// Buffers for `n_events` event functions and a state of `n` components.
     pub(crate) fn new(n_events: usize, n: usize) -> Self {
         let g = || vec![0.0; n_events];
-        Self { g_old: g(), g_lo: g(), g_hi: g(), g_tmp: g(), y_tmp: vec![0.0; n] }
+        Self {
+            g_old: g(),
+            g_lo: g(),
+            g_hi: g(),
+            g_new: g(),
+            g_tmp: g(),
+            rate_old: g(),
+            rate_new: g(),
+            rates_known_old: false,
+            y_tmp: vec![0.0; n],
+        }
+    }
+
+    /// Evaluates g (and dg/dt, when the system knows it) at the start of the next step.
+    pub(crate) fn evaluate_at_step_start<S: OdeSystem>(&mut self, system: &mut S, t: f64, y: &[f64]) {
+        self.rates_known_old = system.event_functions_and_rates(t, y, &mut self.g_old, &mut self.rate_old);
+    }
+
+    /// True when no event function can plausibly cross zero inside a step of
+    /// length `h` [s]: for every k, g_k at both ends has the same sign and a
+    /// magnitude above `SKIP_SAFETY * HERMITE_EXCURSION * h (|g'_k(t_old)| + |g'_k(t_new)|)`.
+    /// Needs the rates at both ends; false whenever a value is not finite.
+    fn crossing_implausible(&self, h: f64) -> bool {
+        (0..self.g_old.len()).all(|k| {
+            let (g0, g1) = (self.g_old[k], self.g_new[k]);
+            let reach = SKIP_SAFETY * HERMITE_EXCURSION * h * (self.rate_old[k].abs() + self.rate_new[k].abs());
+            let same_side = (g0 < 0.0 && g1 < 0.0) || (g0 > 0.0 && g1 > 0.0);
+            // written so that NaN anywhere means "plausible"
+            same_side && g0.abs() > reach && g1.abs() > reach
+        })
     }
 
     /// True when some event function rose through zero over the scanned sub-interval.
@@ -55,8 +105,10 @@ impl EventBuffers {
 }
 
 /// Earliest event time in (t_old, t_new], scanning the step in sub-intervals;
-/// `None` when no event function rose through zero. `g_old` must hold g at
-/// t_old; on return `g_lo` holds g at the start of the sub-interval of the event.
+/// `None` when no event function rose through zero. `g_old` (and `rate_old`)
+/// must hold g at t_old; on return `g_lo` holds g at the start of the
+/// sub-interval of the event. Steps in which a crossing is implausible
+/// (see [`EventBuffers::crossing_implausible`]) are not sampled inside.
 pub(crate) fn find_first_event<S, D>(
     system: &mut S,
     dense: D,
@@ -69,12 +121,16 @@ where
     S: OdeSystem,
     D: Fn(f64, &mut [f64]),
 {
+    let rates_known_new = system.event_functions_and_rates(t_new, y_new, &mut buffers.g_new, &mut buffers.rate_new);
+    if buffers.rates_known_old && rates_known_new && buffers.crossing_implausible(t_new - t_old) {
+        return None;
+    }
     buffers.g_lo.copy_from_slice(&buffers.g_old);
     let mut t_a = t_old;
     for i in 1..=EVENT_SUBDIVISIONS {
         // g at the end of the sub-interval: step end exactly, else dense output
         let t_b = if i == EVENT_SUBDIVISIONS {
-            system.event_functions(t_new, y_new, &mut buffers.g_hi);
+            buffers.g_hi.copy_from_slice(&buffers.g_new);
             t_new
         } else {
             let t_b = t_old + (t_new - t_old) * (i as f64 / EVENT_SUBDIVISIONS as f64);

@@ -56,6 +56,18 @@ pub trait OdeSystem {
     /// g_k(t_prev) <= 0 < g_k(t_new).
     fn event_functions(&mut self, _t: f64, _y: &[f64], _g: &mut [f64]) {}
 
+    /// Event functions g_k(t, y) into `g` and their time derivatives dg_k/dt
+    /// into `rates` [unit of g per s]; returns whether the rates are known.
+    ///
+    /// With rates at both ends of a step the driver skips the interior
+    /// sampling of a step in which no event function can plausibly cross
+    /// zero (`docs/theory/integrator-events.md`). The default fills `g` only
+    /// and returns false: rates unknown, every step is sampled inside.
+    fn event_functions_and_rates(&mut self, t: f64, y: &[f64], g: &mut [f64], _rates: &mut [f64]) -> bool {
+        self.event_functions(t, y, g);
+        false
+    }
+
     /// Called with the state at the located time t* of the earliest event
     /// (y from dense output at t*), before `accept()`; may update discrete state and y.
     fn on_event(&mut self, _t: f64, _y: &mut [f64], _event: usize) -> Result<(), SimulationError> {

@@ -75,6 +75,18 @@ impl ClearanceRevolute {
         self.eccentricity(frames).norm() - self.clearance
     }
 
+    /// Rate of the penetration `d|e|/dt` [m/s]: the radial relative velocity
+    /// of the journal centre, positive when approaching the wall. At `e = 0`,
+    /// where `|e|` has a kink, the rate at which `|e|` grows, `|de/dt|`.
+    #[inline]
+    pub fn penetration_rate(&self, frames: &[Frame]) -> f64 {
+        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let e = fj.point(self.journal.local) - fi.point(self.bearing.local);
+        let e_dot = fj.point_velocity(self.journal.local) - fi.point_velocity(self.bearing.local);
+        let distance = e.norm();
+        if distance == 0.0 { e_dot.norm() } else { e_dot.dot(&e) / distance }
+    }
+
     /// Eccentricity vector `P_j - P_i` [m].
     #[inline]
     pub fn eccentricity(&self, frames: &[Frame]) -> Vec2 {

@@ -57,8 +57,10 @@ fn factor_step(a: &mut [f64], n: usize, scale: f64) -> Result<(), RankDeficiency
     Ok(())
 }
 
+/// Largest |a_ii|, at least the smallest positive normal number (NaN entries are skipped).
 fn diagonal_scale(a: &[f64], n: usize) -> f64 {
-    (0..n).map(|i| a[i * n + i].abs()).fold(0.0_f64, f64::max).max(f64::MIN_POSITIVE)
+    let largest = a.iter().step_by(n + 1).take(n).fold(0.0_f64, |m, d| if d.abs() > m { d.abs() } else { m });
+    largest.max(f64::MIN_POSITIVE)
 }
 
 fn factor<const N: usize>(a: &mut [f64]) -> Result<(), RankDeficiency> {

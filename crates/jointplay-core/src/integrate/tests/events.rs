@@ -14,11 +14,22 @@ struct Ball {
     events: Vec<(f64, usize)>,
     samples: Vec<(f64, Vec<f64>)>,
     calls: usize,
+    /// Whether the ball reports the rates dg/dt of its event functions.
+    rates: bool,
+    /// Evaluations of the event functions.
+    event_calls: usize,
+    /// Downward acceleration [m/s^2] (negative: the ball is pushed up).
+    gravity: f64,
 }
 
 impl Ball {
     fn new(levels: Vec<f64>, restitution: Option<f64>) -> Self {
-        Self { levels, restitution, events: Vec::new(), samples: Vec::new(), calls: 0 }
+        Self { levels, restitution, events: Vec::new(), samples: Vec::new(), calls: 0, rates: false, event_calls: 0, gravity: G }
+    }
+
+    /// A ball that reports the rates of its event functions.
+    fn with_rates(levels: Vec<f64>, restitution: Option<f64>) -> Self {
+        Self { rates: true, ..Self::new(levels, restitution) }
     }
 }
 
@@ -29,16 +40,22 @@ impl OdeSystem for Ball {
     fn rhs(&mut self, _t: f64, y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError> {
         self.calls += 1;
         dydt[0] = y[1];
-        dydt[1] = -G;
+        dydt[1] = -self.gravity;
         Ok(())
     }
     fn n_events(&self) -> usize {
         self.levels.len()
     }
     fn event_functions(&mut self, _t: f64, y: &[f64], g: &mut [f64]) {
+        self.event_calls += 1;
         for (gk, level) in g.iter_mut().zip(&self.levels) {
             *gk = -(y[0] - level);
         }
+    }
+    fn event_functions_and_rates(&mut self, t: f64, y: &[f64], g: &mut [f64], rates: &mut [f64]) -> bool {
+        self.event_functions(t, y, g);
+        rates.fill(-y[1]);
+        self.rates
     }
     fn on_event(&mut self, t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {
         self.events.push((t, event));
@@ -114,6 +131,76 @@ fn short_flight_inside_one_long_step_is_not_missed() {
     assert!(stats.largest_step > flight, "no step spans the flight: {stats:?}");
     assert_eq!(ball.events.len(), 2, "{:?}", ball.events);
     assert!((ball.events[1].0 - bounce_time(1.0, 0.3, 2)).abs() < 1e-12);
+}
+
+#[test]
+fn short_flight_inside_one_long_step_is_found_with_rates() {
+    // as above: the end values of the step spanning the flight are small
+    // against step x rate, so the step is still sampled inside
+    let mut ball = Ball::with_rates(vec![0.0], Some(0.3));
+    let opts = options(Method::DormandPrince45, 1e-10);
+    let (stats, result, _) = run(&mut ball, 0.0, 0.78, &[1.0, 0.0], &opts);
+    result.unwrap();
+    let flight = bounce_time(1.0, 0.3, 2) - bounce_time(1.0, 0.3, 1);
+    assert!(stats.largest_step > flight, "no step spans the flight: {stats:?}");
+    assert_eq!(ball.events.len(), 2, "{:?}", ball.events);
+    assert!((ball.events[1].0 - bounce_time(1.0, 0.3, 2)).abs() < 1e-12);
+}
+
+/// Runs a ball reporting rates from height 0 with velocity `v0` [m/s], one
+/// step of 0.6 s asked for; returns the event times and the largest step.
+fn excursion_run(level: f64, v0: f64, gravity: f64) -> (Vec<f64>, f64) {
+    let mut ball = Ball::with_rates(vec![level], None);
+    ball.gravity = gravity;
+    let mut opts = options(Method::DormandPrince45, 1e-6);
+    opts.initial_step = Some(0.6);
+    let (stats, result, _) = run(&mut ball, 0.0, 0.6, &[0.0, v0], &opts);
+    result.unwrap();
+    (ball.events.iter().map(|(t, _)| *t).collect(), stats.largest_step)
+}
+
+#[test]
+fn short_rise_between_small_negative_end_values_is_found_with_rates() {
+    // pushed up (gravity -G) after a downward throw at 3 m/s: below -0.45 m
+    // (g > 0) for 0.083 s around 0.306 s; one step spans the dip and g < 0 at both of its ends
+    let (events, largest_step) = excursion_run(-0.45, -3.0, -G);
+    assert!(largest_step > 0.4, "no step spans the dip: {largest_step}");
+    let exact = (3.0 - (9.0 - 2.0 * G * 0.45_f64).sqrt()) / G;
+    assert_eq!(events.len(), 1, "{events:?}");
+    assert!((events[0] - exact).abs() < 1e-9, "{} vs {exact}", events[0]);
+}
+
+#[test]
+fn short_dip_between_small_positive_end_values_is_found_with_rates() {
+    // thrown up at 3 m/s: above 0.45 m (g < 0) for 0.083 s around the apex;
+    // one step spans the flight, g > 0 at both of its ends; the level is
+    // crossed downwards on the way back
+    let (events, largest_step) = excursion_run(0.45, 3.0, G);
+    assert!(largest_step > 0.4, "no step spans the flight: {largest_step}");
+    let exact = (3.0 + (9.0 - 2.0 * G * 0.45_f64).sqrt()) / G;
+    assert_eq!(events.len(), 1, "{events:?}");
+    assert!((events[0] - exact).abs() < 1e-9, "{} vs {exact}", events[0]);
+}
+
+#[test]
+fn steps_far_from_every_event_are_not_sampled_inside() {
+    // falling 1 m with the event level 100 m below: with rates, g is
+    // evaluated twice per step (end, and start of the next); without, 9 times
+    for method in METHODS {
+        let run_with = |mut ball: Ball| {
+            let mut opts = options(method, 1e-8);
+            opts.max_step = 0.01;
+            let (stats, result, _) = run(&mut ball, 0.0, 0.4, &[1.0, 0.0], &opts);
+            result.unwrap();
+            assert!(ball.events.is_empty(), "{method:?}");
+            (stats.accepted_steps, ball.event_calls)
+        };
+        let (steps, calls) = run_with(Ball::with_rates(vec![-100.0], None));
+        assert!(steps >= 40, "{method:?}: {steps} steps");
+        assert_eq!(calls, 2 * steps + 1, "{method:?}: skipping");
+        let (steps, calls) = run_with(Ball::new(vec![-100.0], None));
+        assert_eq!(calls, 9 * steps + 1, "{method:?}: sampling");
+    }
 }
 
 #[test]
