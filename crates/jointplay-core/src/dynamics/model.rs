@@ -120,6 +120,11 @@ impl Model {
         self.n_coordinates() as i64 - self.n_dynamic_equations() as i64
     }
 
+    /// Whether some clearance joint carries a film (its samples need the detailed film outputs).
+    pub fn has_lubricated_joints(&self) -> bool {
+        self.clearance_joints.iter().any(|joint| joint.lubrication.is_some())
+    }
+
     /// Name of a body index (`ground` for 0).
     pub fn body_name(&self, body: BodyIndex) -> &str {
         if body.is_ground() { crate::spec::GROUND } else { &self.bodies[body.0 - 1].name }

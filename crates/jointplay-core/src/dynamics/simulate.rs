@@ -3,7 +3,7 @@
 
 use super::channels::Trajectory;
 use super::equations::Stabilization;
-use super::system::MechanismSystem;
+use super::system::{MechanismSystem, StepEndCache};
 use super::{Model, Progress, State, Workspace};
 use crate::error::SimulationError;
 use crate::integrate::{integrate, IntegratorOptions, Statistics};
@@ -77,9 +77,10 @@ pub fn simulate(
             options,
             progress,
             last_accepted: f64::NAN,
+            step_end: StepEndCache::new(y.len()),
         };
         match system.update_contact_memory(t0, &y) {
-            Ok(()) => integrate(&mut system, t0, t_end, &mut y, &options.integrator),
+            Ok(_) => integrate(&mut system, t0, t_end, &mut y, &options.integrator),
             Err(e) => (Statistics::default(), Err(e)),
         }
     };

@@ -13,6 +13,8 @@ use crate::linalg::DenseMatrix;
 pub struct Workspace {
     /// Frames of the ground (index 0) and every body.
     pub frames: Vec<Frame>,
+    /// Frames the event functions work in (only the clearance joints' bodies are kept current).
+    pub event_frames: Vec<Frame>,
     /// Generalised applied force `Q`.
     pub generalised_force: Vec<f64>,
     /// Constraint Jacobian `Phi_q` (all rows including assembly locks).
@@ -55,6 +57,7 @@ impl Workspace {
         let m = model.n_assembly_equations();
         Self {
             frames: vec![Frame::GROUND; model.bodies.len() + 1],
+            event_frames: vec![Frame::GROUND; model.bodies.len() + 1],
             generalised_force: vec![0.0; n],
             jacobian: DenseMatrix::zeros(m, n),
             residual: vec![0.0; m],

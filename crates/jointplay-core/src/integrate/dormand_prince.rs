@@ -171,6 +171,9 @@ impl Stepper for DormandPrince {
         for i in 0..y.len() {
             self.y_new[i] = y[i] + h * (B1 * k[0][i] + B3 * k[2][i] + B4 * k[3][i] + B5 * k[4][i] + B6 * k[5][i]);
         }
+        // project before the last stage: its derivative, at the state the step ends in, is
+        // reused as the next first stage; a failed projection leaves y_new as it is
+        let _ = system.project(t + h, &mut self.y_new);
         let (_, last) = self.k.split_at_mut(6);
         eval(system, stats, t + h, &self.y_new, &mut last[0])?;
         // embedded error estimate, kept in y_stage

@@ -74,6 +74,17 @@ pub trait OdeSystem {
         Ok(())
     }
 
+    /// Projects a trial step end onto the system's invariants before the
+    /// method evaluates f there (Dormand-Prince's last stage, whose
+    /// derivative becomes the next step's first); the default does nothing.
+    ///
+    /// On success y is the projected state; on failure y must be left as it
+    /// was. The method then evaluates the unprojected state, and `accept()`
+    /// projects it again and reports the failure should the step be accepted.
+    fn project(&mut self, _t: f64, _y: &mut [f64]) -> Result<(), SimulationError> {
+        Ok(())
+    }
+
     /// Called at the end of every accepted step (after event handling) with
     /// the new state; may project y onto constraints and update discrete state.
     ///

@@ -92,3 +92,55 @@ fn restart_requested_by_accept_is_counted_and_keeps_accuracy() {
         assert!(err < tolerance_bound(method, 1e-8, &stats), "{method:?}: error {err:e}");
     }
 }
+
+/// Rotation as in [`Circle`], projected in `project()` (before the last
+/// stage) and checked in `rhs()`: every evaluation at a step end sees the
+/// projected state.
+struct TrialProjection {
+    projections: usize,
+    evaluated_off_circle: usize,
+    last_attempt_end: f64,
+    samples: Vec<(f64, Vec<f64>)>,
+}
+
+impl OdeSystem for TrialProjection {
+    fn len(&self) -> usize {
+        2
+    }
+    fn rhs(&mut self, t: f64, y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError> {
+        if t == self.last_attempt_end && (y[0].hypot(y[1]) - 1.0).abs() > 1e-15 {
+            self.evaluated_off_circle += 1;
+        }
+        dydt[0] = -y[1];
+        dydt[1] = y[0];
+        Ok(())
+    }
+    fn project(&mut self, t: f64, y: &mut [f64]) -> Result<(), SimulationError> {
+        self.projections += 1;
+        self.last_attempt_end = t;
+        let r = y[0].hypot(y[1]);
+        y[0] /= r;
+        y[1] /= r;
+        Ok(())
+    }
+    fn accept(&mut self, _t: f64, _y: &mut [f64]) -> Result<bool, SimulationError> {
+        Ok(false)
+    }
+    fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        self.samples.push((t, y.to_vec()));
+        Ok(())
+    }
+}
+
+#[test]
+fn dormand_prince_projects_each_trial_step_end_before_its_last_stage() {
+    let mut sys = TrialProjection { projections: 0, evaluated_off_circle: 0, last_attempt_end: f64::NAN, samples: Vec::new() };
+    let t_end = 20.0 * std::f64::consts::PI;
+    let (stats, result, y) = run(&mut sys, 0.0, t_end, &[1.0, 0.0], &options(Method::DormandPrince45, 1e-8));
+    result.unwrap();
+    assert_eq!(sys.projections, stats.accepted_steps + stats.rejected_steps);
+    assert_eq!(sys.evaluated_off_circle, 0);
+    // on the circle at every recorded step end, and back at (1, 0) after 10 turns
+    assert!(radius_drift(&sys.samples) < 1e-15, "drift {:e}", radius_drift(&sys.samples));
+    assert!(y[1].atan2(y[0]).abs() < 1e-6, "phase {:e}", y[1].atan2(y[0]));
+}
