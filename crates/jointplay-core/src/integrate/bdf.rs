@@ -97,8 +97,6 @@ pub(crate) struct Ndf {
     iteration_matrix: Vec<f64>,
     pivots: Vec<usize>,
     factored_c: Option<f64>,
-    /// Newton convergence tolerance (on the weighted RMS of the last correction).
-    newton_tolerance: f64,
     y_predict: Vec<f64>,
     psi: Vec<f64>,
     y_new: Vec<f64>,
@@ -133,7 +131,6 @@ impl Ndf {
             iteration_matrix: vec![0.0; n * n],
             pivots: vec![0; n],
             factored_c: None,
-            newton_tolerance: NEWTON_TOLERANCE,
             y_predict: v(),
             psi: v(),
             y_new: v(),
@@ -261,7 +258,7 @@ impl Ndf {
             if let Some(rate) = rate {
                 // diverging, or too slow to converge in the iterations left
                 let remaining = (NEWTON_ITERATIONS - iteration) as i32;
-                if rate >= 1.0 || rate.powi(remaining) / (1.0 - rate) * norm > self.newton_tolerance {
+                if rate >= 1.0 || rate.powi(remaining) / (1.0 - rate) * norm > NEWTON_TOLERANCE {
                     return Ok(Newton::Failed);
                 }
             }
@@ -269,7 +266,7 @@ impl Ndf {
                 self.y_new[i] += self.delta[i];
                 self.correction[i] += self.delta[i];
             }
-            if norm == 0.0 || rate.is_some_and(|rate| rate / (1.0 - rate) * norm < self.newton_tolerance) {
+            if norm == 0.0 || rate.is_some_and(|rate| rate / (1.0 - rate) * norm < NEWTON_TOLERANCE) {
                 return Ok(Newton::Converged(iteration + 1));
             }
             last_norm = Some(norm);

@@ -28,8 +28,6 @@ impl OdeSystem for Circle {
         dydt[1] = y[0];
         Ok(())
     }
-    // `is_multiple_of` needs Rust 1.87; the workspace supports 1.80
-    #[allow(clippy::manual_is_multiple_of)]
     fn accept(&mut self, _t: f64, y: &mut [f64]) -> Result<bool, SimulationError> {
         self.accepts += 1;
         if self.project {
@@ -37,7 +35,7 @@ impl OdeSystem for Circle {
             y[0] /= r;
             y[1] /= r;
         }
-        Ok(self.restart_every > 0 && self.accepts % self.restart_every == 0)
+        Ok(self.restart_every > 0 && self.accepts.is_multiple_of(self.restart_every))
     }
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         self.samples.push((t, y.to_vec()));
