@@ -43,6 +43,7 @@ pub fn update_frames(model: &Model, q: &[f64], qdot: &[f64], frames: &mut [Frame
 /// Fills the Jacobian, `nu` and `gamma` of the first `n_constraints`
 /// constraints from the current frames; returns the number of rows.
 pub(crate) fn linearise_constraints(model: &Model, n_constraints: usize, t: f64, ws: &mut Workspace) -> usize {
+    ws.factored_at = None;
     let rows = model.row_offsets[n_constraints];
     for (k, c) in model.constraints[..n_constraints].iter().enumerate() {
         let target = ConstraintRows { jacobian: &mut ws.jacobian, row: model.row_offsets[k], nu: &mut ws.nu, gamma: &mut ws.gamma };
@@ -132,6 +133,20 @@ pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Work
     cholesky_factor(schur, rows)
 }
 
+/// [`factor_constraint_matrix`] at `(t, q)`, remembered so that an evaluation at the
+/// same time and positions (after a velocity projection) reuses the factor.
+pub(crate) fn factor_constraint_matrix_at(model: &Model, rows: usize, t: f64, q: &[f64], ws: &mut Workspace) -> Result<(), RankDeficiency> {
+    factor_constraint_matrix(model, rows, ws)?;
+    ws.factored_positions.copy_from_slice(q);
+    ws.factored_at = Some((t, rows));
+    Ok(())
+}
+
+/// Whether `ws.schur` holds the factor for `rows` rows at `(t, q)`.
+fn holds_factor(ws: &Workspace, rows: usize, t: f64, q: &[f64]) -> bool {
+    ws.factored_at == Some((t, rows)) && ws.factored_positions == q
+}
+
 /// Error for a rank-deficient constraint matrix, naming the owning element.
 pub(crate) fn singular_error(model: &Model, t: f64, deficiency: RankDeficiency) -> SimulationError {
     let owner = &model.elements[model.row_owner[deficiency.row]];
@@ -189,6 +204,8 @@ pub fn accelerations(
     ws: &mut Workspace,
 ) -> Result<(), SimulationError> {
     let n = model.n_coordinates();
+    // the factor depends on the positions only: kept from a projection at the same (t, q)
+    let factored = holds_factor(ws, model.row_offsets[model.n_dynamic_constraints], t, q);
     update_frames(model, q, qdot, &mut ws.frames);
     applied_forces(model, memory, t, ws)?;
     let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
@@ -203,7 +220,11 @@ pub fn accelerations(
     }
     // lambda from (J M^-1 J^T) lambda = J M^-1 Q - gamma
     if rows > 0 {
-        factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
+        if factored {
+            ws.factored_at = Some((t, rows));
+        } else {
+            factor_constraint_matrix_at(model, rows, t, q, ws).map_err(|d| singular_error(model, t, d))?;
+        }
         for k in 0..n {
             ws.accelerations[k] = model.inverse_mass[k] * ws.generalised_force[k];
         }

@@ -5,7 +5,7 @@
 //! `dv = -M^-1 Phi_q^T (Phi_q M^-1 Phi_q^T)^-1 (Phi_q v - nu)`.
 
 use super::equations::{
-    constraint_residuals, factor_constraint_matrix, jacobian_times, jacobian_transpose_times, linearise_constraints, singular_error, update_frames,
+    constraint_residuals, factor_constraint_matrix, factor_constraint_matrix_at, jacobian_times, jacobian_transpose_times, linearise_constraints, singular_error, update_frames,
 };
 use super::{Model, Workspace};
 use crate::error::SimulationError;
@@ -82,7 +82,7 @@ pub(crate) fn project_velocities(
     if largest <= tolerance {
         return Ok(());
     }
-    factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
+    factor_constraint_matrix_at(model, rows, t, q, ws).map_err(|d| singular_error(model, t, d))?;
     cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
     jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     for k in 0..n {

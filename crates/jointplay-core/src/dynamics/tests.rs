@@ -305,3 +305,30 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
     }
     assert!(checked > 100 && in_contact > 10, "checked {checked}, in contact {in_contact}");
 }
+
+#[test]
+fn a_kept_constraint_factor_is_reused_only_at_the_same_time_and_positions() {
+    let model = clearance_slider_crank();
+    let n = model.n_coordinates();
+    let mut ws = Workspace::new(&model);
+    let state = assemble(&model, 0.0, &mut ws).unwrap();
+    let memory = vec![ContactMemory::default(); model.clearance_joints.len()];
+    let fresh = |t: f64, q: &[f64], v: &[f64]| {
+        let mut ws = Workspace::new(&model);
+        accelerations(&model, &memory, t, q, v, Stabilization::Projection, &mut ws).unwrap();
+        ws.accelerations
+    };
+    let (q, v) = (state.y[..n].to_vec(), state.y[n..].to_vec());
+    let mut moved = q.clone();
+    moved[3] += 1e-3; // the rod's x: another configuration at the same time
+    let slower: Vec<f64> = v.iter().map(|x| 0.5 * x).collect();
+    // same time and positions, other velocities: the factor is reused, and the result is exact
+    accelerations(&model, &memory, 1e-3, &q, &v, Stabilization::Projection, &mut ws).unwrap();
+    accelerations(&model, &memory, 1e-3, &q, &slower, Stabilization::Projection, &mut ws).unwrap();
+    assert_eq!(ws.factored_at, Some((1e-3, model.row_offsets[model.n_dynamic_constraints])));
+    assert_eq!(ws.accelerations, fresh(1e-3, &q, &slower));
+    // same time, other positions: factored anew
+    accelerations(&model, &memory, 1e-3, &moved, &v, Stabilization::Projection, &mut ws).unwrap();
+    assert_eq!(ws.accelerations, fresh(1e-3, &moved, &v));
+    assert_eq!(ws.factored_positions, moved);
+}

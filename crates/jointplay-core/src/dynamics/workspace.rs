@@ -27,6 +27,11 @@ pub struct Workspace {
     pub gamma: Vec<f64>,
     /// `Phi_q M^-1 Phi_q^T`, then its Cholesky factor.
     pub schur: Vec<f64>,
+    /// Time [s] and row count for which `schur` holds the factor at
+    /// `factored_positions`; cleared whenever the Jacobian is linearised anew.
+    pub factored_at: Option<(f64, usize)>,
+    /// Coordinates `q` of that factor.
+    pub factored_positions: Vec<f64>,
     /// Lagrange multipliers `lambda`.
     pub multipliers: Vec<f64>,
     /// Generalised accelerations `q_ddot`.
@@ -64,6 +69,8 @@ impl Workspace {
             nu: vec![0.0; m],
             gamma: vec![0.0; m],
             schur: vec![0.0; m * m],
+            factored_at: None,
+            factored_positions: vec![0.0; n],
             multipliers: vec![0.0; m],
             accelerations: vec![0.0; n],
             scratch: vec![0.0; n],
