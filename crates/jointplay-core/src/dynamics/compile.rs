@@ -5,7 +5,8 @@ use std::collections::HashMap;
 
 use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES, FILM_QUANTITIES};
 use super::frame::{perp, BodyIndex, BodyPoint, Vec2};
-use super::model::{Body, ElementKind, IdealElement, Model};
+use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm};
+use crate::linalg::SparseCholesky;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
@@ -62,6 +63,8 @@ impl<'s> Compiler<'s> {
             row_owner: Vec::new(),
             row_bodies: Vec::new(),
             schur_pattern: Vec::new(),
+            schur_terms: Vec::new(),
+            schur_factor: SparseCholesky::analyse(0, &[]),
             elements: Vec::new(),
             clearance_joints: Vec::new(),
             clearance_names: Vec::new(),
@@ -427,6 +430,20 @@ impl<'s> Compiler<'s> {
         }
     }
 
+    /// Flat terms and the elimination program of `Phi_q M^-1 Phi_q^T` over the dynamic rows.
+    fn analyse_constraint_matrix(&mut self) {
+        let model = &mut self.model;
+        let m = model.row_offsets[model.n_dynamic_constraints];
+        let triples_per_row = model.inverse_mass.len() / 3;
+        let dynamic = model.schur_pattern.iter().filter(|&&(a, _, _)| a < m);
+        model.schur_terms = dynamic
+            .clone()
+            .map(|&(a, b, c)| SchurTerm { entry: a * m + b, first: a * triples_per_row + c / 3, second: b * triples_per_row + c / 3, body: c / 3 })
+            .collect();
+        let lower: Vec<(usize, usize)> = dynamic.map(|&(a, b, _)| (a, b)).collect();
+        model.schur_factor = SparseCholesky::analyse(m, &lower);
+    }
+
     fn finish(mut self) -> Result<Model, ModelErrors> {
         let rows = &self.model.row_bodies;
         for a in 0..rows.len() {
@@ -438,6 +455,7 @@ impl<'s> Compiler<'s> {
                 }
             }
         }
+        self.analyse_constraint_matrix();
         let n = self.model.n_coordinates() as i64;
         let m = self.model.n_dynamic_equations() as i64;
         if self.errors.is_empty() && m > n {

@@ -115,13 +115,22 @@ pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &cr
 
 /// Forms `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows and factors it in place.
 /// Every row touches at most two bodies, so only the entries of the
-/// precomputed pattern (rows sharing a body) are summed.
+/// precomputed pattern (rows sharing a body) are summed; for the dynamic
+/// rows the terms come as flat indices and the factorisation follows the
+/// elimination program of that pattern (`linalg/sparse_cholesky.rs`).
 pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
     let schur = &mut ws.schur[..rows * rows];
     schur.fill(0.0);
-    let blocks_per_row = ws.jacobian.cols() / 3;
     let jacobian = body_blocks(ws.jacobian.as_slice());
     let inverse_mass = body_blocks(&model.inverse_mass);
+    if rows == model.schur_factor.size() {
+        for term in &model.schur_terms {
+            let (ra, rb, w) = (&jacobian[term.first], &jacobian[term.second], &inverse_mass[term.body]);
+            schur[term.entry] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
+        }
+        return model.schur_factor.factor(schur);
+    }
+    let blocks_per_row = ws.jacobian.cols() / 3;
     for &(a, b, c) in &model.schur_pattern {
         if a >= rows {
             break;

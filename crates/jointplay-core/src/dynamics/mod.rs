@@ -21,7 +21,7 @@ pub use assembly::assemble;
 pub use channels::{ChannelInfo, Trajectory};
 pub use compile::compile;
 pub use equations::{accelerations, update_frames, Stabilization};
-pub use model::{Body, ElementKind, IdealElement, Model};
+pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm};
 pub use progress::Progress;
 pub use simulate::{simulate, Diagnostics, SimulationOptions, SimulationOutcome};
 pub use state::{ContactMemory, State};

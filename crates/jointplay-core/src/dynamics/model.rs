@@ -4,6 +4,7 @@ use super::channels::Channel;
 use super::frame::{BodyIndex, Vec2};
 use crate::force::ForceElement;
 use crate::joint::{ClearanceRevolute, Constraint};
+use crate::linalg::SparseCholesky;
 
 /// A planar rigid body with its frame at the centre of mass.
 #[derive(Clone, Debug, PartialEq)]
@@ -80,6 +81,10 @@ pub struct Model {
     /// Non-zero pattern of `Phi_q M^-1 Phi_q^T`: `(a, b, c)` for rows `a >= b` that share the body
     /// whose first coordinate is `c`, sorted by `a`.
     pub schur_pattern: Vec<(usize, usize, usize)>,
+    /// The terms of `Phi_q M^-1 Phi_q^T` for the dynamic rows, as flat indices (see [`SchurTerm`]).
+    pub schur_terms: Vec<SchurTerm>,
+    /// Elimination program of `Phi_q M^-1 Phi_q^T` for the dynamic rows, fill-in included.
+    pub schur_factor: SparseCholesky,
     /// Joints, drivers and assembly locks that own constraints.
     pub elements: Vec<IdealElement>,
     /// Clearance joints.
@@ -96,6 +101,20 @@ pub struct Model {
     pub initial_velocities: Vec<f64>,
     /// Output channels, in recording order.
     pub(crate) channels: Vec<Channel>,
+}
+
+/// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)` of
+/// `Phi_q M^-1 Phi_q^T` over the dynamic rows, by coordinate-triple indices.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SchurTerm {
+    /// Row-major index `a m + b` of the entry (m dynamic rows).
+    pub entry: usize,
+    /// Triple of row a's Jacobian entries for the body (index into the Jacobian's triples).
+    pub first: usize,
+    /// Triple of row b's Jacobian entries for the body.
+    pub second: usize,
+    /// The body's triple in `M^-1`.
+    pub body: usize,
 }
 
 impl Model {

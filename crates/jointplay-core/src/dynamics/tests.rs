@@ -332,3 +332,33 @@ fn a_kept_constraint_factor_is_reused_only_at_the_same_time_and_positions() {
     assert_eq!(ws.accelerations, fresh(1e-3, &moved, &v));
     assert_eq!(ws.factored_positions, moved);
 }
+
+#[test]
+fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_like_the_dense_kernel() {
+    // rows O (2), A (2) and the driver share the crank; the guide's two rows only the slider
+    let model = clearance_slider_crank();
+    let rows = model.row_offsets[model.n_dynamic_constraints];
+    assert_eq!((rows, model.schur_factor.size()), (7, 7));
+    assert_eq!(model.schur_factor.factor_nonzeros(), 15 + 3);
+    let mut ws = Workspace::new(&model);
+    let state = assemble(&model, 0.0, &mut ws).unwrap();
+    let n = model.n_coordinates();
+    update_frames(&model, &state.y[..n], &state.y[n..], &mut ws.frames);
+    equations::linearise_constraints(&model, model.n_dynamic_constraints, 0.0, &mut ws);
+    equations::factor_constraint_matrix(&model, rows, &mut ws).unwrap();
+    let sparse = ws.schur[..rows * rows].to_vec();
+    // the same matrix formed densely from the Jacobian and factored by the dense kernel
+    let mut dense = vec![0.0; rows * rows];
+    for a in 0..rows {
+        for b in 0..=a {
+            dense[a * rows + b] = (0..n).map(|k| ws.jacobian.get(a, k) * model.inverse_mass[k] * ws.jacobian.get(b, k)).sum();
+        }
+    }
+    crate::linalg::cholesky_factor(&mut dense, rows).unwrap();
+    for a in 0..rows {
+        for b in 0..=a {
+            let (x, y) = (sparse[a * rows + b], dense[a * rows + b]);
+            assert!((x - y).abs() <= 1e-12 * (1.0 + y.abs()), "entry ({a}, {b}): {x:e} vs {y:e}");
+        }
+    }
+}

@@ -12,7 +12,7 @@ pub struct RankDeficiency {
 /// Relative pivot below which a row is taken as linearly dependent on the
 /// rows before it. `Phi_q M^-1 Phi_q^T` of a healthy mechanism has relative
 /// pivots far above this; a locked configuration drives one to round-off.
-const RELATIVE_PIVOT_TOLERANCE: f64 = 1e-10;
+pub(crate) const RELATIVE_PIVOT_TOLERANCE: f64 = 1e-10;
 
 /// Factors the symmetric `n x n` row-major matrix `a` in place; its lower
 /// triangle becomes `L`, except that the diagonal holds `1 / l_jj` (the
@@ -58,7 +58,7 @@ fn factor_step(a: &mut [f64], n: usize, scale: f64) -> Result<(), RankDeficiency
 }
 
 /// Largest |a_ii|, at least the smallest positive normal number (NaN entries are skipped).
-fn diagonal_scale(a: &[f64], n: usize) -> f64 {
+pub(crate) fn diagonal_scale(a: &[f64], n: usize) -> f64 {
     let largest = a.iter().step_by(n + 1).take(n).fold(0.0_f64, |m, d| if d.abs() > m { d.abs() } else { m });
     largest.max(f64::MIN_POSITIVE)
 }

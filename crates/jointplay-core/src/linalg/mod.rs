@@ -12,7 +12,9 @@
 mod cholesky;
 mod dense;
 mod lu;
+mod sparse_cholesky;
 
 pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency};
 pub use dense::DenseMatrix;
 pub use lu::{lu_factor, lu_solve, SingularMatrix};
+pub use sparse_cholesky::SparseCholesky;

@@ -1,0 +1,196 @@
+//! Cholesky factorisation of a symmetric positive definite matrix whose
+//! sparsity pattern is known before its values: the pattern of the factor,
+//! fill-in included, is found once (symbolic analysis), and every
+//! factorisation then visits only the factor's structural non-zeros.
+//!
+//! The constraint matrix `Phi_q M^-1 Phi_q^T` of a mechanism is such a
+//! matrix: two constraint rows couple only when they act on a common body,
+//! so a slider-crank's 7 x 7 matrix splits into a 5 x 5 and a 2 x 2 block.
+//! The result has the layout of [`cholesky_factor`](super::cholesky_factor)
+//! (lower triangle `L`, diagonal `1 / l_jj`), so
+//! [`cholesky_solve`](super::cholesky_solve) applies unchanged, and the
+//! same rank test; entries outside the pattern must be zero on input and
+//! stay zero.
+
+use super::cholesky::{diagonal_scale, RankDeficiency, RELATIVE_PIVOT_TOLERANCE};
+
+/// One entry of the factor and the products subtracted to form it.
+#[derive(Clone, Debug, PartialEq)]
+struct FactorEntry {
+    /// Row-major index `i n + j` of the entry (`i >= j`).
+    index: usize,
+    /// Column j, the row reported when its pivot vanishes.
+    column: usize,
+    /// Whether the entry is the diagonal `l_jj`.
+    diagonal: bool,
+    /// Range in [`SparseCholesky::products`].
+    first_product: usize,
+    end_product: usize,
+}
+
+/// The elimination program of one sparsity pattern.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SparseCholesky {
+    /// Matrix size n.
+    n: usize,
+    /// Entries of the factor in computation order: column by column, diagonal first.
+    entries: Vec<FactorEntry>,
+    /// Index pairs `(i n + k, j n + k)` of the products `l_ik l_jk` subtracted from entry `(i, j)`.
+    products: Vec<(usize, usize)>,
+}
+
+impl SparseCholesky {
+    /// Analyses the pattern of an `n x n` symmetric matrix given by the
+    /// positions `(i, j)`, `i >= j`, of its possibly non-zero lower entries
+    /// (the diagonal is always included).
+    pub fn analyse(n: usize, lower: &[(usize, usize)]) -> Self {
+        let pattern = factor_pattern(n, lower);
+        let nonzero = |i: usize, j: usize| pattern[i * n + j];
+        let mut entries = Vec::new();
+        let mut products = Vec::new();
+        for j in 0..n {
+            for i in (j..n).filter(|&i| nonzero(i, j)) {
+                let first_product = products.len();
+                products.extend((0..j).filter(|&k| nonzero(i, k) && nonzero(j, k)).map(|k| (i * n + k, j * n + k)));
+                entries.push(FactorEntry { index: i * n + j, column: j, diagonal: i == j, first_product, end_product: products.len() });
+            }
+        }
+        Self { n, entries, products }
+    }
+
+    /// Size n of the matrices this program factors.
+    pub fn size(&self) -> usize {
+        self.n
+    }
+
+    /// Number of structural non-zeros of the factor (fill-in included).
+    pub fn factor_nonzeros(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Factors the row-major `n x n` matrix `a` in place (see the module documentation).
+    pub fn factor(&self, a: &mut [f64]) -> Result<(), RankDeficiency> {
+        let n = self.n;
+        assert!(a.len() >= n * n, "matrix buffer shorter than n x n");
+        let scale = diagonal_scale(a, n);
+        for entry in &self.entries {
+            let mut s = a[entry.index];
+            for &(x, y) in &self.products[entry.first_product..entry.end_product] {
+                s -= a[x] * a[y];
+            }
+            if entry.diagonal {
+                if !(s > RELATIVE_PIVOT_TOLERANCE * scale) {
+                    return Err(RankDeficiency { row: entry.column, relative_pivot: s / scale });
+                }
+                a[entry.index] = 1.0 / s.sqrt();
+            } else {
+                a[entry.index] = s * a[entry.column * n + entry.column];
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Row-major flags of the factor's structural non-zeros (lower triangle):
+/// the matrix pattern plus the fill-in of eliminating column after column.
+fn factor_pattern(n: usize, lower: &[(usize, usize)]) -> Vec<bool> {
+    let mut pattern = vec![false; n * n];
+    for &(i, j) in lower {
+        assert!(i >= j && i < n, "pattern entry ({i}, {j}) is not in the lower triangle of a {n} x {n} matrix");
+        pattern[i * n + j] = true;
+    }
+    for d in 0..n {
+        pattern[d * n + d] = true;
+    }
+    // eliminating column j updates (i, k) for every pair i >= k > j of its non-zeros
+    for j in 0..n {
+        for i in (j + 1)..n {
+            if pattern[i * n + j] {
+                for k in (j + 1)..=i {
+                    if pattern[k * n + j] {
+                        pattern[i * n + k] = true;
+                    }
+                }
+            }
+        }
+    }
+    pattern
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{cholesky_factor, cholesky_solve};
+    use super::*;
+
+    /// Symmetric positive definite matrix with the given lower pattern: `B B^T`-like values
+    /// on the pattern and a dominant diagonal.
+    fn matrix(n: usize, lower: &[(usize, usize)]) -> Vec<f64> {
+        let mut a = vec![0.0; n * n];
+        for (m, &(i, j)) in lower.iter().enumerate() {
+            let v = ((m * 7 + 3) % 11) as f64 / 11.0 - 0.45;
+            a[i * n + j] = v;
+            a[j * n + i] = v;
+        }
+        for d in 0..n {
+            a[d * n + d] = n as f64 + d as f64 * 0.1;
+        }
+        a
+    }
+
+    /// The slider-crank's constraint coupling: rows 0-4 share the crank, 5-6 the slider.
+    fn slider_crank_pattern() -> Vec<(usize, usize)> {
+        let mut lower = Vec::new();
+        for i in 0..5 {
+            for j in 0..=i {
+                lower.push((i, j));
+            }
+        }
+        lower.extend([(5, 5), (6, 5), (6, 6)]);
+        lower
+    }
+
+    #[test]
+    fn block_pattern_factors_like_the_dense_kernel_and_without_fill_in() {
+        let lower = slider_crank_pattern();
+        let program = SparseCholesky::analyse(7, &lower);
+        assert_eq!(program.factor_nonzeros(), 15 + 3);
+        let (mut sparse, mut dense) = (matrix(7, &lower), matrix(7, &lower));
+        program.factor(&mut sparse).unwrap();
+        cholesky_factor(&mut dense, 7).unwrap();
+        for i in 0..7 {
+            for j in 0..=i {
+                assert_eq!(sparse[i * 7 + j], dense[i * 7 + j], "entry ({i}, {j})");
+            }
+        }
+    }
+
+    #[test]
+    fn fill_in_is_found_and_the_solve_is_exact() {
+        // an arrow pointing up-left fills in completely; a chain does not
+        let arrow: Vec<(usize, usize)> = (1..6).map(|i| (i, 0)).collect();
+        let program = SparseCholesky::analyse(6, &arrow);
+        assert_eq!(program.factor_nonzeros(), 21);
+        let chain: Vec<(usize, usize)> = (1..6).map(|i| (i, i - 1)).collect();
+        assert_eq!(SparseCholesky::analyse(6, &chain).factor_nonzeros(), 11);
+        let a = matrix(6, &arrow);
+        let mut factor = a.clone();
+        program.factor(&mut factor).unwrap();
+        let x_true: Vec<f64> = (0..6).map(|i| 1.0 + i as f64).collect();
+        let mut b: Vec<f64> = (0..6).map(|i| (0..6).map(|j| a[i * 6 + j] * x_true[j]).sum()).collect();
+        cholesky_solve(&factor, 6, &mut b);
+        for i in 0..6 {
+            assert!((b[i] - x_true[i]).abs() < 1e-12, "x[{i}] = {}", b[i]);
+        }
+    }
+
+    #[test]
+    fn a_dependent_row_is_reported_like_the_dense_kernel() {
+        // rows 0 and 1 of the 2 x 2 block equal: the second pivot vanishes
+        let lower = [(1, 0)];
+        let mut a = vec![2.0, 2.0, 2.0, 2.0];
+        let sparse = SparseCholesky::analyse(2, &lower).factor(&mut a.clone());
+        let dense = cholesky_factor(&mut a, 2);
+        assert_eq!(sparse.unwrap_err().row, 1);
+        assert_eq!(dense.unwrap_err().row, 1);
+    }
+}
