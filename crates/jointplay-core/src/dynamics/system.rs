@@ -77,7 +77,10 @@ impl MechanismSystem<'_> {
     /// the penetration bound; true when some onset velocity was latched or cleared.
     pub(crate) fn update_contact_memory(&mut self, t: f64, y: &[f64]) -> Result<bool, SimulationError> {
         let n = self.model.n_coordinates();
-        update_frames(self.model, &y[..n], &y[n..], &mut self.ws.frames);
+        if !self.step_end.holds_evaluation(t, y) {
+            // (the frames of the evaluation at this very state are already there)
+            update_frames(self.model, &y[..n], &y[n..], &mut self.ws.frames);
+        }
         let mut changed = false;
         for (k, joint) in self.model.clearance_joints.iter().enumerate() {
             let penetration = joint.penetration(&self.ws.frames);

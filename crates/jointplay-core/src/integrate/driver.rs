@@ -96,7 +96,12 @@ fn finish_step<S: OdeSystem, P: Stepper>(
     restart |= system.accept(t_stop, y)?;
     check_state(t_stop, y)?;
     grid.record_at_stop(system, t_stop, y)?;
-    events.evaluate_at_step_start(system, t_stop, y);
+    if event_time.is_none() && !events.g_old.is_empty() && y == stepper.y_new() {
+        // the scan ended at this very state: its values start the next step
+        events.carry_step_end_over();
+    } else {
+        events.evaluate_at_step_start(system, t_stop, y);
+    }
     Ok((t_stop, restart))
 }
 

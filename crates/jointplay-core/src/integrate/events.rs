@@ -53,6 +53,8 @@ pub(crate) struct EventBuffers {
     pub rate_new: Vec<f64>,
     /// Whether the system gave `rate_old`.
     pub rates_known_old: bool,
+    /// Whether `rate_new` holds dg/dt at the end of the step.
+    pub rates_known_new: bool,
     /// State at a trial time.
     pub y_tmp: Vec<f64>,
 }
@@ -70,6 +72,7 @@ impl EventBuffers {
             rate_old: g(),
             rate_new: g(),
             rates_known_old: false,
+            rates_known_new: false,
             y_tmp: vec![0.0; n],
         }
     }
@@ -77,6 +80,14 @@ impl EventBuffers {
     /// Evaluates g (and dg/dt, when the system knows it) at the start of the next step.
     pub(crate) fn evaluate_at_step_start<S: OdeSystem>(&mut self, system: &mut S, t: f64, y: &[f64]) {
         self.rates_known_old = system.event_functions_and_rates(t, y, &mut self.g_old, &mut self.rate_old);
+    }
+
+    /// Takes g and dg/dt at the end of the step just scanned, where the next
+    /// step starts when the state was not changed after the scan.
+    pub(crate) fn carry_step_end_over(&mut self) {
+        self.g_old.copy_from_slice(&self.g_new);
+        self.rate_old.copy_from_slice(&self.rate_new);
+        self.rates_known_old = self.rates_known_new;
     }
 
     /// True when no event function can plausibly cross zero inside a step of
@@ -121,8 +132,8 @@ where
     S: OdeSystem,
     D: Fn(f64, &mut [f64]),
 {
-    let rates_known_new = system.event_functions_and_rates(t_new, y_new, &mut buffers.g_new, &mut buffers.rate_new);
-    if buffers.rates_known_old && rates_known_new && buffers.crossing_implausible(t_new - t_old) {
+    buffers.rates_known_new = system.event_functions_and_rates(t_new, y_new, &mut buffers.g_new, &mut buffers.rate_new);
+    if buffers.rates_known_old && buffers.rates_known_new && buffers.crossing_implausible(t_new - t_old) {
         return None;
     }
     buffers.g_lo.copy_from_slice(&buffers.g_old);
