@@ -33,10 +33,11 @@ pub enum Stabilization {
     None,
 }
 
-/// Computes the frames of all bodies from `q` and `q_dot`.
+/// Computes the frames of all bodies from `q` and `q_dot` (reusing the
+/// cos and sin of a body whose angle did not change).
 pub fn update_frames(model: &Model, q: &[f64], qdot: &[f64], frames: &mut [Frame]) {
     for k in 0..model.bodies.len() {
-        frames[k + 1] = Frame::from_coordinates(&q[3 * k..3 * k + 3], &qdot[3 * k..3 * k + 3]);
+        frames[k + 1] = Frame::from_coordinates_after(&frames[k + 1], &q[3 * k..3 * k + 3], &qdot[3 * k..3 * k + 3]);
     }
 }
 

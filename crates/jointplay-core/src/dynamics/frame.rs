@@ -90,6 +90,22 @@ impl Frame {
         }
     }
 
+    /// [`Frame::from_coordinates`], taking cos and sin from `previous` when its
+    /// angle is bit for bit the same: successive evaluations often share positions
+    /// (a projection, then the evaluation of the projected state).
+    #[inline]
+    pub fn from_coordinates_after(previous: &Frame, q: &[f64], qdot: &[f64]) -> Frame {
+        let (sin, cos) = if previous.angle.to_bits() == q[2].to_bits() { (previous.sin, previous.cos) } else { q[2].sin_cos() };
+        Frame {
+            position: Vec2::new(q[0], q[1]),
+            angle: q[2],
+            cos,
+            sin,
+            velocity: Vec2::new(qdot[0], qdot[1]),
+            angular_velocity: qdot[2],
+        }
+    }
+
     /// `A s`: a body-frame vector expressed in the global frame.
     #[inline]
     pub fn rotate(&self, s: Vec2) -> Vec2 {
@@ -135,5 +151,23 @@ pub fn add_point_force(generalised: &mut [f64], frame: &Frame, body: BodyIndex, 
         generalised[c] += f.x;
         generalised[c + 1] += f.y;
         generalised[c + 2] += cross(p - frame.position, f);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_after_a_previous_one_equals_a_fresh_frame() {
+        let (q, qdot) = ([0.1, -0.2, 0.7], [1.0, 2.0, -3.0]);
+        let fresh = Frame::from_coordinates(&q, &qdot);
+        // same angle: cos and sin taken over, and they are the ones sin_cos gives
+        assert_eq!(Frame::from_coordinates_after(&fresh, &[0.5, 0.5, 0.7], &qdot).sin, fresh.sin);
+        assert_eq!(Frame::from_coordinates_after(&fresh, &q, &qdot), fresh);
+        // another angle (or a stale frame): computed anew
+        let stale = Frame { sin: 9.0, ..fresh };
+        assert_eq!(Frame::from_coordinates_after(&stale, &[0.1, -0.2, 0.8], &qdot), Frame::from_coordinates(&[0.1, -0.2, 0.8], &qdot));
+        assert_eq!(Frame::from_coordinates_after(&Frame::GROUND, &q, &qdot), fresh);
     }
 }

@@ -133,7 +133,8 @@ impl MechanismSystem<'_> {
         for joint in &self.model.clearance_joints {
             for body in [joint.bearing.body, joint.journal.body] {
                 if let Some(c) = body.coordinate() {
-                    self.ws.event_frames[body.0] = Frame::from_coordinates(&y[c..c + 3], &y[n + c..n + c + 3]);
+                    // (at a step end the evaluation there has the same angle)
+                    self.ws.event_frames[body.0] = Frame::from_coordinates_after(&self.ws.frames[body.0], &y[c..c + 3], &y[n + c..n + c + 3]);
                 }
             }
         }
