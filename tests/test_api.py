@@ -111,6 +111,42 @@ def test_progress_is_reported():
     assert seen and seen[-1] == pytest.approx(0.2)
 
 
+def test_ctrl_c_stops_a_run_and_keeps_what_was_computed():
+    # SIGINT from a timer while the core runs in this (the main) thread: the core lets the
+    # signal through at its next call back, stops, and the results up to there are kept
+    import os
+    import signal
+    import threading
+
+    model = flores.build_model()
+    t_end = flores.revolutions_to_time(2000.0)  # minutes if it were not interrupted
+    timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(jp.SimulationError) as caught:
+            model.simulate(t_end)
+    finally:
+        timer.cancel()
+    error = caught.value
+    assert error.kind == "Interrupted"
+    assert 0.0 < error.time < t_end
+    assert error.results.time[-1] == pytest.approx(error.time)
+    assert np.all(np.isfinite(error.results["B.fn"]))
+
+
+def test_an_exception_in_the_progress_callback_stops_the_run_and_is_raised():
+    calls = []
+
+    def progress(t):
+        calls.append(t)
+        raise ValueError("stop here")
+
+    model = flores.build_model()
+    with pytest.raises(ValueError, match="stop here"):
+        model.simulate(flores.revolutions_to_time(2000.0), progress=progress)
+    assert len(calls) == 1
+
+
 def test_builder_round_trips_through_plain_data():
     m = flores.build_model()
     again = jp.Model.from_spec(m.to_spec())

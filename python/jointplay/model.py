@@ -11,7 +11,6 @@ from __future__ import annotations
 import copy
 import json
 import math
-import threading
 import time as _time
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -338,29 +337,10 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
 
 
 def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None) -> dict:
-    """Runs the core in a worker thread (it releases the GIL) so that Ctrl-C and progress reports
-    reach the caller; on Ctrl-C the run is cancelled and what was computed is kept."""
-    handle = _core.CoreProgress()
-    box: dict[str, Any] = {}
-
-    def work():
-        try:
-            box["raw"] = core.simulate(t0, t_end, options, handle)
-        except BaseException as exc:  # re-raised in the caller's thread
-            box["exc"] = exc
-
-    worker = threading.Thread(target=work, name="jointplay-simulate", daemon=True)
-    worker.start()
-    try:
-        while worker.is_alive():
-            worker.join(0.1)
-            if progress is not None:
-                progress(handle.time())
-    except KeyboardInterrupt:
-        handle.cancel()
-        worker.join()
-    if "exc" in box:
-        raise box["exc"]
-    if progress is not None:
-        progress(handle.time())
-    return box["raw"]
+    """Runs the core in this thread with the GIL released. About ten times a second the core calls
+    ``progress`` and lets pending signals run: on Ctrl-C the run stops at the next sample and what
+    was computed is kept (the error says it was interrupted)."""
+    raw = core.simulate(t0, t_end, options, progress)
+    if progress is not None and len(raw["time"]):
+        progress(float(raw["time"][-1]))
+    return raw

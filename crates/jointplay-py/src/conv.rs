@@ -3,7 +3,7 @@
 use jointplay_core::dynamics::{ChannelInfo, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::integrate::Method;
 use jointplay_core::SimulationError;
-use numpy::{PyArray1, PyArray2};
+use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -75,7 +75,8 @@ pub fn channel_infos(py: Python<'_>, out: &Bound<'_, PyDict>, infos: &[ChannelIn
 pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, o: &SimulationOutcome) -> PyResult<()> {
     let tr = &o.trajectory;
     out.set_item("time", PyArray1::from_slice(py, &tr.time))?;
-    out.set_item("values", PyArray2::from_vec2(py, &tr.values).map_err(|e| PyValueError::new_err(e.to_string()))?)?;
+    // channel after channel; Python reshapes it to (channels, samples)
+    out.set_item("values", PyArray1::from_vec(py, tr.channel_major()))?;
     channel_infos(py, out, &tr.channels)?;
     let s = &o.statistics;
     let stats = PyDict::new(py);

@@ -6,12 +6,13 @@ mod bearing;
 mod conv;
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
 
 use jointplay_core::dynamics::{self, Model, Progress, Workspace};
 use jointplay_core::spec::ModelSpec;
 use numpy::{PyArray1, PyArray2};
-use pyo3::exceptions::PyRuntimeError;
+use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -33,27 +34,24 @@ struct CoreModel {
     model: Arc<Model>,
 }
 
-/// Progress of a running simulation, readable from another thread.
-#[pyclass(frozen, module = "jointplay._core")]
-struct CoreProgress {
-    inner: Arc<Progress>,
-}
+/// Wall time between two calls back from a running simulation (progress, signals).
+const WATCH_INTERVAL: Duration = Duration::from_millis(100);
 
-#[pymethods]
-impl CoreProgress {
-    #[new]
-    fn new() -> Self {
-        Self { inner: Arc::new(Progress::new()) }
-    }
-
-    /// Simulated time reached [s].
-    fn time(&self) -> f64 {
-        self.inner.time()
-    }
-
-    /// Asks the simulation to stop at its next output sample.
-    fn cancel(&self) {
-        self.inner.cancel();
+/// One call back from a running simulation (GIL held): `progress(t)`, then pending signals.
+/// False stops the run; an exception other than `KeyboardInterrupt` is kept in `raised`
+/// (an interrupt becomes the run's `Interrupted` error, with the results kept).
+fn poll(py: Python<'_>, progress: Option<&Py<PyAny>>, t: f64, raised: &Mutex<Option<PyErr>>) -> bool {
+    let called = progress.map_or(Ok(()), |callback| callback.call1(py, (t,)).map(drop));
+    match called.and_then(|()| py.check_signals()) {
+        Ok(()) => true,
+        Err(error) => {
+            if !error.is_instance_of::<PyKeyboardInterrupt>(py) {
+                if let Ok(mut slot) = raised.lock() {
+                    slot.get_or_insert(error);
+                }
+            }
+            false
+        }
     }
 }
 
@@ -99,7 +97,11 @@ impl CoreModel {
         Ok(out)
     }
 
-    /// Assembles at `t0` and simulates to `t_end`; the GIL is released while the core runs.
+    /// Assembles at `t0` and simulates to `t_end` in the calling thread with the GIL released.
+    /// About every [`WATCH_INTERVAL`] the core takes the GIL back for a moment: it calls
+    /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run at
+    /// the next sample with what was computed kept. An exception raised by `progress` also
+    /// stops the run and is raised here.
     #[pyo3(signature = (t0, t_end, options, progress=None))]
     fn simulate<'py>(
         &self,
@@ -107,18 +109,25 @@ impl CoreModel {
         t0: f64,
         t_end: f64,
         options: &Bound<'py, PyDict>,
-        progress: Option<&CoreProgress>,
+        progress: Option<Py<PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let options = conv::simulation_options(options)?;
         let model = Arc::clone(&self.model);
-        let progress = progress.map(|p| Arc::clone(&p.inner));
-        let run = py.detach(move || {
+        let raised = Arc::new(Mutex::new(None));
+        let watched = {
+            let raised = Arc::clone(&raised);
+            Progress::watched(WATCH_INTERVAL, move |t| Python::attach(|py| poll(py, progress.as_ref(), t, &raised)))
+        };
+        let run = py.detach(|| {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
                 let mut state = dynamics::assemble(&model, t0, &mut ws).map_err(|e| e)?;
-                Ok(dynamics::simulate(&model, &mut state, t_end, &options, progress.as_deref()))
+                Ok(dynamics::simulate(&model, &mut state, t_end, &options, Some(&watched)))
             })
         })?;
+        if let Some(error) = raised.lock().map_err(|_| PyRuntimeError::new_err("progress callback state poisoned"))?.take() {
+            return Err(error);
+        }
         let out = PyDict::new(py);
         match run {
             Ok(outcome) => conv::outcome(py, &out, &outcome)?,
@@ -140,7 +149,6 @@ impl CoreModel {
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<CoreModel>()?;
-    m.add_class::<CoreProgress>()?;
     m.add_function(wrap_pyfunction!(compile_model, m)?)?;
     m.add_function(wrap_pyfunction!(bearing::reynolds_solve, m)?)?;
     m.add_function(wrap_pyfunction!(bearing::steady_bearing, m)?)?;

@@ -54,19 +54,52 @@ pub struct Trajectory {
     pub time: Vec<f64>,
     /// Channel descriptions.
     pub channels: Vec<ChannelInfo>,
-    /// `values[c][k]`: channel `c` at `time[k]`.
-    pub values: Vec<Vec<f64>>,
+    /// Sample after sample, each the values of all channels in the order of
+    /// `channels` (one contiguous append per sample).
+    samples: Vec<f64>,
 }
 
 impl Trajectory {
     /// Empty trajectory with the model's channels.
     pub fn new(model: &Model) -> Self {
-        Self { time: Vec::new(), channels: model.channel_infos(), values: vec![Vec::new(); model.channels.len()] }
+        Self { time: Vec::new(), channels: model.channel_infos(), samples: Vec::new() }
     }
 
-    /// Values of the channel named `name`, if present.
-    pub fn channel(&self, name: &str) -> Option<&[f64]> {
-        self.channels.iter().position(|c| c.name == name).map(|k| self.values[k].as_slice())
+    /// Number of recorded samples.
+    pub fn len(&self) -> usize {
+        self.time.len()
+    }
+
+    /// True before the first sample.
+    pub fn is_empty(&self) -> bool {
+        self.time.is_empty()
+    }
+
+    /// Channel `c` at sample `k`.
+    pub fn value(&self, c: usize, k: usize) -> f64 {
+        self.samples[k * self.channels.len() + c]
+    }
+
+    /// Values of channel `c` over time.
+    pub fn column(&self, c: usize) -> Vec<f64> {
+        (0..self.len()).map(|k| self.value(c, k)).collect()
+    }
+
+    /// Values of the channel named `name` over time, if present.
+    pub fn channel(&self, name: &str) -> Option<Vec<f64>> {
+        self.channels.iter().position(|c| c.name == name).map(|c| self.column(c))
+    }
+
+    /// All values channel after channel (`channels.len()` rows of `len()` samples), row-major.
+    pub fn channel_major(&self) -> Vec<f64> {
+        let (m, n) = (self.channels.len(), self.len());
+        let mut out = vec![0.0; m * n];
+        for (k, sample) in self.samples.chunks_exact(m.max(1)).enumerate().take(n) {
+            for (c, &v) in sample.iter().enumerate() {
+                out[c * n + k] = v;
+            }
+        }
+        out
     }
 
     /// Appends one sample from an evaluated workspace (whose
@@ -75,9 +108,7 @@ impl Trajectory {
         update_constraint_forces(model, ws);
         let ws = &*ws;
         self.time.push(t);
-        for (k, channel) in model.channels.iter().enumerate() {
-            self.values[k].push(value(model, channel.source, y, ws));
-        }
+        self.samples.extend(model.channels.iter().map(|channel| value(model, channel.source, y, ws)));
     }
 }
 

@@ -80,6 +80,31 @@ fn slider_crank_kinematics_match_the_closed_form() {
 }
 
 #[test]
+fn channel_major_values_are_the_columns_of_the_recorded_samples() {
+    let m = model(
+        r#"{"gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
+            "bodies": [{"name": "bar", "mass": 2.0, "inertia": 0.1067, "position": [0.4, 0],
+                        "points": [{"name": "O", "position": [-0.4, 0]}]}],
+            "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}]}"#,
+    );
+    let mut ws = Workspace::new(&m);
+    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+    let outcome = simulate(&m, &mut state, 0.05, &SimulationOptions::default(), None);
+    let tr = &outcome.trajectory;
+    let (channels, samples) = (tr.channels.len(), tr.len());
+    assert!(channels > 5 && samples > 3);
+    let all = tr.channel_major();
+    assert_eq!(all.len(), channels * samples);
+    for c in 0..channels {
+        let column = tr.channel(&tr.channels[c].name).unwrap();
+        assert_eq!(column, all[c * samples..(c + 1) * samples].to_vec());
+        assert_eq!(column[samples - 1], tr.value(c, samples - 1));
+    }
+    // the falling bar: its angle moves, so the columns are not all alike
+    assert_ne!(tr.channel("bar.angle").unwrap()[0], tr.channel("bar.angle").unwrap()[samples - 1]);
+}
+
+#[test]
 fn horizontal_bar_held_by_a_driver_carries_its_weight_at_the_pin() {
     // bar of 2 kg and 0.8 m pinned at one end, held horizontal: pin force m g up, driver torque m g l/2
     let m = model(
@@ -275,15 +300,15 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
     let contact_channel = trajectory.channels.iter().position(|c| c.name == "B.contact").expect("B.contact");
     let (mut checked, mut in_contact) = (0, 0);
     for k in 0..trajectory.time.len() {
-        if trajectory.values[contact_channel][k] != 0.0 {
+        if trajectory.value(contact_channel, k) != 0.0 {
             in_contact += 1; // the contact force depends on the latched onset velocity, not recorded
             continue;
         }
         let mut y = vec![0.0; 2 * n];
         for (c, channel) in model.channels.iter().enumerate() {
             match channel.source {
-                channels::Source::Coordinate(i) => y[i] = trajectory.values[c][k],
-                channels::Source::Velocity(i) => y[n + i] = trajectory.values[c][k],
+                channels::Source::Coordinate(i) => y[i] = trajectory.value(c, k),
+                channels::Source::Velocity(i) => y[n + i] = trajectory.value(c, k),
                 _ => {}
             }
         }
@@ -294,7 +319,7 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
         let mut fresh = Trajectory::new(&model);
         fresh.push(&model, t, &y, &mut fresh_ws);
         for (c, info) in trajectory.channels.iter().enumerate() {
-            let (recorded, expected) = (trajectory.values[c][k], fresh.values[c][0]);
+            let (recorded, expected) = (trajectory.value(c, k), fresh.value(c, 0));
             assert!(
                 (recorded - expected).abs() <= 1e-9 * (1.0 + expected.abs()),
                 "{} at t = {t:e}: recorded {recorded:e}, fresh {expected:e}",
