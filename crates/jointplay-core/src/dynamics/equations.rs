@@ -143,6 +143,16 @@ pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Work
     cholesky_factor(schur, rows)
 }
 
+/// Solves `(Phi_q M^-1 Phi_q^T) x = b` for the first `rows` rows in place with the factor
+/// [`factor_constraint_matrix`] left in `schur` (sparse `L D L^T` or dense `L L^T`).
+pub(crate) fn solve_constraint_matrix(model: &Model, rows: usize, schur: &[f64], b: &mut [f64]) {
+    if rows == model.schur_factor.size() {
+        model.schur_factor.solve(schur, &mut b[..rows]);
+    } else {
+        cholesky_solve(&schur[..rows * rows], rows, &mut b[..rows]);
+    }
+}
+
 /// [`factor_constraint_matrix`] at `(t, q)`, remembered so that an evaluation at the
 /// same time and positions (after a velocity projection) reuses the factor.
 pub(crate) fn factor_constraint_matrix_at(model: &Model, rows: usize, t: f64, q: &[f64], ws: &mut Workspace) -> Result<(), RankDeficiency> {
@@ -243,7 +253,7 @@ pub fn accelerations(
         for r in 0..rows {
             rhs[r] -= ws.gamma[r];
         }
-        cholesky_solve(&ws.schur[..rows * rows], rows, &mut rhs[..rows]);
+        solve_constraint_matrix(model, rows, &ws.schur, &mut rhs);
         ws.multipliers = rhs;
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     } else {

@@ -5,11 +5,10 @@
 //! `dv = -M^-1 Phi_q^T (Phi_q M^-1 Phi_q^T)^-1 (Phi_q v - nu)`.
 
 use super::equations::{
-    constraint_residuals, factor_constraint_matrix, factor_constraint_matrix_at, jacobian_times, jacobian_transpose_times, linearise_constraints, singular_error, update_frames,
+    constraint_residuals, factor_constraint_matrix, factor_constraint_matrix_at, jacobian_times, jacobian_transpose_times, linearise_constraints, singular_error, solve_constraint_matrix, update_frames,
 };
 use super::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::linalg::cholesky_solve;
 
 /// Newton on `Phi(q, t) = 0` for the first `n_constraints` constraints.
 /// Returns the number of iterations taken.
@@ -44,7 +43,7 @@ pub(crate) fn project_positions(
         linearise_constraints(model, n_constraints, t, ws);
         factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
         ws.multipliers[..rows].copy_from_slice(&ws.residual[..rows]);
-        cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
+        solve_constraint_matrix(model, rows, &ws.schur, &mut ws.multipliers);
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
         for k in 0..n {
             q[k] -= model.inverse_mass[k] * ws.scratch[k];
@@ -83,7 +82,7 @@ pub(crate) fn project_velocities(
         return Ok(());
     }
     factor_constraint_matrix_at(model, rows, t, q, ws).map_err(|d| singular_error(model, t, d))?;
-    cholesky_solve(&ws.schur[..rows * rows], rows, &mut ws.multipliers[..rows]);
+    solve_constraint_matrix(model, rows, &ws.schur, &mut ws.multipliers);
     jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     for k in 0..n {
         qdot[k] -= model.inverse_mass[k] * ws.scratch[k];
