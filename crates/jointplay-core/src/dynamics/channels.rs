@@ -147,8 +147,10 @@ fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 
     let mut g = [0.0; 3];
     for k in element.constraints.clone() {
         for r in model.row_offsets[k]..model.row_offsets[k + 1] {
-            for (i, gi) in g.iter_mut().enumerate() {
-                *gi -= sign * ws.jacobian.get(r, c + i) * ws.multipliers[r];
+            for (block, _) in ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, triple)| triple == c / 3) {
+                for (gi, ji) in g.iter_mut().zip(block) {
+                    *gi -= sign * ji * ws.multipliers[r];
+                }
             }
         }
     }

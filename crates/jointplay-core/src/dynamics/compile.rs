@@ -62,7 +62,6 @@ impl<'s> Compiler<'s> {
             row_offsets: vec![0],
             row_owner: Vec::new(),
             row_bodies: Vec::new(),
-            schur_pattern: Vec::new(),
             schur_terms: Vec::new(),
             schur_factor: SparseCholesky::analyse(0, &[]),
             elements: Vec::new(),
@@ -173,7 +172,7 @@ impl<'s> Compiler<'s> {
             let last = *self.model.row_offsets.last().unwrap();
             self.model.row_offsets.push(last + rows);
             self.model.row_owner.extend(std::iter::repeat_n(owner, rows));
-            let bodies = [first.body, second.body].map(|b| b.coordinate().unwrap_or(usize::MAX));
+            let bodies = k.bodies().map(|b| b.coordinate().map_or(usize::MAX, |c| c / 3));
             self.model.row_bodies.extend(std::iter::repeat_n(bodies, rows));
             self.model.constraints.push(Constraint { kind: k, owner });
         }
@@ -430,31 +429,26 @@ impl<'s> Compiler<'s> {
         }
     }
 
-    /// Flat terms and the elimination program of `Phi_q M^-1 Phi_q^T` over the dynamic rows.
+    /// The terms of `Phi_q M^-1 Phi_q^T` (one per pair of row blocks on a common body, rows in
+    /// ascending order) and the elimination program of its dynamic rows.
     fn analyse_constraint_matrix(&mut self) {
         let model = &mut self.model;
-        let m = model.row_offsets[model.n_dynamic_constraints];
-        let triples_per_row = model.inverse_mass.len() / 3;
-        let dynamic = model.schur_pattern.iter().filter(|&&(a, _, _)| a < m);
-        model.schur_terms = dynamic
-            .clone()
-            .map(|&(a, b, c)| SchurTerm { entry: a * m + b, first: a * triples_per_row + c / 3, second: b * triples_per_row + c / 3, body: c / 3 })
-            .collect();
-        let lower: Vec<(usize, usize)> = dynamic.map(|&(a, b, _)| (a, b)).collect();
-        model.schur_factor = SparseCholesky::analyse(m, &lower);
-    }
-
-    fn finish(mut self) -> Result<Model, ModelErrors> {
-        let rows = &self.model.row_bodies;
+        let rows = &model.row_bodies;
         for a in 0..rows.len() {
             for b in 0..=a {
-                for &c in &rows[a] {
-                    if c != usize::MAX && rows[b].contains(&c) {
-                        self.model.schur_pattern.push((a, b, c));
+                for (slot_a, &body) in rows[a].iter().enumerate().filter(|&(_, &k)| k != usize::MAX) {
+                    for (slot_b, _) in rows[b].iter().enumerate().filter(|&(_, &k)| k == body) {
+                        model.schur_terms.push(SchurTerm { row: a, column: b, first: 2 * a + slot_a, second: 2 * b + slot_b, body });
                     }
                 }
             }
         }
+        let m = model.row_offsets[model.n_dynamic_constraints];
+        let lower: Vec<(usize, usize)> = model.schur_terms.iter().filter(|t| t.row < m).map(|t| (t.row, t.column)).collect();
+        model.schur_factor = SparseCholesky::analyse(m, &lower);
+    }
+
+    fn finish(mut self) -> Result<Model, ModelErrors> {
         self.analyse_constraint_matrix();
         let n = self.model.n_coordinates() as i64;
         let m = self.model.n_dynamic_equations() as i64;

@@ -14,7 +14,7 @@ use super::state::ContactMemory;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 use crate::force::gravity_generalised_force;
-use crate::joint::{ConstraintRows, Lubrication};
+use crate::joint::{ConstraintRows, Lubrication, RowJacobian};
 use crate::linalg::{cholesky_factor, cholesky_solve, RankDeficiency};
 
 /// How constraint drift is controlled.
@@ -63,8 +63,7 @@ pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, 
     ws.residual[..rows].iter().enumerate().fold((0.0, 0), |(m, i), (r, v)| if v.abs() > m { (v.abs(), r) } else { (m, i) })
 }
 
-/// Splits a row-major buffer whose coordinates come in `(x, y, phi)` triples
-/// into those triples: body `k` of a row of `3 m` entries is block `k`.
+/// Splits a buffer whose coordinates come in `(x, y, phi)` triples into those triples.
 #[inline]
 fn body_blocks(values: &[f64]) -> &[[f64; 3]] {
     values.as_chunks::<3>().0
@@ -76,12 +75,6 @@ fn body_blocks_mut(values: &mut [f64]) -> &mut [[f64; 3]] {
     values.as_chunks_mut::<3>().0
 }
 
-/// Bodies of one equation row, as indices of their coordinate triples.
-#[inline]
-fn row_body_blocks(bodies: &[usize; 2]) -> impl Iterator<Item = usize> + '_ {
-    bodies.iter().filter(|&&c| c != usize::MAX).map(|&c| c / 3)
-}
-
 /// `a . b` for two coordinate triples, summed in the order x, y, phi.
 #[inline]
 fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
@@ -90,57 +83,51 @@ fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
 
 /// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's bodies.
 pub(crate) fn jacobian_times(model: &Model, rows: usize, ws: &Workspace, v: &[f64], out: &mut [f64]) {
-    let cols = ws.jacobian.cols();
     let x = body_blocks(v);
-    let jacobian_rows = ws.jacobian.as_slice().chunks_exact(cols);
-    for ((o, bodies), row) in out[..rows].iter_mut().zip(&model.row_bodies).zip(jacobian_rows) {
-        let j = body_blocks(row);
-        *o = row_body_blocks(bodies).fold(0.0, |s, k| s + dot3(&j[k], &x[k]));
+    for ((o, bodies), row) in out[..rows].iter_mut().zip(&model.row_bodies).zip(&ws.jacobian) {
+        let mut sum = 0.0;
+        for (block, &k) in row.iter().zip(bodies) {
+            if k != usize::MAX {
+                sum += dot3(block, &x[k]);
+            }
+        }
+        *o = sum;
     }
 }
 
 /// `out = Phi_q^T w` over the first `rows` rows, touching only each row's bodies.
-pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &crate::linalg::DenseMatrix, w: &[f64], out: &mut [f64]) {
+pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &[RowJacobian], w: &[f64], out: &mut [f64]) {
     out.fill(0.0);
     let o = body_blocks_mut(out);
-    let jacobian_rows = jacobian.as_slice().chunks_exact(jacobian.cols());
-    for ((&wr, bodies), row) in w[..rows].iter().zip(&model.row_bodies).zip(jacobian_rows) {
-        let j = body_blocks(row);
-        for k in row_body_blocks(bodies) {
-            for (oi, ji) in o[k].iter_mut().zip(&j[k]) {
-                *oi += ji * wr;
+    for ((&wr, bodies), row) in w[..rows].iter().zip(&model.row_bodies).zip(jacobian) {
+        for (block, &k) in row.iter().zip(bodies) {
+            if k != usize::MAX {
+                for (oi, ji) in o[k].iter_mut().zip(block) {
+                    *oi += ji * wr;
+                }
             }
         }
     }
 }
 
 /// Forms `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows and factors it in place.
-/// Every row touches at most two bodies, so only the entries of the
-/// precomputed pattern (rows sharing a body) are summed; for the dynamic
-/// rows the terms come as flat indices and the factorisation follows the
-/// elimination program of that pattern (`linalg/sparse_cholesky.rs`).
+/// Every row touches at most two bodies, so only the precomputed terms (pairs of
+/// row blocks on a common body) are summed; for the dynamic rows the factorisation
+/// follows the elimination program of that pattern (`linalg/sparse_cholesky.rs`).
 pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
     let schur = &mut ws.schur[..rows * rows];
     schur.fill(0.0);
-    let jacobian = body_blocks(ws.jacobian.as_slice());
+    let blocks = ws.jacobian.as_flattened();
     let inverse_mass = body_blocks(&model.inverse_mass);
+    for term in model.schur_terms.iter().take_while(|term| term.row < rows) {
+        let (ra, rb, w) = (&blocks[term.first], &blocks[term.second], &inverse_mass[term.body]);
+        schur[term.row * rows + term.column] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
+    }
     if rows == model.schur_factor.size() {
-        for term in &model.schur_terms {
-            let (ra, rb, w) = (&jacobian[term.first], &jacobian[term.second], &inverse_mass[term.body]);
-            schur[term.entry] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
-        }
-        return model.schur_factor.factor(schur);
+        model.schur_factor.factor(schur)
+    } else {
+        cholesky_factor(schur, rows)
     }
-    let blocks_per_row = ws.jacobian.cols() / 3;
-    for &(a, b, c) in &model.schur_pattern {
-        if a >= rows {
-            break;
-        }
-        let k = c / 3;
-        let (ra, rb, w) = (&jacobian[a * blocks_per_row + k], &jacobian[b * blocks_per_row + k], &inverse_mass[k]);
-        schur[a * rows + b] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
-    }
-    cholesky_factor(schur, rows)
 }
 
 /// Solves `(Phi_q M^-1 Phi_q^T) x = b` for the first `rows` rows in place with the factor

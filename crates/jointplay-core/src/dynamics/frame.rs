@@ -132,16 +132,6 @@ impl Frame {
     }
 }
 
-/// Sets the columns of `body` in one Jacobian row to `(dx, dy, dphi)`.
-#[inline]
-pub fn set_body_columns(row: &mut [f64], body: BodyIndex, dx: f64, dy: f64, dphi: f64) {
-    if let Some(c) = body.coordinate() {
-        row[c] = dx;
-        row[c + 1] = dy;
-        row[c + 2] = dphi;
-    }
-}
-
 /// Adds a force `f` [N] acting at the global point `p` [m] of `body` to the
 /// generalised force vector (force on `x, y`, moment about the centre of
 /// mass on `phi`).

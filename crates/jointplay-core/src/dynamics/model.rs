@@ -76,12 +76,10 @@ pub struct Model {
     pub row_offsets: Vec<usize>,
     /// Owner (index into `elements`) of every equation row.
     pub row_owner: Vec<usize>,
-    /// First coordinate of the (at most two) bodies each equation row touches; `usize::MAX` for none.
+    /// For each equation row, the coordinate triple (body index - 1) of its first and of its
+    /// second body, in the order of the row's Jacobian blocks; `usize::MAX` for the ground.
     pub row_bodies: Vec<[usize; 2]>,
-    /// Non-zero pattern of `Phi_q M^-1 Phi_q^T`: `(a, b, c)` for rows `a >= b` that share the body
-    /// whose first coordinate is `c`, sorted by `a`.
-    pub schur_pattern: Vec<(usize, usize, usize)>,
-    /// The terms of `Phi_q M^-1 Phi_q^T` for the dynamic rows, as flat indices (see [`SchurTerm`]).
+    /// The terms of `Phi_q M^-1 Phi_q^T` over all rows, rows in ascending order (see [`SchurTerm`]).
     pub schur_terms: Vec<SchurTerm>,
     /// Elimination program of `Phi_q M^-1 Phi_q^T` for the dynamic rows, fill-in included.
     pub schur_factor: SparseCholesky,
@@ -103,17 +101,19 @@ pub struct Model {
     pub(crate) channels: Vec<Channel>,
 }
 
-/// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)` of
-/// `Phi_q M^-1 Phi_q^T` over the dynamic rows, by coordinate-triple indices.
+/// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)`, `a >= b`, of
+/// `Phi_q M^-1 Phi_q^T`, by indices of Jacobian blocks and coordinate triples.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SchurTerm {
-    /// Row-major index `a m + b` of the entry (m dynamic rows).
-    pub entry: usize,
-    /// Triple of row a's Jacobian entries for the body (index into the Jacobian's triples).
+    /// Row a.
+    pub row: usize,
+    /// Row b (at most a).
+    pub column: usize,
+    /// Row a's block for the body: `2 a + slot` among the Jacobian's blocks.
     pub first: usize,
-    /// Triple of row b's Jacobian entries for the body.
+    /// Row b's block for the body: `2 b + slot`.
     pub second: usize,
-    /// The body's triple in `M^-1`.
+    /// The body's coordinate triple (in `M^-1`).
     pub body: usize,
 }
 

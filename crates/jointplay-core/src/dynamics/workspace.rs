@@ -4,9 +4,8 @@
 use super::frame::Frame;
 use super::Model;
 use crate::force::ForceOutput;
-use crate::joint::{ContactEvaluation, FilmEvaluation};
+use crate::joint::{ContactEvaluation, FilmEvaluation, RowJacobian};
 use crate::lubrication::reynolds::ReynoldsSolver;
-use crate::linalg::DenseMatrix;
 
 /// Buffers sized once for a model.
 #[derive(Clone, Debug)]
@@ -17,8 +16,8 @@ pub struct Workspace {
     pub event_frames: Vec<Frame>,
     /// Generalised applied force `Q`.
     pub generalised_force: Vec<f64>,
-    /// Constraint Jacobian `Phi_q` (all rows including assembly locks).
-    pub jacobian: DenseMatrix,
+    /// Constraint Jacobian `Phi_q` by rows and bodies (all rows including assembly locks).
+    pub jacobian: Vec<RowJacobian>,
     /// Constraint residuals `Phi`.
     pub residual: Vec<f64>,
     /// Velocity right-hand side `nu`.
@@ -64,7 +63,7 @@ impl Workspace {
             frames: vec![Frame::GROUND; model.bodies.len() + 1],
             event_frames: vec![Frame::GROUND; model.bodies.len() + 1],
             generalised_force: vec![0.0; n],
-            jacobian: DenseMatrix::zeros(m, n),
+            jacobian: vec![[[0.0; 3]; 2]; m],
             residual: vec![0.0; m],
             nu: vec![0.0; m],
             gamma: vec![0.0; m],

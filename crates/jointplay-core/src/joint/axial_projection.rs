@@ -4,7 +4,7 @@
 //! along the axis it is the displacement driver of that joint.
 
 use super::{ConstraintRows, Target};
-use crate::dynamics::frame::{set_body_columns, perp, BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{perp, BodyPoint, Frame, Vec2};
 
 /// Projection of the point-to-point vector on a body-fixed direction is prescribed.
 #[derive(Clone, Debug, PartialEq)]
@@ -36,9 +36,7 @@ impl AxialProjection {
         let u = fi.rotate(self.direction);
         let d = fj.position + sj - fi.position - si;
         let d_dot = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
-        let row = rows.jacobian.row_mut(rows.row);
-        set_body_columns(row, self.first.body, -u.x, -u.y, perp(u).dot(&d) - u.dot(&perp(si)));
-        set_body_columns(row, self.second.body, u.x, u.y, u.dot(&perp(sj)));
+        rows.jacobian[rows.row] = [[-u.x, -u.y, perp(u).dot(&d) - u.dot(&perp(si))], [u.x, u.y, u.dot(&perp(sj))]];
         let (wi, wj) = (fi.angular_velocity, fj.angular_velocity);
         let target = self.target.sample(t);
         rows.nu[rows.row] = target.rate;

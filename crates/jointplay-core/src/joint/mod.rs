@@ -16,8 +16,7 @@ pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication};
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
 
-use crate::dynamics::frame::Frame;
-use crate::linalg::DenseMatrix;
+use crate::dynamics::frame::{BodyIndex, Frame};
 use crate::motion::{MotionSample, TimeFunction};
 
 /// What a constraint prescribes: a constant or a function of time.
@@ -51,10 +50,16 @@ pub enum ConstraintKind {
     AxialProjection(AxialProjection),
 }
 
+/// One equation row of the constraint Jacobian `Phi_q`: the derivatives by
+/// `(x, y, phi)` of the row's first and of its second body (see
+/// [`ConstraintKind::bodies`]); no row involves more than two bodies, and the
+/// block of a ground body is written but never read.
+pub type RowJacobian = [[f64; 3]; 2];
+
 /// Where a constraint writes its equations for one evaluation.
 pub struct ConstraintRows<'a> {
-    /// Constraint Jacobian `Phi_q` (rows of this constraint start at `row`).
-    pub jacobian: &'a mut DenseMatrix,
+    /// Constraint Jacobian `Phi_q` by rows (rows of this constraint start at `row`).
+    pub jacobian: &'a mut [RowJacobian],
     /// First row of this constraint.
     pub row: usize,
     /// Right-hand side of the velocity equation `Phi_q qdot = nu` (`nu = -Phi_t`).
@@ -72,6 +77,15 @@ impl ConstraintKind {
         }
     }
 
+    /// The first and the second body of every row, in the order of the blocks of [`RowJacobian`].
+    pub fn bodies(&self) -> [BodyIndex; 2] {
+        match self {
+            Self::PointCoincidence(c) => [c.first.body, c.second.body],
+            Self::RelativeAngle(c) => [c.first, c.second],
+            Self::AxialProjection(c) => [c.first.body, c.second.body],
+        }
+    }
+
     /// Residuals `Phi(q, t)` into `out` (length `n_equations`) [m or rad].
     pub fn residual(&self, frames: &[Frame], t: f64, out: &mut [f64]) {
         match self {
@@ -82,8 +96,6 @@ impl ConstraintKind {
     }
 
     /// Jacobian rows, `nu` and `gamma` at the current frames (positions and velocities).
-    /// Only the columns of the constraint's bodies are written; the others must be zero
-    /// (they stay zero: the pattern of a row never changes).
     pub fn linearise(&self, frames: &[Frame], t: f64, rows: ConstraintRows<'_>) {
         match self {
             Self::PointCoincidence(c) => c.linearise(frames, rows),

@@ -2,7 +2,7 @@
 //! the fixed joint, and the temporary lock of a clearance joint at assembly.
 
 use super::ConstraintRows;
-use crate::dynamics::frame::{set_body_columns, BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{BodyPoint, Frame, Vec2};
 
 /// Two body points held at a constant global offset (zero for a revolute joint).
 #[derive(Clone, Debug, PartialEq)]
@@ -32,10 +32,8 @@ impl PointCoincidence {
         let si = fi.rotate(self.first.local);
         let sj = fj.rotate(self.second.local);
         let r = rows.row;
-        set_body_columns(rows.jacobian.row_mut(r), self.first.body, 1.0, 0.0, -si.y);
-        set_body_columns(rows.jacobian.row_mut(r), self.second.body, -1.0, 0.0, sj.y);
-        set_body_columns(rows.jacobian.row_mut(r + 1), self.first.body, 0.0, 1.0, si.x);
-        set_body_columns(rows.jacobian.row_mut(r + 1), self.second.body, 0.0, -1.0, -sj.x);
+        rows.jacobian[r] = [[1.0, 0.0, -si.y], [-1.0, 0.0, sj.y]];
+        rows.jacobian[r + 1] = [[0.0, 1.0, si.x], [0.0, -1.0, -sj.x]];
         let g = si * fi.angular_velocity.powi(2) - sj * fj.angular_velocity.powi(2);
         rows.nu[r] = 0.0;
         rows.nu[r + 1] = 0.0;

@@ -2,7 +2,7 @@
 //! translational and fixed joints, and the angle driver of a revolute joint.
 
 use super::{ConstraintRows, Target};
-use crate::dynamics::frame::{set_body_columns, BodyIndex, Frame};
+use crate::dynamics::frame::{BodyIndex, Frame};
 
 /// The angle of the second body relative to the first is prescribed.
 #[derive(Clone, Debug, PartialEq)]
@@ -24,8 +24,7 @@ impl RelativeAngle {
     /// Jacobian `[-1 on phi_i, +1 on phi_j]`, `nu = theta_dot`, `gamma = theta_ddot`.
     pub fn linearise(&self, t: f64, rows: ConstraintRows<'_>) {
         let r = rows.row;
-        set_body_columns(rows.jacobian.row_mut(r), self.first, 0.0, 0.0, -1.0);
-        set_body_columns(rows.jacobian.row_mut(r), self.second, 0.0, 0.0, 1.0);
+        rows.jacobian[r] = [[0.0, 0.0, -1.0], [0.0, 0.0, 1.0]];
         let target = self.target.sample(t);
         rows.nu[r] = target.rate;
         rows.gamma[r] = target.acceleration;
