@@ -107,12 +107,14 @@ impl Trajectory {
     pub(crate) fn push(&mut self, model: &Model, t: f64, y: &[f64], ws: &mut Workspace) {
         update_constraint_forces(model, ws);
         let ws = &*ws;
+        let energy = kinetic_and_potential_energy(model, y, ws);
         self.time.push(t);
-        self.samples.extend(model.channels.iter().map(|channel| value(model, channel.source, y, ws)));
+        self.samples.extend(model.channels.iter().map(|channel| value(model, channel.source, y, ws, energy)));
     }
 }
 
-fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace) -> f64 {
+/// The value of one channel; `energy` is `[kinetic, potential]` [J] of the sample.
+fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, energy: [f64; 2]) -> f64 {
     let n = model.n_coordinates();
     match source {
         Source::Coordinate(k) => y[k],
@@ -124,7 +126,9 @@ fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace) -> f64 {
         Source::Film(j, which) => film_value(j, which, ws),
         Source::Force(f, 0) => ws.force_outputs[f].primary,
         Source::Force(f, _) => ws.force_outputs[f].secondary,
-        Source::Energy(which) => energy(model, which, y, ws),
+        Source::Energy(0) => energy[0],
+        Source::Energy(1) => energy[1],
+        Source::Energy(_) => energy[0] + energy[1],
     }
 }
 
@@ -227,7 +231,8 @@ fn relative_radial_velocity(model: &Model, j: usize, ws: &Workspace) -> f64 {
     e_dot.dot(&e) / distance
 }
 
-fn energy(model: &Model, which: u8, y: &[f64], ws: &Workspace) -> f64 {
+/// Kinetic and potential energy [J] of the state y (gravity, force elements, contact).
+fn kinetic_and_potential_energy(model: &Model, y: &[f64], ws: &Workspace) -> [f64; 2] {
     let n = model.n_coordinates();
     let kinetic: f64 = model
         .bodies
@@ -241,11 +246,7 @@ fn energy(model: &Model, which: u8, y: &[f64], ws: &Workspace) -> f64 {
     let potential = gravity_potential_energy(&model.masses, model.gravity, &y[..n])
         + ws.force_outputs.iter().map(|f| f.potential_energy).sum::<f64>()
         + model.clearance_joints.iter().zip(&ws.contacts).map(|(j, c)| j.stiffness.elastic_energy(c.penetration.max(0.0))).sum::<f64>();
-    match which {
-        0 => kinetic,
-        1 => potential,
-        _ => kinetic + potential,
-    }
+    [kinetic, potential]
 }
 
 /// Names of the quantities of a clearance joint, by `Source::Clearance` index.
