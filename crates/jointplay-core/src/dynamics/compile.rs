@@ -6,7 +6,7 @@ use std::collections::HashMap;
 use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES, FILM_QUANTITIES};
 use super::frame::{perp, BodyIndex, BodyPoint, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm};
-use crate::linalg::SparseCholesky;
+use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
@@ -63,7 +63,7 @@ impl<'s> Compiler<'s> {
             row_owner: Vec::new(),
             row_bodies: Vec::new(),
             schur_terms: Vec::new(),
-            schur_factor: SparseCholesky::analyse(0, &[]),
+            schur_factor: PatternLdl::analyse(0, &[]),
             elements: Vec::new(),
             clearance_joints: Vec::new(),
             clearance_names: Vec::new(),
@@ -430,22 +430,32 @@ impl<'s> Compiler<'s> {
     }
 
     /// The terms of `Phi_q M^-1 Phi_q^T` (one per pair of row blocks on a common body, rows in
-    /// ascending order) and the elimination program of its dynamic rows.
+    /// ascending order) and the factorisation of its dynamic rows.
     fn analyse_constraint_matrix(&mut self) {
         let model = &mut self.model;
         let rows = &model.row_bodies;
+        // (a, b, block of a, block of b, body)
+        let mut terms = Vec::new();
         for a in 0..rows.len() {
             for b in 0..=a {
                 for (slot_a, &body) in rows[a].iter().enumerate().filter(|&(_, &k)| k != usize::MAX) {
                     for (slot_b, _) in rows[b].iter().enumerate().filter(|&(_, &k)| k == body) {
-                        model.schur_terms.push(SchurTerm { row: a, column: b, first: 2 * a + slot_a, second: 2 * b + slot_b, body });
+                        terms.push((a, b, 2 * a + slot_a, 2 * b + slot_b, body));
                     }
                 }
             }
         }
         let m = model.row_offsets[model.n_dynamic_constraints];
-        let lower: Vec<(usize, usize)> = model.schur_terms.iter().filter(|t| t.row < m).map(|t| (t.row, t.column)).collect();
-        model.schur_factor = SparseCholesky::analyse(m, &lower);
+        let lower: Vec<(usize, usize)> = terms.iter().filter(|t| t.0 < m).map(|t| (t.0, t.1)).collect();
+        model.schur_factor = PatternLdl::analyse(m, &lower);
+        let narrow = |i: usize| u32::try_from(i).expect("a model has fewer than 2^32 constraint rows");
+        model.schur_terms = terms
+            .into_iter()
+            .map(|(a, b, first, second, body)| {
+                let entry = if a < m { model.schur_factor.storage_index(a, b) } else { 0 };
+                SchurTerm { row: narrow(a), column: narrow(b), entry: narrow(entry), first: narrow(first), second: narrow(second), body: narrow(body) }
+            })
+            .collect();
     }
 
     fn finish(mut self) -> Result<Model, ModelErrors> {

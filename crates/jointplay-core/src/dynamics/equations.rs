@@ -11,6 +11,7 @@
 
 use super::frame::{add_point_force, Frame};
 use super::state::ContactMemory;
+use super::model::SchurTerm;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 use crate::force::gravity_generalised_force;
@@ -119,13 +120,21 @@ pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Work
     schur.fill(0.0);
     let blocks = ws.jacobian.as_flattened();
     let inverse_mass = body_blocks(&model.inverse_mass);
-    for term in model.schur_terms.iter().take_while(|term| term.row < rows) {
-        let (ra, rb, w) = (&blocks[term.first], &blocks[term.second], &inverse_mass[term.body]);
-        schur[term.row * rows + term.column] += ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2];
-    }
+    let term_value = |term: &SchurTerm| {
+        let (ra, rb, w) = (&blocks[term.first as usize], &blocks[term.second as usize], &inverse_mass[term.body as usize]);
+        ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2]
+    };
+    let terms = model.schur_terms.iter().take_while(|term| (term.row as usize) < rows);
     if rows == model.schur_factor.size() {
+        // the dynamic rows, in the factorisation's own layout
+        for term in terms {
+            schur[term.entry as usize] += term_value(term);
+        }
         model.schur_factor.factor(schur)
     } else {
+        for term in terms {
+            schur[term.row as usize * rows + term.column as usize] += term_value(term);
+        }
         cholesky_factor(schur, rows)
     }
 }

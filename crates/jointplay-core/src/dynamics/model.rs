@@ -4,7 +4,7 @@ use super::channels::Channel;
 use super::frame::{BodyIndex, Vec2};
 use crate::force::ForceElement;
 use crate::joint::{ClearanceRevolute, Constraint};
-use crate::linalg::SparseCholesky;
+use crate::linalg::PatternLdl;
 
 /// A planar rigid body with its frame at the centre of mass.
 #[derive(Clone, Debug, PartialEq)]
@@ -81,8 +81,8 @@ pub struct Model {
     pub row_bodies: Vec<[usize; 2]>,
     /// The terms of `Phi_q M^-1 Phi_q^T` over all rows, rows in ascending order (see [`SchurTerm`]).
     pub schur_terms: Vec<SchurTerm>,
-    /// Elimination program of `Phi_q M^-1 Phi_q^T` for the dynamic rows, fill-in included.
-    pub schur_factor: SparseCholesky,
+    /// Factorisation of `Phi_q M^-1 Phi_q^T` for the dynamic rows, chosen from its pattern.
+    pub schur_factor: PatternLdl,
     /// Joints, drivers and assembly locks that own constraints.
     pub elements: Vec<IdealElement>,
     /// Clearance joints.
@@ -102,19 +102,22 @@ pub struct Model {
 }
 
 /// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)`, `a >= b`, of
-/// `Phi_q M^-1 Phi_q^T`, by indices of Jacobian blocks and coordinate triples.
+/// `Phi_q M^-1 Phi_q^T`, by indices of Jacobian blocks and coordinate triples
+/// (32-bit: the terms are read at every evaluation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SchurTerm {
     /// Row a.
-    pub row: usize,
+    pub row: u32,
     /// Row b (at most a).
-    pub column: usize,
+    pub column: u32,
+    /// Where entry (a, b) is stored for [`Model::schur_factor`] (dynamic rows only).
+    pub entry: u32,
     /// Row a's block for the body: `2 a + slot` among the Jacobian's blocks.
-    pub first: usize,
+    pub first: u32,
     /// Row b's block for the body: `2 b + slot`.
-    pub second: usize,
+    pub second: u32,
     /// The body's coordinate triple (in `M^-1`).
-    pub body: usize,
+    pub body: u32,
 }
 
 impl Model {

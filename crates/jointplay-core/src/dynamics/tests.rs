@@ -221,6 +221,52 @@ fn pendulum_period_matches_the_elliptic_integral_at_large_amplitude() {
     assert!(drift < 1e-8 * mass * g * length, "energy drift {drift}");
 }
 
+/// A chain of `links` uniform bars (1 kg, 0.2 m) hanging from the ground, all joints revolute,
+/// started horizontal: its 2 `links` constraint rows form one group.
+fn hanging_chain(links: usize) -> Model {
+    let bodies: Vec<String> = (0..links)
+        .map(|k| {
+            format!(
+                r#"{{"name": "bar{k}", "mass": 1.0, "inertia": 0.00333333, "position": [{x}, 0],
+                    "points": [{{"name": "L", "position": [-0.1, 0]}}, {{"name": "R", "position": [0.1, 0]}}]}}"#,
+                x = 0.1 + 0.2 * k as f64
+            )
+        })
+        .collect();
+    let joints: Vec<String> = (0..links)
+        .map(|k| {
+            let first = if k == 0 { "ground.O".to_string() } else { format!("bar{}.R", k - 1) };
+            format!(r#"{{"type": "revolute", "name": "pin{k}", "first": "{first}", "second": "bar{k}.L"}}"#)
+        })
+        .collect();
+    model(&format!(
+        r#"{{"gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}], "bodies": [{}], "joints": [{}]}}"#,
+        bodies.join(","),
+        joints.join(",")
+    ))
+}
+
+#[test]
+fn a_chain_conserves_energy_with_group_kernels_and_with_the_sparse_program() {
+    // 4 links: 8 coupled rows, one dense group; 6 links: 12 rows, the elimination program
+    for (links, grouped) in [(4, true), (6, false)] {
+        let m = hanging_chain(links);
+        assert_eq!(matches!(m.schur_factor, crate::linalg::PatternLdl::Groups(_)), grouped, "{links} links");
+        let mut ws = Workspace::new(&m);
+        let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+        let options = SimulationOptions { integrator: IntegratorOptions { rtol: 1e-10, atol: 1e-12, ..Default::default() }, ..Default::default() };
+        let outcome = simulate(&m, &mut state, 0.5, &options, None);
+        assert!(outcome.error.is_none(), "{:?}", outcome.error);
+        let e = outcome.trajectory.channel("system.energy").unwrap();
+        let drop = 9.81 * links as f64 * 0.2 * links as f64 / 2.0; // scale of the potential energy released [J]
+        let drift = e.iter().map(|v| (v - e[0]).abs()).fold(0.0, f64::max);
+        assert!(drift < 1e-9 * drop, "{links} links: energy drift {drift} J");
+        // and the chain did swing down
+        let last = outcome.trajectory.channel(&format!("bar{}.y", links - 1)).unwrap();
+        assert!(*last.last().unwrap() < -0.1, "{links} links: end bar at y = {}", last.last().unwrap());
+    }
+}
+
 #[test]
 fn redundant_joint_is_reported_as_a_singular_configuration_naming_it() {
     let m = model(
@@ -370,6 +416,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     let rows = model.row_offsets[model.n_dynamic_constraints];
     assert_eq!((rows, model.schur_factor.size()), (7, 7));
     assert_eq!(model.schur_factor.factor_nonzeros(), 15 + 3);
+    assert!(matches!(model.schur_factor, crate::linalg::PatternLdl::Groups(_)), "a group of 5 rows and one of 2");
     let mut ws = Workspace::new(&model);
     let state = assemble(&model, 0.0, &mut ws).unwrap();
     let n = model.n_coordinates();

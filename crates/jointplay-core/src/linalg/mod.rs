@@ -9,12 +9,16 @@
 //! factorisation of the implicit integrator's iteration matrix. nalgebra is
 //! used for fixed-size 2D vectors and, in tests, as the independent check.
 
+pub mod block_ldl;
 mod cholesky;
 mod dense;
 mod lu;
+mod pattern_ldl;
 mod sparse_cholesky;
 
 pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency};
 pub use dense::DenseMatrix;
 pub use lu::{lu_factor, lu_solve, SingularMatrix};
+pub use block_ldl::BlockLdl;
+pub use pattern_ldl::PatternLdl;
 pub use sparse_cholesky::SparseCholesky;
