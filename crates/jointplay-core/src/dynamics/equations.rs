@@ -83,9 +83,9 @@ fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
 }
 
 /// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's bodies.
-pub(crate) fn jacobian_times(model: &Model, rows: usize, ws: &Workspace, v: &[f64], out: &mut [f64]) {
+pub(crate) fn jacobian_times(model: &Model, rows: usize, jacobian: &[RowJacobian], v: &[f64], out: &mut [f64]) {
     let x = body_blocks(v);
-    for ((o, bodies), row) in out[..rows].iter_mut().zip(&model.row_bodies).zip(&ws.jacobian) {
+    for ((o, bodies), row) in out[..rows].iter_mut().zip(&model.row_bodies).zip(jacobian) {
         let mut sum = 0.0;
         for (block, &k) in row.iter().zip(bodies) {
             if k != usize::MAX {
@@ -219,7 +219,6 @@ pub fn accelerations(
     stabilization: Stabilization,
     ws: &mut Workspace,
 ) -> Result<(), SimulationError> {
-    let n = model.n_coordinates();
     // the factor depends on the positions only: kept from a projection at the same (t, q)
     let factored = holds_factor(ws, model.row_offsets[model.n_dynamic_constraints], t, q);
     update_frames(model, q, qdot, &mut ws.frames);
@@ -227,12 +226,12 @@ pub fn accelerations(
     let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
     if let Stabilization::Baumgarte { alpha, beta } = stabilization {
         constraint_residuals(model, model.n_dynamic_constraints, t, ws);
-        let mut phi_dot = std::mem::take(&mut ws.multipliers);
-        jacobian_times(model, rows, ws, qdot, &mut phi_dot);
+        // (the multipliers' buffer holds Phi_dot for a moment)
+        let phi_dot = &mut ws.multipliers;
+        jacobian_times(model, rows, &ws.jacobian, qdot, phi_dot);
         for r in 0..rows {
             ws.gamma[r] -= 2.0 * alpha * (phi_dot[r] - ws.nu[r]) + beta * beta * ws.residual[r];
         }
-        ws.multipliers = phi_dot;
     }
     // lambda from (J M^-1 J^T) lambda = J M^-1 Q - gamma
     if rows > 0 {
@@ -241,23 +240,23 @@ pub fn accelerations(
         } else {
             factor_constraint_matrix_at(model, rows, t, q, ws).map_err(|d| singular_error(model, t, d))?;
         }
-        for k in 0..n {
-            ws.accelerations[k] = model.inverse_mass[k] * ws.generalised_force[k];
+        // the right-hand side J M^-1 Q - gamma, solved in place into lambda
+        for ((a, w), f) in ws.accelerations.iter_mut().zip(&model.inverse_mass).zip(&ws.generalised_force) {
+            *a = w * f;
         }
-        let mut rhs = std::mem::take(&mut ws.multipliers);
-        jacobian_times(model, rows, ws, &ws.accelerations, &mut rhs);
-        for r in 0..rows {
-            rhs[r] -= ws.gamma[r];
+        let lambda = &mut ws.multipliers;
+        jacobian_times(model, rows, &ws.jacobian, &ws.accelerations, lambda);
+        for (l, g) in lambda[..rows].iter_mut().zip(&ws.gamma) {
+            *l -= g;
         }
-        solve_constraint_matrix(model, rows, &ws.schur, &mut rhs);
-        ws.multipliers = rhs;
+        solve_constraint_matrix(model, rows, &ws.schur, lambda);
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     } else {
         ws.scratch.fill(0.0);
     }
     // q_ddot = M^-1 (Q - J^T lambda)
-    for k in 0..n {
-        ws.accelerations[k] = model.inverse_mass[k] * (ws.generalised_force[k] - ws.scratch[k]);
+    for (((a, w), f), c) in ws.accelerations.iter_mut().zip(&model.inverse_mass).zip(&ws.generalised_force).zip(&ws.scratch) {
+        *a = w * (f - c);
     }
     check_finite(model, t, ws)
 }

@@ -70,14 +70,14 @@ pub(crate) fn project_velocities(
     }
     update_frames(model, q, qdot, &mut ws.frames);
     linearise_constraints(model, n_constraints, t, ws);
-    let mut residual = std::mem::take(&mut ws.multipliers);
-    jacobian_times(model, rows, ws, qdot, &mut residual);
+    // the velocity residuals Phi_q q_dot - nu, in the multipliers' buffer
+    let residual = &mut ws.multipliers;
+    jacobian_times(model, rows, &ws.jacobian, qdot, residual);
     let mut largest: f64 = 0.0;
-    for r in 0..rows {
-        residual[r] -= ws.nu[r];
-        largest = largest.max(residual[r].abs());
+    for (r, nu) in residual[..rows].iter_mut().zip(&ws.nu) {
+        *r -= nu;
+        largest = largest.max(r.abs());
     }
-    ws.multipliers = residual;
     if largest <= tolerance {
         return Ok(());
     }
