@@ -105,6 +105,33 @@ fn channel_major_values_are_the_columns_of_the_recorded_samples() {
 }
 
 #[test]
+fn baumgarte_and_unstabilised_runs_follow_the_slider_crank_closed_form() {
+    // without projection the constraints are held only by the acceleration equations
+    // (and Baumgarte's feedback); over one revolution the drift stays far below the tolerance used
+    let omega = 5000.0 * 2.0 * PI / 60.0;
+    let m = slider_crank(omega, 0.0);
+    let period = 2.0 * PI / omega;
+    for stabilization in [Stabilization::Baumgarte { alpha: 500.0, beta: 500.0 }, Stabilization::None] {
+        let mut ws = Workspace::new(&m);
+        let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+        let options = SimulationOptions {
+            integrator: IntegratorOptions { rtol: 1e-9, atol: 1e-12, output_step: Some(period / 50.0), ..Default::default() },
+            stabilization,
+            ..Default::default()
+        };
+        let outcome = simulate(&m, &mut state, period, &options, None);
+        assert!(outcome.error.is_none(), "{stabilization:?}: {:?}", outcome.error);
+        let tr = &outcome.trajectory;
+        let (x, a) = (tr.channel("slider.x").unwrap(), tr.channel("slider.ax").unwrap());
+        for (k, &t) in tr.time.iter().enumerate() {
+            let (xe, _, ae) = slider_closed_form(0.05, 0.12, omega, omega * t);
+            assert!((x[k] - xe).abs() < 1e-8, "{stabilization:?}, t={t}: x {} vs {xe}", x[k]);
+            assert!((a[k] - ae).abs() < 1e-4 * omega * omega * 0.05, "{stabilization:?}, t={t}: a {} vs {ae}", a[k]);
+        }
+    }
+}
+
+#[test]
 fn horizontal_bar_held_by_a_driver_carries_its_weight_at_the_pin() {
     // bar of 2 kg and 0.8 m pinned at one end, held horizontal: pin force m g up, driver torque m g l/2
     let m = model(
