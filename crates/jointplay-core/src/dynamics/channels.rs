@@ -166,7 +166,7 @@ fn reaction_value(model: &Model, e: usize, which: u8, ws: &Workspace) -> f64 {
     match which {
         0 => fx,
         1 => fy,
-        2 => fx.hypot(fy),
+        2 => (fx * fx + fy * fy).sqrt(),
         _ => {
             // moment about the element's point on the second body
             let element = &model.elements[e];
