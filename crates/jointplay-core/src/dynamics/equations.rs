@@ -116,7 +116,7 @@ pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &[R
 /// row blocks on a common body) are summed; for the dynamic rows the factorisation
 /// follows the elimination program of that pattern (`linalg/sparse_cholesky.rs`).
 pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
-    let schur = &mut ws.schur[..rows * rows];
+    let schur = &mut ws.schur[..rows * (rows + 1)];
     schur.fill(0.0);
     let blocks = ws.jacobian.as_flattened();
     let inverse_mass = body_blocks(&model.inverse_mass);

@@ -450,7 +450,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     update_frames(&model, &state.y[..n], &state.y[n..], &mut ws.frames);
     equations::linearise_constraints(&model, model.n_dynamic_constraints, 0.0, &mut ws);
     equations::factor_constraint_matrix(&model, rows, &mut ws).unwrap();
-    let sparse = ws.schur[..rows * rows].to_vec();
+    let sparse = ws.schur[..rows * (rows + 1)].to_vec();
     // the same matrix formed densely from the Jacobian and factored by the dense kernel
     let mut dense = vec![0.0; rows * rows];
     for a in 0..rows {

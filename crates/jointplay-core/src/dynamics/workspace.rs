@@ -24,7 +24,7 @@ pub struct Workspace {
     pub nu: Vec<f64>,
     /// Acceleration right-hand side `gamma`.
     pub gamma: Vec<f64>,
-    /// `Phi_q M^-1 Phi_q^T`, then its Cholesky factor.
+    /// `Phi_q M^-1 Phi_q^T`, then its factor (`m (m + 1)` values for m rows, see `linalg::PatternLdl`).
     pub schur: Vec<f64>,
     /// Time [s] and row count for which `schur` holds the factor at
     /// `factored_positions`; cleared whenever the Jacobian is linearised anew.
@@ -67,7 +67,7 @@ impl Workspace {
             residual: vec![0.0; m],
             nu: vec![0.0; m],
             gamma: vec![0.0; m],
-            schur: vec![0.0; m * m],
+            schur: vec![0.0; m * (m + 1)],
             factored_at: None,
             factored_positions: vec![0.0; n],
             multipliers: vec![0.0; m],

@@ -11,7 +11,9 @@
 //!
 //! The layout of the factor is that of
 //! [`SparseCholesky`](super::SparseCholesky) within each group (unit lower
-//! `L` below the diagonal, `D` on it) and so is the rank test: a pivot
+//! `L` below the diagonal, `D` on it), followed by the group's `1 / d_j` (the
+//! solves multiply instead of divide); so a matrix of n rows takes up to
+//! `n (n + 1)` values. The rank test is the same too: a pivot
 //! `d_j` at or below [`RELATIVE_PIVOT_TOLERANCE`] times the largest diagonal
 //! entry of the whole matrix reports the row as dependent.
 
@@ -25,7 +27,7 @@ pub const MAX_GROUP: usize = 8;
 struct Group {
     /// The matrix rows of the group, ascending.
     rows: Vec<usize>,
-    /// Start of the group's square in the storage.
+    /// Start of the group's square (then its inverse pivots) in the storage.
     offset: usize,
 }
 
@@ -74,7 +76,7 @@ impl BlockLdl {
         let mut offset = 0;
         for g in &mut groups {
             g.offset = offset;
-            offset += g.rows.len() * g.rows.len();
+            offset += g.rows.len() * (g.rows.len() + 1);
         }
         Some(Self { n, groups, place })
     }
@@ -108,7 +110,7 @@ impl BlockLdl {
             }
         }
         for g in &self.groups {
-            let block = &mut a[g.offset..g.offset + g.rows.len() * g.rows.len()];
+            let block = &mut a[g.offset..g.offset + g.rows.len() * (g.rows.len() + 1)];
             dispatch_factor(block, g.rows.len(), scale).map_err(|(local, relative_pivot)| RankDeficiency { row: g.rows[local], relative_pivot })?;
         }
         Ok(())
@@ -122,7 +124,7 @@ impl BlockLdl {
             for (x, &row) in local.iter_mut().zip(&g.rows) {
                 *x = b[row];
             }
-            dispatch_solve(&factor[g.offset..g.offset + size * size], size, &mut local[..size]);
+            dispatch_solve(&factor[g.offset..g.offset + size * (size + 1)], size, &mut local[..size]);
             for (x, &row) in local.iter().zip(&g.rows) {
                 b[row] = *x;
             }
@@ -158,11 +160,12 @@ fn dispatch_solve(a: &[f64], size: usize, x: &mut [f64]) {
     }
 }
 
-/// Dense `L D L^T` of the row-major `N x N` block `a` (lower triangle read); the error
-/// names the local row whose pivot fell below the tolerance and its relative pivot.
+/// Dense `L D L^T` of the row-major `N x N` block at the start of `a` (lower triangle
+/// read), with `1 / d_j` stored in the N values after it; the error names the local row
+/// whose pivot fell below the tolerance and its relative pivot.
 #[inline(always)]
 fn factor<const N: usize>(a: &mut [f64], scale: f64) -> Result<(), (usize, f64)> {
-    let a = &mut a[..N * N];
+    let a = &mut a[..N * (N + 1)];
     for j in 0..N {
         // w_k = l_jk d_k, then d_j = a_jj - sum_k l_jk w_k
         let mut w = [0.0; N];
@@ -176,6 +179,7 @@ fn factor<const N: usize>(a: &mut [f64], scale: f64) -> Result<(), (usize, f64)>
         }
         a[j * N + j] = pivot;
         let inverse = 1.0 / pivot;
+        a[N * N + j] = inverse;
         for i in (j + 1)..N {
             let mut s = a[i * N + j];
             for k in 0..j {
@@ -190,14 +194,14 @@ fn factor<const N: usize>(a: &mut [f64], scale: f64) -> Result<(), (usize, f64)>
 /// Solves `L D L^T x = b` in place with the block factored by [`factor`].
 #[inline(always)]
 fn solve<const N: usize>(a: &[f64], x: &mut [f64]) {
-    let (a, x) = (&a[..N * N], &mut x[..N]);
+    let (a, x) = (&a[..N * (N + 1)], &mut x[..N]);
     for i in 0..N {
         for k in 0..i {
             x[i] -= a[i * N + k] * x[k];
         }
     }
     for i in 0..N {
-        x[i] /= a[i * N + i];
+        x[i] *= a[N * N + i];
     }
     for i in (0..N).rev() {
         for k in (i + 1)..N {
@@ -229,7 +233,7 @@ mod tests {
     /// The groups' storage filled from a full matrix.
     fn stored(layout: &BlockLdl, a: &[f64], lower: &[(usize, usize)]) -> Vec<f64> {
         let n = layout.size();
-        let mut s = vec![0.0; n * n];
+        let mut s = vec![0.0; n * (n + 1)];
         for d in 0..n {
             s[layout.storage_index(d, d)] = a[d * n + d];
         }

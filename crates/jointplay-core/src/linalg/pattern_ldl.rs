@@ -37,7 +37,7 @@ impl PatternLdl {
         }
     }
 
-    /// Where the lower entry `(i, j)` of the matrix is stored (the buffer holds `n * n` values).
+    /// Where the lower entry `(i, j)` of the matrix is stored (the buffer holds `n * (n + 1)` values).
     pub fn storage_index(&self, i: usize, j: usize) -> usize {
         match self {
             Self::Groups(f) => f.storage_index(i, j),
@@ -45,7 +45,7 @@ impl PatternLdl {
         }
     }
 
-    /// Factors the matrix stored in `a` in place (entries outside the pattern zero).
+    /// Factors the matrix stored in `a` (`n * (n + 1)` values) in place (entries outside the pattern zero).
     pub fn factor(&self, a: &mut [f64]) -> Result<(), RankDeficiency> {
         match self {
             Self::Groups(f) => f.factor(a),
