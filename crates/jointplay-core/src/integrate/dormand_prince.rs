@@ -66,8 +66,14 @@ pub(crate) struct DormandPrince {
     k: [Vec<f64>; 7],
     y_stage: Vec<f64>,
     y_new: Vec<f64>,
-    /// Dense-output coefficients r1..r5 of the last accepted step.
+    /// Dense-output coefficients r1..r5 of the last accepted step (r1, its start
+    /// state, kept at acceptance; r2..r5 formed by `prepare_dense` when first needed).
     r: [Vec<f64>; 5],
+    /// Whether r2..r5 belong to the last accepted step.
+    dense_ready: bool,
+    /// Whether the stages of the last accepted step are still there to form r2..r5
+    /// (until the next attempt or the first-same-as-last swap).
+    dense_formable: bool,
     t_old: f64,
     h_old: f64,
     control: StepController,
@@ -84,6 +90,8 @@ impl DormandPrince {
             y_stage: v(),
             y_new: v(),
             r: [v(), v(), v(), v(), v()],
+            dense_ready: false,
+            dense_formable: false,
             t_old: 0.0,
             h_old: 0.0,
             control: StepController::new(PI_BETA, GROW_LIMIT),
@@ -114,21 +122,13 @@ impl DormandPrince {
         eval(system, stats, t, &self.y_stage, &mut rest[0])
     }
 
-    /// Fills r1..r5 so that y(t_old + θh) = r1 + θ(r2 + (1-θ)(r3 + θ(r4 + (1-θ) r5))).
-    fn prepare_dense(&mut self, y: &[f64], t: f64, h: f64) {
-        let k = &self.k;
-        for i in 0..y.len() {
-            let dy = self.y_new[i] - y[i];
-            let bspl = h * k[0][i] - dy;
-            self.r[0][i] = y[i];
-            self.r[1][i] = dy;
-            self.r[2][i] = bspl;
-            self.r[3][i] = dy - h * k[6][i] - bspl;
-            self.r[4][i] =
-                h * (D1 * k[0][i] + D3 * k[2][i] + D4 * k[3][i] + D5 * k[4][i] + D6 * k[5][i] + D7 * k[6][i]);
-        }
+    /// Keeps the start (t, y) and the step h of an accepted step for its dense output.
+    fn keep_step_start(&mut self, y: &[f64], t: f64, h: f64) {
+        self.r[0].copy_from_slice(y);
         self.t_old = t;
         self.h_old = h;
+        self.dense_ready = false;
+        self.dense_formable = true;
     }
 }
 
@@ -142,6 +142,7 @@ impl Stepper for DormandPrince {
         h_hint: Option<f64>,
     ) -> Result<f64, SimulationError> {
         // derivative at the (new) initial state
+        self.dense_formable = false;
         eval_start(system, stats, t, y, &mut self.k[0])?;
         self.control.reset();
         match h_hint {
@@ -161,6 +162,7 @@ impl Stepper for DormandPrince {
         y: &[f64],
         h: f64,
     ) -> Result<Attempt, SimulationError> {
+        self.dense_formable = false;
         // stages 2..6, then the 5th-order solution and its derivative (FSAL)
         self.stage(system, stats, t + C2 * h, y, h, 1, &[A21])?;
         self.stage(system, stats, t + C3 * h, y, h, 2, &[A31, A32])?;
@@ -184,7 +186,7 @@ impl Stepper for DormandPrince {
         }
         let err = error_norm(h, &self.y_stage, y, &self.y_new, &self.opts);
         if err <= 1.0 {
-            self.prepare_dense(y, t, h);
+            self.keep_step_start(y, t, h);
             Ok(Attempt { accepted: true, h_next: self.control.accepted(h, err, ERROR_ORDER) })
         } else {
             Ok(Attempt { accepted: false, h_next: self.control.rejected(h, err, ERROR_ORDER) })
@@ -195,7 +197,27 @@ impl Stepper for DormandPrince {
         &self.y_new
     }
 
+    /// Fills r2..r5 so that y(t_old + θh) = r1 + θ(r2 + (1-θ)(r3 + θ(r4 + (1-θ) r5))).
+    fn prepare_dense(&mut self) {
+        if self.dense_ready {
+            return;
+        }
+        debug_assert!(self.dense_formable, "dense output prepared after the stages of its step were replaced");
+        let (k, h) = (&self.k, self.h_old);
+        let [r0, r1, r2, r3, r4] = &mut self.r;
+        for i in 0..r0.len() {
+            let dy = self.y_new[i] - r0[i];
+            let bspl = h * k[0][i] - dy;
+            r1[i] = dy;
+            r2[i] = bspl;
+            r3[i] = dy - h * k[6][i] - bspl;
+            r4[i] = h * (D1 * k[0][i] + D3 * k[2][i] + D4 * k[3][i] + D5 * k[4][i] + D6 * k[5][i] + D7 * k[6][i]);
+        }
+        self.dense_ready = true;
+    }
+
     fn dense(&self, t: f64, out: &mut [f64]) {
+        debug_assert!(self.dense_ready, "dense output used before prepare_dense");
         let theta = (t - self.t_old) / self.h_old;
         let theta1 = 1.0 - theta;
         let r = &self.r;
@@ -212,6 +234,7 @@ impl Stepper for DormandPrince {
         _y: &[f64],
     ) -> Result<(), SimulationError> {
         // first same as last: f(t_new, y_new) becomes the first stage of the next step
+        self.dense_formable = false;
         self.k.swap(0, 6);
         Ok(())
     }

@@ -1,7 +1,7 @@
 //! The step loop shared by both methods: step limits, output sampling,
 //! event handling, `accept()` and restarts.
 
-use super::events::{find_first_event, EventBuffers};
+use super::events::{find_first_event, step_needs_scan, EventBuffers};
 use super::{IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
 
@@ -67,7 +67,7 @@ pub(crate) fn run<S: OdeSystem, P: Stepper>(
 #[allow(clippy::too_many_arguments)]
 fn finish_step<S: OdeSystem, P: Stepper>(
     system: &mut S,
-    stepper: &P,
+    stepper: &mut P,
     stats: &mut Statistics,
     events: &mut EventBuffers,
     grid: &mut OutputGrid,
@@ -77,9 +77,10 @@ fn finish_step<S: OdeSystem, P: Stepper>(
 ) -> Result<(f64, bool), SimulationError> {
     // earliest event in the step, if any
     let mut event_time = None;
-    if !events.g_old.is_empty() {
+    if !events.g_old.is_empty() && step_needs_scan(system, stepper.y_new(), t_old, t_new, events) {
+        stepper.prepare_dense();
         let dense = |t: f64, out: &mut [f64]| stepper.dense(t, out);
-        event_time = find_first_event(system, dense, stepper.y_new(), t_old, t_new, events);
+        event_time = find_first_event(system, dense, t_old, t_new, events);
     }
     let t_stop = event_time.unwrap_or(t_new);
     // samples strictly inside the step, from the dense output
@@ -172,11 +173,12 @@ impl OutputGrid {
     fn record_inside<S: OdeSystem, P: Stepper>(
         &mut self,
         system: &mut S,
-        stepper: &P,
+        stepper: &mut P,
         t_stop: f64,
         buffer: &mut [f64],
     ) -> Result<(), SimulationError> {
         while self.next < t_stop {
+            stepper.prepare_dense();
             stepper.dense(self.next, buffer);
             system.record(self.next, buffer)?;
             self.advance();

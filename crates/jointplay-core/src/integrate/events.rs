@@ -115,27 +115,23 @@ impl EventBuffers {
     }
 }
 
+/// Evaluates g (and its rates) at the end `(t_new, y_new)` of an accepted step;
+/// false when no event function can plausibly have crossed zero in the step
+/// (see [`EventBuffers::crossing_implausible`]), so that it needs no scan.
+pub(crate) fn step_needs_scan<S: OdeSystem>(system: &mut S, y_new: &[f64], t_old: f64, t_new: f64, buffers: &mut EventBuffers) -> bool {
+    buffers.rates_known_new = system.event_functions_and_rates(t_new, y_new, &mut buffers.g_new, &mut buffers.rate_new);
+    !(buffers.rates_known_old && buffers.rates_known_new && buffers.crossing_implausible(t_new - t_old))
+}
+
 /// Earliest event time in (t_old, t_new], scanning the step in sub-intervals;
-/// `None` when no event function rose through zero. `g_old` (and `rate_old`)
-/// must hold g at t_old; on return `g_lo` holds g at the start of the
-/// sub-interval of the event. Steps in which a crossing is implausible
-/// (see [`EventBuffers::crossing_implausible`]) are not sampled inside.
-pub(crate) fn find_first_event<S, D>(
-    system: &mut S,
-    dense: D,
-    y_new: &[f64],
-    t_old: f64,
-    t_new: f64,
-    buffers: &mut EventBuffers,
-) -> Option<f64>
+/// `None` when no event function rose through zero. `g_old` must hold g at
+/// t_old and `g_new` at t_new ([`step_needs_scan`]); on return `g_lo` holds g
+/// at the start of the sub-interval of the event.
+pub(crate) fn find_first_event<S, D>(system: &mut S, dense: D, t_old: f64, t_new: f64, buffers: &mut EventBuffers) -> Option<f64>
 where
     S: OdeSystem,
     D: Fn(f64, &mut [f64]),
 {
-    buffers.rates_known_new = system.event_functions_and_rates(t_new, y_new, &mut buffers.g_new, &mut buffers.rate_new);
-    if buffers.rates_known_old && buffers.rates_known_new && buffers.crossing_implausible(t_new - t_old) {
-        return None;
-    }
     buffers.g_lo.copy_from_slice(&buffers.g_old);
     let mut t_a = t_old;
     for i in 1..=EVENT_SUBDIVISIONS {

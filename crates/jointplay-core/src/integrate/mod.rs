@@ -125,7 +125,13 @@ pub(crate) trait Stepper {
     /// State at the end of the last accepted attempt.
     fn y_new(&self) -> &[f64];
 
-    /// State at time t inside the last accepted step, from the continuous extension.
+    /// Makes the continuous extension of the last accepted step ready for [`Stepper::dense`];
+    /// the driver calls it before the first `dense` of a step (a method may form its
+    /// extension only then, since most steps never use it).
+    fn prepare_dense(&mut self) {}
+
+    /// State at time t inside the last accepted step, from the continuous extension
+    /// (after [`Stepper::prepare_dense`]).
     fn dense(&self, t: f64, out: &mut [f64]);
 
     /// Continues after an accepted step without restart; y is the state after `accept()`.
