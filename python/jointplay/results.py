@@ -37,7 +37,8 @@ class Results:
     @classmethod
     def from_core(cls, raw: dict, spec: dict | None, options: dict | None, wall_time: float) -> Results:
         """Results from the dictionary the core returns."""
-        return cls(raw["time"], raw["names"], raw["units"], raw["descriptions"], raw["values"],
+        # the core records sample after sample, (samples, channels): its transpose is a view
+        return cls(raw["time"], raw["names"], raw["units"], raw["descriptions"], np.asarray(raw["values"]).T,
                    raw["statistics"], raw["diagnostics"], spec=spec, options=options, wall_time=wall_time,
                    error=raw["error"])
 

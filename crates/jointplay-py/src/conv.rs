@@ -3,7 +3,7 @@
 use jointplay_core::dynamics::{ChannelInfo, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::integrate::Method;
 use jointplay_core::SimulationError;
-use numpy::PyArray1;
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -71,13 +71,14 @@ pub fn channel_infos(py: Python<'_>, out: &Bound<'_, PyDict>, infos: &[ChannelIn
     Ok(())
 }
 
-/// A simulation outcome into `out`.
-pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, o: &SimulationOutcome) -> PyResult<()> {
-    let tr = &o.trajectory;
-    out.set_item("time", PyArray1::from_slice(py, &tr.time))?;
-    // channel after channel; Python reshapes it to (channels, samples)
-    out.set_item("values", PyArray1::from_vec(py, tr.channel_major()))?;
-    channel_infos(py, out, &tr.channels)?;
+/// A simulation outcome into `out` (its recorded values handed over without a copy).
+pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome) -> PyResult<()> {
+    let shape = [o.trajectory.len(), o.trajectory.channels.len()];
+    let (time, samples) = o.trajectory.take();
+    out.set_item("time", PyArray1::from_vec(py, time))?;
+    // (samples, channels) as recorded; Python keeps it and reads a channel as a column
+    out.set_item("values", PyArray1::from_vec(py, samples).reshape(shape)?)?;
+    channel_infos(py, out, &o.trajectory.channels)?;
     let s = &o.statistics;
     let stats = PyDict::new(py);
     stats.set_item("accepted_steps", s.accepted_steps)?;

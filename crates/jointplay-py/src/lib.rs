@@ -130,10 +130,10 @@ impl CoreModel {
         }
         let out = PyDict::new(py);
         match run {
-            Ok(outcome) => conv::outcome(py, &out, &outcome)?,
+            Ok(outcome) => conv::outcome(py, &out, outcome)?,
             Err(e) => {
                 out.set_item("time", PyArray1::<f64>::zeros(py, 0, false))?;
-                out.set_item("values", PyArray2::<f64>::zeros(py, [self.model.channel_infos().len(), 0], false))?;
+                out.set_item("values", PyArray2::<f64>::zeros(py, [0, self.model.channel_infos().len()], false))?;
                 conv::channel_infos(py, &out, &self.model.channel_infos())?;
                 out.set_item("error", conv::simulation_error(py, &e)?)?;
                 out.set_item("statistics", PyDict::new(py))?;

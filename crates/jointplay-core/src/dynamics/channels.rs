@@ -90,16 +90,14 @@ impl Trajectory {
         self.channels.iter().position(|c| c.name == name).map(|c| self.column(c))
     }
 
-    /// All values channel after channel (`channels.len()` rows of `len()` samples), row-major.
-    pub fn channel_major(&self) -> Vec<f64> {
-        let (m, n) = (self.channels.len(), self.len());
-        let mut out = vec![0.0; m * n];
-        for (k, sample) in self.samples.chunks_exact(m.max(1)).enumerate().take(n) {
-            for (c, &v) in sample.iter().enumerate() {
-                out[c * n + k] = v;
-            }
-        }
-        out
+    /// All values sample after sample (`len()` rows of `channels.len()` values), row-major.
+    pub fn samples(&self) -> &[f64] {
+        &self.samples
+    }
+
+    /// Takes the times and the [`Trajectory::samples`] out, leaving the trajectory empty.
+    pub fn take(&mut self) -> (Vec<f64>, Vec<f64>) {
+        (std::mem::take(&mut self.time), std::mem::take(&mut self.samples))
     }
 
     /// Appends one sample from an evaluated workspace (whose

@@ -80,7 +80,7 @@ fn slider_crank_kinematics_match_the_closed_form() {
 }
 
 #[test]
-fn channel_major_values_are_the_columns_of_the_recorded_samples() {
+fn recorded_samples_are_rows_and_channels_their_columns() {
     let m = model(
         r#"{"gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
             "bodies": [{"name": "bar", "mass": 2.0, "inertia": 0.1067, "position": [0.4, 0],
@@ -93,11 +93,11 @@ fn channel_major_values_are_the_columns_of_the_recorded_samples() {
     let tr = &outcome.trajectory;
     let (channels, samples) = (tr.channels.len(), tr.len());
     assert!(channels > 5 && samples > 3);
-    let all = tr.channel_major();
+    let all = tr.samples();
     assert_eq!(all.len(), channels * samples);
     for c in 0..channels {
         let column = tr.channel(&tr.channels[c].name).unwrap();
-        assert_eq!(column, all[c * samples..(c + 1) * samples].to_vec());
+        assert_eq!(column, (0..samples).map(|k| all[k * channels + c]).collect::<Vec<_>>());
         assert_eq!(column[samples - 1], tr.value(c, samples - 1));
     }
     // the falling bar: its angle moves, so the columns are not all alike
