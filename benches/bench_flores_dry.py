@@ -28,6 +28,10 @@ import flores_slider_crank_dry as flores  # noqa: E402
 import reference_slider_crank as reference  # noqa: E402
 
 
+#: Speed-up over the SciPy baseline the engine is to reach (issue 2).
+TARGET_SPEEDUP = 30.0
+
+
 def engine_runner(method: str, rtol: float, atol: float):
     """A function running the engine once; returns (wall time [s], results)."""
     model = flores.build_model()
@@ -102,6 +106,12 @@ def main(argv: list[str] | None = None) -> list[dict]:
         else:
             print(f"{r['name']:<34} {1e3 * r['wall']:9.2f} ms ({1e3 * r['median']:.2f}) {r['steps']:7d} steps "
                   f"{r['rhs']:8d} rhs {per_eval:8.2f} us/rhs {r['impacts']:4d} impacts {ratio:7.1f}x ({median_ratio:.1f}x)")
+    engine = rows[0]
+    for label, ratio in (("fastest against fastest", baseline["wall"] / engine["wall"]),
+                         ("median against median", baseline["median"] / engine["median"])):
+        verdict = "met   " if ratio >= TARGET_SPEEDUP else "missed"
+        print(f"target (issue 2), dopri5 at least {TARGET_SPEEDUP:g}x faster than the baseline, {label}: "
+              f"{verdict} {ratio:.1f}x")
     return rows
 
 
