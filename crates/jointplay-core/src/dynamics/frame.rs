@@ -79,15 +79,7 @@ impl Frame {
     /// Frame of a body from its coordinates `(x, y, phi)` and their rates.
     #[inline]
     pub fn from_coordinates(q: &[f64], qdot: &[f64]) -> Frame {
-        let (sin, cos) = q[2].sin_cos();
-        Frame {
-            position: Vec2::new(q[0], q[1]),
-            angle: q[2],
-            cos,
-            sin,
-            velocity: Vec2::new(qdot[0], qdot[1]),
-            angular_velocity: qdot[2],
-        }
+        Self::with_sin_cos(q, qdot, q[2].sin_cos())
     }
 
     /// [`Frame::from_coordinates`], taking cos and sin from `previous` when its
@@ -95,7 +87,13 @@ impl Frame {
     /// (a projection, then the evaluation of the projected state).
     #[inline]
     pub fn from_coordinates_after(previous: &Frame, q: &[f64], qdot: &[f64]) -> Frame {
-        let (sin, cos) = if previous.angle.to_bits() == q[2].to_bits() { (previous.sin, previous.cos) } else { q[2].sin_cos() };
+        let sin_cos = if previous.angle.to_bits() == q[2].to_bits() { (previous.sin, previous.cos) } else { q[2].sin_cos() };
+        Self::with_sin_cos(q, qdot, sin_cos)
+    }
+
+    /// Frame from `(x, y, phi)`, their rates and `(sin phi, cos phi)`.
+    #[inline]
+    fn with_sin_cos(q: &[f64], qdot: &[f64], (sin, cos): (f64, f64)) -> Frame {
         Frame {
             position: Vec2::new(q[0], q[1]),
             angle: q[2],

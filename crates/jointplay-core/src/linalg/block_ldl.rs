@@ -132,32 +132,30 @@ impl BlockLdl {
     }
 }
 
-/// Calls the kernel compiled for `size` (1 to [`MAX_GROUP`]).
-fn dispatch_factor(a: &mut [f64], size: usize, scale: f64) -> Result<(), (usize, f64)> {
-    match size {
-        1 => factor::<1>(a, scale),
-        2 => factor::<2>(a, scale),
-        3 => factor::<3>(a, scale),
-        4 => factor::<4>(a, scale),
-        5 => factor::<5>(a, scale),
-        6 => factor::<6>(a, scale),
-        7 => factor::<7>(a, scale),
-        _ => factor::<MAX_GROUP>(a, scale),
-    }
+/// `kernel::<size>(args)` for a group size from 1 to [`MAX_GROUP`].
+macro_rules! by_size {
+    ($size:expr, $kernel:ident($($arg:expr),*)) => {
+        match $size {
+            1 => $kernel::<1>($($arg),*),
+            2 => $kernel::<2>($($arg),*),
+            3 => $kernel::<3>($($arg),*),
+            4 => $kernel::<4>($($arg),*),
+            5 => $kernel::<5>($($arg),*),
+            6 => $kernel::<6>($($arg),*),
+            7 => $kernel::<7>($($arg),*),
+            _ => $kernel::<MAX_GROUP>($($arg),*),
+        }
+    };
 }
 
-/// Calls the kernel compiled for `size` (1 to [`MAX_GROUP`]).
+/// Calls the factor kernel compiled for `size` (1 to [`MAX_GROUP`]).
+fn dispatch_factor(a: &mut [f64], size: usize, scale: f64) -> Result<(), (usize, f64)> {
+    by_size!(size, factor(a, scale))
+}
+
+/// Calls the solve kernel compiled for `size` (1 to [`MAX_GROUP`]).
 fn dispatch_solve(a: &[f64], size: usize, x: &mut [f64]) {
-    match size {
-        1 => solve::<1>(a, x),
-        2 => solve::<2>(a, x),
-        3 => solve::<3>(a, x),
-        4 => solve::<4>(a, x),
-        5 => solve::<5>(a, x),
-        6 => solve::<6>(a, x),
-        7 => solve::<7>(a, x),
-        _ => solve::<MAX_GROUP>(a, x),
-    }
+    by_size!(size, solve(a, x))
 }
 
 /// Dense `L D L^T` of the row-major `N x N` block at the start of `a` (lower triangle
@@ -214,21 +212,7 @@ fn solve<const N: usize>(a: &[f64], x: &mut [f64]) {
 mod tests {
     use super::super::{cholesky_factor, cholesky_solve};
     use super::*;
-
-    /// A symmetric positive definite n x n matrix (row-major, full) coupling exactly the
-    /// given lower entries, and its lower pattern.
-    fn matrix(n: usize, lower: &[(usize, usize)]) -> Vec<f64> {
-        let mut a = vec![0.0; n * n];
-        for (m, &(i, j)) in lower.iter().enumerate() {
-            let v = ((m * 7 + 3) % 11) as f64 / 11.0 - 0.45;
-            a[i * n + j] = v;
-            a[j * n + i] = v;
-        }
-        for d in 0..n {
-            a[d * n + d] = n as f64 + d as f64 * 0.1;
-        }
-        a
-    }
+    use crate::linalg::test_matrices::patterned_spd as matrix;
 
     /// The groups' storage filled from a full matrix.
     fn stored(layout: &BlockLdl, a: &[f64], lower: &[(usize, usize)]) -> Vec<f64> {

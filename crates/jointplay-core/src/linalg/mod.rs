@@ -22,3 +22,23 @@ pub use lu::{lu_factor, lu_solve, SingularMatrix};
 pub use block_ldl::BlockLdl;
 pub use pattern_ldl::PatternLdl;
 pub use sparse_cholesky::SparseCholesky;
+
+/// Matrices shared by the tests of the factorisations.
+#[cfg(test)]
+mod test_matrices {
+    /// A symmetric positive definite `n x n` matrix (row-major, both triangles) whose
+    /// off-diagonal entries are non-zero exactly at the given lower positions `(i, j)`,
+    /// with a dominant diagonal.
+    pub(super) fn patterned_spd(n: usize, lower: &[(usize, usize)]) -> Vec<f64> {
+        let mut a = vec![0.0; n * n];
+        for (m, &(i, j)) in lower.iter().enumerate() {
+            let v = ((m * 7 + 3) % 11) as f64 / 11.0 - 0.45;
+            a[i * n + j] = v;
+            a[j * n + i] = v;
+        }
+        for d in 0..n {
+            a[d * n + d] = n as f64 + d as f64 * 0.1;
+        }
+        a
+    }
+}

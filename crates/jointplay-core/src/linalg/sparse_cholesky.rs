@@ -162,21 +162,7 @@ fn factor_pattern(n: usize, lower: &[(usize, usize)]) -> Vec<bool> {
 mod tests {
     use super::super::{cholesky_factor, cholesky_solve};
     use super::*;
-
-    /// Symmetric positive definite matrix with the given lower pattern: `B B^T`-like values
-    /// on the pattern and a dominant diagonal.
-    fn matrix(n: usize, lower: &[(usize, usize)]) -> Vec<f64> {
-        let mut a = vec![0.0; n * n];
-        for (m, &(i, j)) in lower.iter().enumerate() {
-            let v = ((m * 7 + 3) % 11) as f64 / 11.0 - 0.45;
-            a[i * n + j] = v;
-            a[j * n + i] = v;
-        }
-        for d in 0..n {
-            a[d * n + d] = n as f64 + d as f64 * 0.1;
-        }
-        a
-    }
+    use crate::linalg::test_matrices::patterned_spd as matrix;
 
     /// The slider-crank's constraint coupling: rows 0-4 share the crank, 5-6 the slider.
     fn slider_crank_pattern() -> Vec<(usize, usize)> {
