@@ -4,18 +4,26 @@
 //! thread itself calls at a fixed interval of wall time (to report progress
 //! or check for an interrupt without a second thread).
 
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// Called with the simulated time [s]; returns false to cancel the run.
 type WatchFn = Box<dyn FnMut(f64) -> bool + Send>;
 
-/// A watcher and when it is next due.
+/// Most reports between two readings of the clock: bounds the extra delay of
+/// a watcher call when samples suddenly slow down.
+const MAX_STRIDE: u32 = 64;
+
+/// A watcher, when it is next due, and how often the clock is read.
 struct Watcher {
     interval: Duration,
     due: Instant,
     callback: WatchFn,
+    /// When the clock was last read.
+    checked: Instant,
+    /// Reports from one reading of the clock to the next.
+    stride: u32,
 }
 
 /// Simulated time reached, a cancel flag and an optional watcher.
@@ -25,6 +33,8 @@ pub struct Progress {
     cancel: AtomicBool,
     /// Locked only by the simulating thread (and never contended).
     watcher: Option<Mutex<Watcher>>,
+    /// Reports left before the watcher next reads the clock.
+    countdown: AtomicU32,
 }
 
 impl std::fmt::Debug for Progress {
@@ -42,8 +52,11 @@ impl Progress {
     /// Progress whose `callback` the simulating thread calls with the simulated
     /// time [s] at an output sample once at least `interval` of wall time has
     /// passed since the start or the previous call; the run is cancelled when it returns false.
+    /// While samples come fast, the clock is read only every few samples (at most
+    /// [`MAX_STRIDE`]), about 16 times per interval.
     pub fn watched(interval: Duration, callback: impl FnMut(f64) -> bool + Send + 'static) -> Self {
-        let watcher = Watcher { interval, due: Instant::now() + interval, callback: Box::new(callback) };
+        let now = Instant::now();
+        let watcher = Watcher { interval, due: now + interval, callback: Box::new(callback), checked: now, stride: 1 };
         Self { watcher: Some(Mutex::new(watcher)), ..Self::default() }
     }
 
@@ -66,8 +79,15 @@ impl Progress {
     pub(crate) fn report(&self, time: f64) {
         self.time_bits.store(time.to_bits(), Ordering::Relaxed);
         let Some(watcher) = &self.watcher else { return };
+        if self.countdown.fetch_sub(1, Ordering::Relaxed) > 1 {
+            return;
+        }
         let Ok(mut watcher) = watcher.try_lock() else { return };
         let now = Instant::now();
+        // about 16 readings per interval: a longer stride while samples come fast
+        watcher.stride = if now - watcher.checked < watcher.interval / 16 { (watcher.stride * 2).min(MAX_STRIDE) } else { (watcher.stride / 2).max(1) };
+        watcher.checked = now;
+        self.countdown.store(watcher.stride, Ordering::Relaxed);
         if now < watcher.due {
             return;
         }
@@ -83,25 +103,39 @@ mod tests {
     use super::*;
     use std::sync::Arc;
 
+    /// Reports t, t + 1, ... until the watcher is called; the number of reports it took.
+    fn report_until_called(progress: &Progress, seen: &Mutex<Vec<f64>>, t: f64) -> usize {
+        let before = seen.lock().unwrap().len();
+        (1..=2 * MAX_STRIDE as usize)
+            .find(|&k| {
+                progress.report(t + k as f64);
+                seen.lock().unwrap().len() > before
+            })
+            .expect("the watcher is called within a stride of its due time")
+    }
+
     #[test]
     fn watcher_is_called_once_due_and_can_cancel() {
         let seen = Arc::new(Mutex::new(Vec::new()));
         let record = Arc::clone(&seen);
         let progress = Progress::watched(Duration::from_millis(100), move |t| {
             record.lock().unwrap().push(t);
-            t < 2.0
+            t < 100.0
         });
-        progress.report(0.5);
+        // fast reports before it is due: no call, and the clock is read ever more rarely
+        for k in 0..200 {
+            progress.report(k as f64 * 1e-3);
+        }
         assert!(seen.lock().unwrap().is_empty(), "not due before the interval has passed");
+        assert!(progress.watcher.as_ref().unwrap().lock().unwrap().stride > 1);
         std::thread::sleep(Duration::from_millis(110));
-        progress.report(1.0);
-        progress.report(1.5);
-        assert_eq!(*seen.lock().unwrap(), vec![1.0], "called once when due, then not until the next interval");
+        let reports = report_until_called(&progress, &seen, 1.0);
+        assert!(reports <= MAX_STRIDE as usize, "called {reports} reports after it was due");
+        assert_eq!(seen.lock().unwrap().len(), 1, "called once");
         assert!(!progress.is_cancelled());
         std::thread::sleep(Duration::from_millis(110));
-        progress.report(2.5);
-        assert_eq!(*seen.lock().unwrap(), vec![1.0, 2.5]);
+        report_until_called(&progress, &seen, 200.0);
         assert!(progress.is_cancelled(), "a watcher returning false cancels");
-        assert_eq!(progress.time(), 2.5);
+        assert_eq!(progress.time(), *seen.lock().unwrap().last().unwrap());
     }
 }
