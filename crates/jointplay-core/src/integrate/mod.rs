@@ -92,7 +92,10 @@ pub trait OdeSystem {
     /// discontinuity that requires the integrator to restart (re-evaluate f,
     /// drop history); false when y changed at most by a correction at
     /// tolerance level (the integrator may keep its FSAL derivative / history).
-    fn accept(&mut self, t: f64, y: &mut [f64]) -> Result<bool, SimulationError>;
+    /// By default the state is kept as it is (a system without constraints or discrete state).
+    fn accept(&mut self, _t: f64, _y: &mut [f64]) -> Result<bool, SimulationError> {
+        Ok(false)
+    }
 
     /// Records an output sample at time t (state from dense output or step end).
     /// Err aborts the run (e.g. Interrupted).

@@ -59,9 +59,6 @@ impl OdeSystem for FailsLate {
         dydt[0] = -y[0];
         Ok(())
     }
-    fn accept(&mut self, _t: f64, _y: &mut [f64]) -> Result<bool, SimulationError> {
-        Ok(false)
-    }
     fn record(&mut self, t: f64, _y: &[f64]) -> Result<(), SimulationError> {
         self.samples += 1;
         if self.samples > 5 {

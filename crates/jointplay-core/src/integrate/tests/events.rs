@@ -64,9 +64,6 @@ impl OdeSystem for Ball {
         }
         Ok(())
     }
-    fn accept(&mut self, _t: f64, _y: &mut [f64]) -> Result<bool, SimulationError> {
-        Ok(false)
-    }
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         self.samples.push((t, y.to_vec()));
         Ok(())
