@@ -29,12 +29,24 @@ def read_document(path: str | Path) -> dict:
     """The parsed TOML of a model file; a missing or unreadable file is a ModelError."""
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        data = path.read_bytes()
     except FileNotFoundError:
         raise ModelError([Problem(str(path), "no such file")]) from None
-    except (IsADirectoryError, PermissionError, UnicodeDecodeError) as exc:
+    except OSError as exc:  # a folder, no permission, a device...
         raise ModelError([Problem(str(path), f"cannot be read: {exc.strerror or exc}")]) from None
-    return parse_text(text, str(path))
+    return parse_text(_text(data, str(path)), str(path))
+
+
+def _text(data: bytes, where: str) -> str:
+    """The UTF-8 text of a model file; a binary file (NUL bytes, not UTF-8) is a ModelError."""
+    nul = data.find(b"\x00")
+    if nul >= 0:
+        _raise(where, f"is a binary file (a NUL byte at offset {nul}), not a TOML model file")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        return _raise(where, f"is not UTF-8 text (byte 0x{data[exc.start]:02x} at offset {exc.start}); "
+                             "a model file is TOML text in UTF-8")
 
 
 def parse_text(text: str, where: str = "model file") -> dict:
