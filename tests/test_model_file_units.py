@@ -104,7 +104,7 @@ def test_out_of_range_bare_value_is_shown_in_the_declared_unit():
     ('length = "kg"', "units.length: must be a length (e.g. \"0.5 mm\"), got 'kg', which is a mass"),
     ('mass = "1 kg"', "units.mass: must be a unit without a number, e.g. \"kg\", got '1 kg'"),
     ("time = 0.001", 'units.time: must be a unit of time as a string, e.g. "ms", got 0.001'),
-    ('angle = "rpm"', "units.angle: must be an angle (e.g. \"90 deg\"), got 'rpm', which is a rate (1/s)"),
+    ('angle = "rpm"', "units.angle: must be an angle (e.g. \"90 deg\"), got 'rpm', which is a frequency"),
 ])
 def test_units_table_is_validated(units, message):
     assert problems(f"[units]\n{units}\n\n" + DRY.read_text()) == [message]
