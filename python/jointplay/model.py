@@ -12,13 +12,14 @@ import copy
 import json
 import math
 import time as _time
+import warnings
 from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
 
 from . import _core
-from .errors import ModelError, SimulationError
+from .errors import JointplayWarning, ModelError, SimulationError
 from .functions import as_function
 from .laws import STEEL, hertz_cylinder, frictionless
 from .results import Results
@@ -257,9 +258,14 @@ class Model:
         tolerances; ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
         accepted step). ``progress`` is called with the simulated time about ten times a second.
 
+        Values that are legal but almost certainly mistakes (a clearance of 20 % of the radius, a mass
+        1e4 times the others; :func:`jointplay.modelfile.plausibility`) are issued first as
+        :class:`~jointplay.errors.JointplayWarning`\ s; they do not stop the run.
+
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
         """
+        _warn_implausible(self._spec)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization)
         core = self.compile()
@@ -295,6 +301,13 @@ class Model:
         from pathlib import Path
 
         Path(path).write_text(self.to_toml(), encoding="utf-8")
+
+
+def _warn_implausible(spec: dict) -> None:
+    from .modelfile.plausibility import plausibility
+
+    for problem in plausibility(spec):
+        warnings.warn(str(problem), JointplayWarning, stacklevel=3)
 
 
 def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,

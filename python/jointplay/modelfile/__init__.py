@@ -20,9 +20,10 @@ from typing import Any
 from ..errors import ModelError, Problem, SimulationError
 from .build import Builder
 from .overrides import apply_overrides, parse_assignment
+from .plausibility import plausibility
 from .writer import to_toml as _spec_to_toml
 
-__all__ = ["apply_overrides", "load", "loads", "parse_assignment", "read_document", "to_toml"]
+__all__ = ["apply_overrides", "load", "loads", "parse_assignment", "plausibility", "read_document", "to_toml"]
 
 
 def read_document(path: str | Path) -> dict:
