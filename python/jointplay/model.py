@@ -260,7 +260,7 @@ class Model:
 
         Values that are legal but almost certainly mistakes (a clearance of 20 % of the radius, a mass
         1e4 times the others; :func:`jointplay.modelfile.plausibility`) are issued first as
-        :class:`~jointplay.errors.JointplayWarning`\ s; they do not stop the run.
+        :class:`~jointplay.errors.JointplayWarning` warnings; they do not stop the run.
 
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
