@@ -16,8 +16,14 @@ from jointplay.modelfile.plausibility import contact_stiffness, function_rate
 
 ROOT = Path(__file__).resolve().parents[1]
 DRY = ROOT / "examples" / "flores_slider_crank_dry.toml"
-SPRING = ('forces.s={ type = "spring_damper", first = "ground.O", second = "slider.B", stiffness = "1e15 N/m", '
-          'free_length = "170 mm" }')
+SPRINGS = ['forces.soft={ type = "spring_damper", first = "ground.O", second = "slider.B", stiffness = "100 N/m", '
+           'free_length = "170 mm" }',
+           'forces.hard={ type = "spring_damper", first = "ground.O", second = "rod.A", stiffness = "1e9 N/m", '
+           'free_length = "50 mm" }']
+CONTACT = ('joints.C={ type = "clearance_revolute", bearing = "crank.O", journal = "ground.line", '
+           'bearing_radius = "10 mm", clearance = "0.5 mm", contact = "hertz", '
+           'bearing_material = { youngs_modulus = "2 MPa", poisson_ratio = 0.45 }, '
+           'journal_material = { youngs_modulus = "2 MPa", poisson_ratio = 0.45 } }')
 
 
 def warned(overrides: list[str], path: Path = DRY) -> list[str]:
@@ -39,8 +45,6 @@ def warned(overrides: list[str], path: Path = DRY) -> list[str]:
     ("joints.B.bearing_material.youngs_modulus=207 kPa",
      "joints.B.bearing_material.youngs_modulus: 2.07e+05 Pa is outside the range of solids (1 MPa for soft rubber "
      "to 1.2 TPa for diamond): check the units"),
-    (SPRING, "forces.s.stiffness: 1e+15 N/m is 4.51e+06 times the typical value of the contacts and springs "
-             "(2.22e+08 N/m): check the units"),
     ("joints.B.onset_velocity_floor=100 m/s",
      "joints.B.onset_velocity_floor: 100 m/s is above the speeds in the model (about 31.4 m/s from the drivers' "
      "rates times the link size, the initial velocities and free fall): the floor is meant for grazing contacts, "
@@ -51,6 +55,18 @@ def warned(overrides: list[str], path: Path = DRY) -> list[str]:
 ])
 def test_each_implausible_value_gives_its_warning(override, message):
     assert warned([override])[0] == message  # a tiny mass also gives a large radius of gyration
+
+
+def test_springs_far_from_the_other_springs_warn_but_not_against_contacts():
+    assert warned(SPRINGS) == ["forces.hard.stiffness: 1e+09 N/m is 1e+07 times the typical value of the springs "
+                               "(100 N/m): check the units"]
+    assert warned(SPRINGS[:1]) == []  # a soft spring beside a steel contact is normal
+
+
+def test_contact_far_from_the_other_contacts_warns():
+    assert warned([CONTACT, "joints.A.type=fixed"]) == [
+        "joints.B.stiffness: contact stiffness 2.22e+08 N/m is 9.07e+04 times the typical value of the contacts "
+        "(2.44e+03 N/m): check the units"]
 
 
 def test_inertia_far_from_the_others_warns_about_both_size_and_spread():
