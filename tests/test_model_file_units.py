@@ -42,9 +42,9 @@ def test_bare_number_in_a_length_is_an_error_naming_the_unit_expected():
                                '(or declare [units] length = "mm"), got 0.1'),
     ("bodies.crank.mass=0.3", 'bodies.crank.mass: a bare number needs a unit, e.g. "0.3 kg" '
                               '(or declare [units] mass = "kg"), got 0.3'),
-    ("bodies.rod.points.B=[60, 0]", 'bodies.rod.points.B: x component a bare number needs a unit, e.g. "60 mm" '
+    ("bodies.rod.points.B=[60, 0]", 'bodies.rod.points.B: x component: a bare number needs a unit, e.g. "60 mm" '
                                     '(or declare [units] length = "mm"), got 60'),
-    ("model.gravity=[0, -9.81]", 'model.gravity: y component a bare number needs a unit, e.g. "-9.81 m/s^2" '
+    ("model.gravity=[0, -9.81]", 'model.gravity: y component: a bare number needs a unit, e.g. "-9.81 m/s^2" '
                                  '(or declare [units] acceleration = "m/s^2"), got -9.81'),
     ("drivers.motor.function.rate=523.6", 'drivers.motor.function.rate: a bare number needs a unit, e.g. '
                                           '"523.6 rpm" (or declare [units] angular_velocity = "rpm"), got 523.6'),
