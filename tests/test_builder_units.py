@@ -85,6 +85,22 @@ def test_bad_builder_arguments_are_errors_by_element_name(call, message):
     assert [str(p) for p in info.value.problems] == [message]
 
 
+def test_laws_written_by_hand_take_units_and_are_checked():
+    m = flores_with_units()
+    m.add_clearance_revolute("B2", "slider.B", "rod.B", bearing_radius="10 mm", clearance="0.1 mm",
+                             contact={"law": "flores", "restitution": 0.5},
+                             friction={"law": "ambrosio", "coefficient": 0.01, "v0": "0.1 mm/s", "v1": "1 mm/s"},
+                             stiffness={"law": "hertz_cylinder", "exponent": 1.2})
+    joint = m.joint("B2")
+    assert joint["friction"] == {"law": "ambrosio", "coefficient": 0.01, "v0": pytest.approx(1e-4, rel=1e-12),
+                                 "v1": pytest.approx(1e-3, rel=1e-12)}
+    assert joint["stiffness"] == {"law": "hertz_cylinder_exponent", "exponent": 1.2}
+    with pytest.raises(jp.ModelError) as info:
+        m.add_clearance_revolute("B3", "slider.B", "rod.B", bearing_radius="10 mm", clearance="0.1 mm",
+                                 contact=laws.lankarani_nikravesh(1.5))
+    assert [str(p) for p in info.value.problems] == ["joints.B3.contact.restitution: must lie in (0, 1], got 1.5"]
+
+
 def test_nan_gives_the_same_message_in_python_and_in_a_file():
     with pytest.raises(jp.ModelError) as in_file:
         jp.load(DRY, ["joints.B.clearance=nan"])

@@ -154,8 +154,9 @@ class Model:
         joint.update({
             "bearing_material": arguments.material(bearing_material, f"{where}.bearing_material"),
             "journal_material": arguments.material(journal_material, f"{where}.journal_material"),
-            "contact": dict(contact), "stiffness": dict(stiffness or hertz_cylinder()),
-            "friction": dict(friction or frictionless()),
+            "contact": arguments.law(contact, "contact", where),
+            "stiffness": arguments.law(stiffness or hertz_cylinder(), "stiffness", where),
+            "friction": arguments.law(friction or frictionless(), "friction", where),
             "initial_eccentricity": _arg("ClearanceRevoluteTable", "initial_eccentricity", initial_eccentricity, where),
             "lock_at_assembly": bool(lock_at_assembly),
             "onset_velocity_floor": _arg("ClearanceRevoluteTable", "onset_velocity_floor", onset_velocity_floor, where),

@@ -79,3 +79,20 @@ def function(raw: Any, kind: str, where: str) -> dict:
     if problems or spec is None:
         raise ModelError(problems or [Problem(where, f"must be a function of time, got {raw!r}")])
     return spec
+
+
+def law(raw: Any, key: str, where: str) -> dict:
+    """A contact, stiffness or friction law (a dict from :mod:`jointplay.laws`, or written by hand with
+    units: ``{"law": "ambrosio", "coefficient": 0.01, "v0": "0.1 mm/s"}``) checked as in a model file."""
+    from . import schema as s
+    from .build import Builder
+
+    laws = {"contact": s.CONTACT_LAWS, "stiffness": s.STIFFNESS_LAWS, "friction": s.FRICTION_LAWS}[key]
+    builder = Builder({})
+    out = builder.law({key: raw}, key, laws, where, required=True)
+    if builder.problems or out is None:
+        raise ModelError(builder.problems or [Problem(join(where, key), f"must be a law, got {raw!r}")])
+    if key == "stiffness" and out["law"].startswith("hertz_cylinder"):
+        exponent = out.pop("exponent", None)
+        out = {"law": "hertz_cylinder_exponent", "exponent": exponent} if exponent is not None else {"law": "hertz_cylinder"}
+    return out
