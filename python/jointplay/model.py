@@ -19,14 +19,13 @@ import copy
 import json
 import math
 import time as _time
-import warnings
 from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
 
 from . import _core
-from .errors import JointplayWarning, ModelError, SimulationError
+from .errors import ModelError, SimulationError
 from .functions import as_function
 from .laws import STEEL, hertz_cylinder, frictionless
 from .results import Results
@@ -301,7 +300,9 @@ class Model:
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
         """
-        _warn_implausible(self._spec)
+        from .modelfile.plausibility import warn
+
+        warn(self._spec)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization)
         core = self.compile()
@@ -343,13 +344,6 @@ def _function(raw: Any, kind: str, where: str) -> dict:
     from .modelfile import arguments
 
     return arguments.function(as_function(raw) if isinstance(raw, (int, float)) else raw, kind, where)
-
-
-def _warn_implausible(spec: dict) -> None:
-    from .modelfile.plausibility import plausibility
-
-    for problem in plausibility(spec):
-        warnings.warn(str(problem), JointplayWarning, stacklevel=3)
 
 
 def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,

@@ -38,9 +38,10 @@ warning almost always means a slip:
 from __future__ import annotations
 
 import math
+import warnings
 from statistics import median
 
-from ..errors import Problem
+from ..errors import JointplayWarning, Problem
 from .fields import join
 
 CLEARANCE_RATIO = 0.20
@@ -67,6 +68,13 @@ def plausibility(spec: dict) -> list[Problem]:
     problems += _far_bodies(spec, size)
     problems += _nothing_moves(spec)
     return problems
+
+
+def warn(spec: dict) -> None:
+    """Each plausibility problem of ``spec`` as a :class:`~jointplay.errors.JointplayWarning` (for the
+    caller of ``Model.simulate``)."""
+    for problem in plausibility(spec):
+        warnings.warn(str(problem), JointplayWarning, stacklevel=3)
 
 
 def mechanism_size(spec: dict) -> float:
