@@ -40,6 +40,21 @@ ODD_VALUES = st.one_of(NUMBERS, st.booleans(), ODD_TEXT, st.lists(NUMBERS | ODD_
                        st.just({}), st.just({"law": "hertz"}), st.just({"kind": "table"}), st.just({"a": {"b": 1}}))
 
 
+UNITS = st.one_of(st.dictionaries(st.sampled_from(["length", "mass", "time", "angle", "velocity", "pressure",
+                                                   "angular_velocity", "lenght", "dimensionless"]),
+                                   ODD_TEXT | st.sampled_from(["mm", "g", "ms", "deg", "rpm", "mm/s", "GPa", "kg"]),
+                                   max_size=4),
+                   ODD_VALUES)
+
+
+def _number(text: str) -> float | str:
+    """The number of a quantity string as a TOML number, when it is one."""
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
 def _paths(node, path=()):
     """Every path to a value in a parsed document."""
     if path:
@@ -79,8 +94,14 @@ def mutated(draw) -> dict:
 
 def _mutate(draw, doc: dict, path: tuple) -> None:
     parent, key = _parent(doc, path), path[-1]
-    action = draw(st.sampled_from(["replace", "delete", "duplicate", "rename", "swap", "scale", "nest", "add"]))
-    if action == "replace":
+    action = draw(st.sampled_from(["replace", "delete", "duplicate", "rename", "swap", "scale", "nest", "add",
+                                   "bare", "units"]))
+    if action == "bare" and isinstance(parent[key], str):
+        number = parent[key].partition(" ")[0]
+        parent[key] = draw(st.sampled_from([number, _number(number)]))
+    elif action == "units":
+        doc["units"] = draw(UNITS)
+    elif action == "replace":
         parent[key] = draw(ODD_VALUES)
     elif action == "delete" and isinstance(parent, dict):
         del parent[key]
