@@ -164,6 +164,8 @@ def test_binary_model_file_is_a_clear_error(tmp_path, data, message):
     (b"", f"bodies: {EMPTY}"),
     (b'[model]\nname = "m"\n[bodies.a]\nmass = 1\ninertia = "1 kg m^2"\nfree = true\n',
      'bodies.a.mass: a bare number needs a unit, e.g. "1 kg" (or declare [units] mass = "kg"), got 1'),
+    (LUBRICATED.read_bytes().replace(b'viscosity = "400 cP"', b'viscosity = "400 cP", cavitation = "gumbel"'),
+     "joints.B.lubrication.cavitation: applies only to the reynolds_exact and reynolds_table models"),
 ])
 @pytest.mark.parametrize("command", ["check", "run"])
 def test_cli_exits_2_with_one_line_per_problem(tmp_path, content, message, command):
