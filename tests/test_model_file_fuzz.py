@@ -144,7 +144,8 @@ def test_check_of_a_mutated_example_exits_0_or_2(tmp_path_factory, doc):
 
 
 # bounded runs: few steps and samples, so that a run ends quickly whatever the mutation
-BOUNDED = ["--t-end", "0.2 ms", "-q", "--set", "simulation.max_steps=20000", "--set", 'simulation.output_step="0.01 ms"']
+BOUNDED = ["--t-end", "0.2 ms", "-q", "--set", "simulation.max_steps=20000",
+           "--set", 'simulation.output_step="0.01 ms"']
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])

@@ -171,7 +171,8 @@ def test_binary_model_file_is_a_clear_error(tmp_path, data, message):
 def test_cli_exits_2_with_one_line_per_problem(tmp_path, content, message, command):
     path = tmp_path / "model.toml"
     path.write_bytes(content)
-    result = CliRunner().invoke(app, [command, str(path), "-o", str(tmp_path / "out.nc")][:2 if command == "check" else 4])
+    output = ["-o", str(tmp_path / "out.nc")] if command == "run" else []
+    result = CliRunner().invoke(app, [command, str(path), *output])
     assert result.exit_code == 2, result.output
     assert message in result.stderr
     assert "Traceback" not in result.output

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib
+import math
 import warnings
 from pathlib import Path
 
@@ -106,7 +107,7 @@ def test_contact_stiffness_matches_the_hertz_cylinder_law_by_hand():
 @pytest.mark.parametrize("function, rate", [
     ({"kind": "constant", "value": 3.0}, 0.0),
     ({"kind": "constant_rate", "initial": 0.0, "rate": -52.0}, 52.0),
-    ({"kind": "sine", "offset": 0.0, "amplitude": 0.1, "frequency": 5.0, "phase": 0.0}, 0.1 * 2 * 3.141592653589793 * 5),
+    ({"kind": "sine", "offset": 0.0, "amplitude": 0.1, "frequency": 5.0, "phase": 0.0}, 0.1 * 2 * math.pi * 5),
     ({"kind": "cubic_step", "t_start": 0.0, "t_end": 0.5, "value_start": 0.0, "value_end": 1.0}, 3.0),
     ({"kind": "table", "times": [0.0, 1.0, 1.5], "values": [0.0, 1.0, 3.0]}, 4.0),
     ({"kind": "polynomial", "coefficients": [1.0, -2.0, 7.0]}, 2.0),

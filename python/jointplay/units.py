@@ -302,7 +302,8 @@ def _convert(q, spec: Kind, raw: str) -> float:
     if spec.name == "angular velocity" and names & _HERTZ_UNITS:
         raise UnitError(f"Hz is ambiguous for an angular speed; write rpm, rev/s or rad/s, got {_quoted(raw)}")
     if not spec.angular and spec.name != "frequency" and names & _ANGLE_UNITS:
-        raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), got an angular quantity {_quoted(raw)}")
+        raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), "
+                        f"got an angular quantity {_quoted(raw)}")
     target = registry().Quantity(1, spec.si) if spec.si else registry().Quantity(1, "")
     if q.dimensionality != target.dimensionality:
         raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), got {_quoted(raw)}, "

@@ -94,5 +94,6 @@ def law(raw: Any, key: str, where: str) -> dict:
         raise ModelError(builder.problems or [Problem(join(where, key), f"must be a law, got {raw!r}")])
     if key == "stiffness" and out["law"].startswith("hertz_cylinder"):
         exponent = out.pop("exponent", None)
-        out = {"law": "hertz_cylinder_exponent", "exponent": exponent} if exponent is not None else {"law": "hertz_cylinder"}
+        out = ({"law": "hertz_cylinder_exponent", "exponent": exponent} if exponent is not None
+               else {"law": "hertz_cylinder"})
     return out
