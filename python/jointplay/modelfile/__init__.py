@@ -5,8 +5,11 @@ applies ``--set`` style overrides, validates every table (units, ranges,
 unknown keys, references, geometry), compiles the mechanism in the core and
 assembles its initial configuration. Every problem found comes back in one
 :class:`~jointplay.errors.ModelError`, located in the file's own terms
-(``joints.B.clearance``). ``to_toml(model)`` writes a model back; loading
-that text gives the same model. The keys are documented in
+(``joints.B.clearance``). A bare number in a dimensional key is an error
+unless the file's ``[units]`` table declares the unit of its kind.
+``plausibility(spec)`` lists legal but suspicious values (warnings, not
+errors). ``to_toml(model)`` writes a model back, every unit spelled out;
+loading that text gives the same model. The keys are documented in
 ``docs/model-files.md``.
 """
 
