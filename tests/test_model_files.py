@@ -45,7 +45,7 @@ def test_out_of_range_values_name_location_and_value(override, message):
     ("joints.B.clearence=0.1 mm", 'joints.B.clearence: unknown key (did you mean "clearance"?)'),
     ("bodies.crank.mas=1 kg", 'bodies.crank.mas: unknown key (did you mean "mass"?)'),
     ("simulaton.t_end=1", 'simulaton: unknown section (did you mean "simulation"?); '
-                          "sections: model, ground, bodies, joints, drivers, forces, simulation"),
+                          "sections: model, units, ground, bodies, joints, drivers, forces, simulation"),
     ("joints.A.type=revolut", "joints.A.type: must be one of revolute, translational, fixed, clearance_revolute, "
                               "got 'revolut' (did you mean \"revolute\"?)"),
     ("joints.B.contact.law=lankarani", "joints.B.contact.law: must be one of hertz, hunt_crossley, "
@@ -128,10 +128,10 @@ def test_redundant_constraint_is_an_error_at_the_element():
 
 
 def test_body_connected_to_nothing_is_an_error_unless_free():
-    assert problems(['bodies.extra={ mass = 1, inertia = 1 }']) == [
+    assert problems(['bodies.extra={ mass = "1 kg", inertia = "1 kg m^2" }']) == [
         "bodies.extra: is connected to nothing: no joint or force element refers to it "
         "(write free = true if it is meant to move freely)"]
-    model = jp.load(DRY, ['bodies.extra={ mass = 1, inertia = 1, free = true }'])
+    model = jp.load(DRY, ['bodies.extra={ mass = "1 kg", inertia = "1 kg m^2", free = true }'])
     assert model.check()["degrees_of_freedom"] == 5
 
 

@@ -1,10 +1,12 @@
 """Quantities with units in model files: conversion to SI and messages for wrong input."""
 
 import math
+import subprocess
+import sys
 
 import pytest
 
-from jointplay.units import UnitError, per_time, to_si
+from jointplay.units import UnitError, declare_unit, model_file_units, per_time, registry, to_si
 
 
 @pytest.mark.parametrize("raw, kind, si", [
@@ -45,12 +47,86 @@ def test_bare_numbers_are_si_exactly():
     (True, "length", "must be a number or a string with a unit (e.g. \"0.5 mm\"), got true"),
     ([1, 2], "length", "must be a number or a string with a unit (e.g. \"0.5 mm\"), got [1, 2]"),
     ("nan mm", "length", "must be finite, got nan mm"),
-    (float("inf"), "length", "must be finite, got inf m"),
+    (float("inf"), "length", "must be finite, got inf"),
+    (float("nan"), "length", "must be finite, got nan"),
+    ("1e999 m", "length", "must be finite, got 1e999 m"),
+    (10**400, "mass", "must be finite, got 100000000000... (an integer of 401 digits)"),
+    ("9" * 400 + " kg", "mass", "must be finite, got '9999999999999999999999999999999999999999'... (403 characters)"),
+    ("10**10**8 kg", "mass", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got '10**10**8 kg'"),
+    ("2 m**99**99**99", "length", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got '2 m**99**99**99'"),
+    ("1 m^100", "length", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got '1 m^100'"),
+    ("2 * 3 mm", "length", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got '2 * 3 mm'"),
+    ("1 mm; 2", "length", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got '1 mm; 2'"),
+    ("mm", "length", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got 'mm'"),
+    ("1 m" + " m" * 60, "length", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), "
+                                  "got '1 m m m m m m m m m m m m m m m m m m m '... (123 characters)"),
+    ("x" * 1200, "length", "is too long to be a quantity (1200 characters), "
+                           "got 'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx'... (1200 characters)"),
 ])
 def test_wrong_quantities_are_refused_with_a_message(raw, kind, message):
     with pytest.raises(UnitError) as info:
         to_si(raw, kind)
     assert str(info.value) == message
+
+
+@pytest.mark.parametrize("raw, kind, si", [
+    ("1 kg m**2", "inertia", 1.0),
+    ("3 1/s", "frequency", 3.0),
+    ("2 (N m)/rad", "rotational stiffness", 2.0),
+    ("-4.5E-3 m", "length", -4.5e-3),
+    ("+.5 mm", "length", 0.5e-3),
+    ("5 \u00b5m", "length", 5e-6),
+])
+def test_unit_text_allows_products_quotients_powers_and_parentheses(raw, kind, si):
+    assert to_si(raw, kind) == pytest.approx(si, rel=1e-12)
+
+
+def test_pint_quantities_are_converted_from_any_registry():
+    import pint
+
+    other = pint.UnitRegistry()
+    assert to_si(other.Quantity(0.5, "mm"), "length") == pytest.approx(5e-4, rel=1e-12)
+    assert to_si(registry().Quantity(2, "rpm"), "angular velocity") == pytest.approx(4 * math.pi / 60, rel=1e-12)
+    with pytest.raises(UnitError, match="must be a length .* which is a mass"):
+        to_si(other.Quantity(1, "kg"), "length")
+
+
+def test_bare_numbers_in_a_model_file_need_a_unit_unless_declared_or_zero():
+    with model_file_units({}):
+        with pytest.raises(UnitError) as info:
+            to_si(10, "length")
+        assert str(info.value) == 'a bare number needs a unit, e.g. "10 mm" (or declare [units] length = "mm"), got 10'
+        with pytest.raises(UnitError, match=r'e.g. "0.5 kg" \(or declare \[units\] mass = "kg"\), got 0.5'):
+            to_si("0.5", "mass")
+        with pytest.raises(UnitError, match=r'^a bare number needs a unit, e.g. "2 N/s\^1", got 2$'):
+            to_si(2, per_time("force", 1))  # a rate of a force: no [units] key
+        assert to_si(0, "length") == 0.0
+        assert to_si(0.9, "dimensionless") == 0.9
+    with model_file_units({"length": declare_unit("length", "mm"), "angle": declare_unit("angle", "deg")}):
+        assert to_si(10, "length") == pytest.approx(0.01, rel=1e-12)
+        assert to_si(90, "angle") == pytest.approx(math.pi / 2, rel=1e-12)
+        assert to_si("3 m", "length") == 3.0
+        with pytest.raises(UnitError, match="declare \\[units\\] velocity"):
+            to_si(1, "velocity")  # a declared length and time do not make a velocity
+    assert to_si(10, "length") == 10.0  # outside a model file: SI
+
+
+@pytest.mark.parametrize("key, unit, message", [
+    ("length", "kg", "must be a length (e.g. \"0.5 mm\"), got 'kg', which is a mass"),
+    ("length", "2 mm", "must be a unit without a number, e.g. \"mm\", got '2 mm'"),
+    ("length", 3, "must be a unit of length as a string, e.g. \"mm\", got 3"),
+    ("length", "m**2**40", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got 'm**2**40'"),
+])
+def test_declared_units_are_checked(key, unit, message):
+    with pytest.raises(UnitError) as info:
+        declare_unit(key, unit)
+    assert str(info.value) == message
+
+
+def test_import_jointplay_does_not_import_pint():
+    code = "import sys, jointplay; print('pint' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "False"
 
 
 def test_nothing_in_a_quantity_is_executed():

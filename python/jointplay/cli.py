@@ -8,6 +8,8 @@ still saved). Expected errors print a message, never a traceback.
 from __future__ import annotations
 
 import math
+import warnings
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated
 
@@ -17,7 +19,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from . import __version__
-from .errors import ModelError, SimulationError
+from .errors import JointplayWarning, ModelError, SimulationError
 from .units import UnitError, to_si
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
@@ -102,6 +104,29 @@ def _time_option(text: str | None, option: str) -> float | None:
     return value
 
 
+def _warning(message: str) -> None:
+    """``warning: joints.B.clearance: ...`` on stderr; the message is printed as it is (no markup)."""
+    err.print("[yellow]warning:[/] ", end="")
+    err.print(message, markup=False)
+
+
+@contextmanager
+def _printed_warnings():
+    """JointplayWarnings raised inside (plausibility, soft contact...) printed as ``warning: ...``."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("always", JointplayWarning)
+        shown = warnings.showwarning
+
+        def show(message, category, *args, **kwargs):
+            if issubclass(category, JointplayWarning):
+                _warning(str(message))
+            else:
+                shown(message, category, *args, **kwargs)
+
+        warnings.showwarning = show
+        yield
+
+
 def _words(kind: str) -> str:
     """``RevoluteJoint`` -> ``revolute joint``."""
     return "".join(f" {c.lower()}" if c.isupper() else c for c in kind).strip()
@@ -124,9 +149,13 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
     clearance joints, drivers and force elements, and the degrees of freedom.
     Exits with 2 and one line per problem when the file is not valid.
     """
+    from .modelfile.plausibility import plausibility
+
     m = _load(model, set_)
     info = m.check()
     spec = m.to_spec()
+    for problem in plausibility(spec):
+        _warning(str(problem))
     q0 = info["initial_coordinates"]
     out.print(f"[bold]{spec['name']}[/]  ({model})")
     bodies = Table("body", "mass", "inertia", "x (mm)", "y (mm)", "angle (deg)", title="bodies, assembled at t0")
@@ -192,7 +221,8 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
     if not output.parent.is_dir():
         raise _bad_input(f"-o {output}: no folder {output.parent}", [])
     try:
-        results = _simulate(m, end, options, quiet)
+        with _printed_warnings():
+            results = _simulate(m, end, options, quiet)
     except ModelError as exc:
         raise _bad_input(f"{model}: bad simulation options", exc.problems) from None
     except RuntimeError as exc:  # a panic in the core, caught at the binding

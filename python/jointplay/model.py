@@ -3,7 +3,14 @@
 A :class:`Model` collects plain data (SI units) in the same layout the core
 reads; nothing is computed until :meth:`Model.simulate` or
 :meth:`Model.check`, which compile it once (all problems reported together
-as a :class:`~jointplay.errors.ModelError`).
+as a :class:`~jointplay.errors.ModelError`, located by element name:
+``joints.B.clearance``).
+
+Every physical argument of the builder is a number in SI units, a string
+with a unit (``"0.5 mm"``, ``"5000 rpm"``) or a pint Quantity, read by the
+same definitions as a model file's keys (:mod:`jointplay.modelfile.arguments`):
+a wrong one raises a ModelError at once (``joints.B.clearance: must be > 0,
+got -0.1 mm``).
 """
 
 from __future__ import annotations
@@ -23,22 +30,25 @@ from .functions import as_function
 from .laws import STEEL, hertz_cylinder, frictionless
 from .results import Results
 
-Vector = Sequence[float]
+Vector = Sequence[Any]
+Quantity = Any  # a number in SI units, a string with a unit ("0.5 mm") or a pint Quantity
 
 METHODS = {"dopri5": "dopri5", "rk45": "dopri5", "dormand_prince": "dopri5", "adams": "adams", "adams_pc": "adams",
            "bdf": "bdf", "ndf": "bdf"}
 STABILIZATIONS = ("projection", "baumgarte", "none")
 
 
-def _vec(v: Vector, what: str) -> list[float]:
-    values = [float(x) for x in v]
-    if len(values) != 2:
-        raise ModelError([(what, f"must have 2 components, got {list(v)!r}")])
-    return values
+def _arg(table: str, key: str, raw: Any, where: str) -> Any:
+    """A builder argument read as the model-file key ``key`` of ``table`` (a class of the schema)."""
+    from .modelfile import arguments, schema
+
+    return arguments.value(getattr(schema, table), key, raw, where)
 
 
-def _points(points: dict[str, Vector] | None, where: str) -> list[dict]:
-    return [{"name": name, "position": _vec(p, f"{where}.points.{name}")} for name, p in (points or {}).items()]
+def _where(section: str, name: str) -> str:
+    from .modelfile.fields import join
+
+    return join(section, name)
 
 
 class Model:
@@ -55,7 +65,7 @@ class Model:
 
     def __init__(self, name: str = "mechanism", gravity: Vector = (0.0, 0.0)):
         self._spec: dict[str, Any] = {
-            "name": name, "gravity": _vec(gravity, "gravity"),
+            "name": name, "gravity": _arg("ModelTable", "gravity", gravity, "model"),
             "ground_points": [], "bodies": [], "joints": [], "drivers": [], "forces": [],
         }
         self._core: Any = None
@@ -71,28 +81,35 @@ class Model:
         return self._spec["name"]
 
     def set_gravity(self, gravity: Vector) -> Model:
-        """Gravitational acceleration [m/s^2], e.g. ``(0, -9.81)``."""
-        self._spec["gravity"] = _vec(gravity, "gravity")
+        """Gravitational acceleration [m/s^2], e.g. ``(0, -9.81)`` or ``(0, "-9.81 m/s^2")``."""
+        self._spec["gravity"] = _arg("ModelTable", "gravity", gravity, "model")
         self._changed()
         return self
 
     def add_ground_point(self, name: str, position: Vector) -> str:
         """A named point of the ground [m]; returns its reference ``"ground.<name>"``."""
-        self._spec["ground_points"].append({"name": name, "position": _vec(position, f"ground_points.{name}")})
+        from .modelfile import arguments
+
+        position = arguments.point(position, _where("ground.points", name))
+        self._spec["ground_points"].append({"name": name, "position": position})
         self._changed()
         return f"ground.{name}"
 
-    def add_body(self, name: str, mass: float, inertia: float, position: Vector = (0.0, 0.0), angle: float = 0.0,
-                 velocity: Vector = (0.0, 0.0), angular_velocity: float = 0.0,
+    def add_body(self, name: str, mass: Quantity, inertia: Quantity, position: Vector = (0.0, 0.0),
+                 angle: Quantity = 0.0, velocity: Vector = (0.0, 0.0), angular_velocity: Quantity = 0.0,
                  points: dict[str, Vector] | None = None) -> str:
         """A rigid body: mass [kg], inertia about its centre of mass [kg m^2], approximate initial
-        position [m], angle [rad], velocities; named points in body coordinates [m]."""
-        self._spec["bodies"].append({
-            "name": name, "mass": float(mass), "inertia": float(inertia),
-            "position": _vec(position, f"bodies.{name}.position"), "angle": float(angle),
-            "velocity": _vec(velocity, f"bodies.{name}.velocity"), "angular_velocity": float(angular_velocity),
-            "points": _points(points, f"bodies.{name}"),
-        })
+        position [m], angle [rad], velocities; named points in body coordinates [m]. Numbers are SI;
+        strings with units (``mass="0.3 kg"``, ``points={"A": ("25 mm", 0)}``) and pint quantities too."""
+        from .modelfile import arguments
+
+        where = _where("bodies", name)
+        body = {"name": name}
+        for key, raw in (("mass", mass), ("inertia", inertia), ("position", position), ("angle", angle),
+                         ("velocity", velocity), ("angular_velocity", angular_velocity)):
+            body[key] = _arg("BodyTable", key, raw, where)
+        body["points"] = arguments.points(points, where)
+        self._spec["bodies"].append(body)
         self._changed()
         return name
 
@@ -104,18 +121,18 @@ class Model:
         """Ideal slider: no relative rotation; ``second`` moves on the line through ``first`` along
         ``axis`` (in the first body's frame)."""
         return self._joint({"type": "translational", "name": name, "first": first, "second": second,
-                            "axis": _vec(axis, f"joints.{name}.axis")})
+                            "axis": _arg("TranslationalTable", "axis", axis, _where("joints", name))})
 
     def add_fixed(self, name: str, first: str, second: str) -> str:
         """Ideal weld between two bodies at coincident points."""
         return self._joint({"type": "fixed", "name": name, "first": first, "second": second})
 
-    def add_clearance_revolute(self, name: str, bearing: str, journal: str, *, bearing_radius: float,
-                               clearance: float, contact: dict, length: float | None = None,
+    def add_clearance_revolute(self, name: str, bearing: str, journal: str, *, bearing_radius: Quantity,
+                               clearance: Quantity, contact: dict, length: Quantity | None = None,
                                stiffness: dict | None = None, friction: dict | None = None,
                                bearing_material: dict = STEEL, journal_material: dict = STEEL,
                                initial_eccentricity: Vector = (0.0, 0.0), lock_at_assembly: bool = True,
-                               onset_velocity_floor: float = 1e-4, max_penetration: float | None = None,
+                               onset_velocity_floor: Quantity = 1e-4, max_penetration: Quantity | None = None,
                                lubrication: dict | None = None) -> str:
         """Dry revolute joint with radial clearance: bore of radius ``bearing_radius`` [m] centred at
         ``bearing``, journal of radius ``bearing_radius - clearance`` centred at ``journal``.
@@ -125,20 +142,26 @@ class Model:
         ``onset_velocity_floor`` [m/s] bounds the damping term for grazing contacts; the run stops if the
         penetration exceeds ``max_penetration`` [m] (default 5 % of the journal radius). ``lubrication``
         (:func:`jointplay.laws.lubrication`) fills the clearance with a lubricant film; dry contact still
-        acts once the journal touches the bore."""
-        joint = {
-            "type": "clearance_revolute", "name": name, "bearing": bearing, "journal": journal,
-            "bearing_radius": float(bearing_radius), "clearance": float(clearance),
-            "length": None if length is None else float(length),
-            "bearing_material": dict(bearing_material), "journal_material": dict(journal_material),
-            "contact": dict(contact), "stiffness": dict(stiffness or hertz_cylinder()),
-            "friction": dict(friction or frictionless()),
-            "initial_eccentricity": _vec(initial_eccentricity, f"joints.{name}.initial_eccentricity"),
+        acts once the journal touches the bore. Lengths and speeds may be strings with units
+        (``bearing_radius="10 mm", clearance="0.5 mm"``) or pint quantities."""
+        from .modelfile import arguments
+
+        where = _where("joints", name)
+        joint = {"type": "clearance_revolute", "name": name, "bearing": bearing, "journal": journal}
+        for key, raw in (("bearing_radius", bearing_radius), ("clearance", clearance), ("length", length)):
+            joint[key] = _arg("ClearanceRevoluteTable", key, raw, where)
+        joint.update({
+            "bearing_material": arguments.material(bearing_material, f"{where}.bearing_material"),
+            "journal_material": arguments.material(journal_material, f"{where}.journal_material"),
+            "contact": arguments.law(contact, "contact", where),
+            "stiffness": arguments.law(stiffness or hertz_cylinder(), "stiffness", where),
+            "friction": arguments.law(friction or frictionless(), "friction", where),
+            "initial_eccentricity": _arg("ClearanceRevoluteTable", "initial_eccentricity", initial_eccentricity, where),
             "lock_at_assembly": bool(lock_at_assembly),
-            "onset_velocity_floor": float(onset_velocity_floor),
-            "max_penetration": None if max_penetration is None else float(max_penetration),
+            "onset_velocity_floor": _arg("ClearanceRevoluteTable", "onset_velocity_floor", onset_velocity_floor, where),
+            "max_penetration": _arg("ClearanceRevoluteTable", "max_penetration", max_penetration, where),
             "lubrication": None if lubrication is None else copy.deepcopy(lubrication),
-        }
+        })
         return self._joint(joint)
 
     def _joint(self, joint: dict) -> str:
@@ -146,35 +169,45 @@ class Model:
         self._changed()
         return joint["name"]
 
-    def add_driver(self, name: str, joint: str, function: dict | float) -> str:
+    def add_driver(self, name: str, joint: str, function: dict | Quantity) -> str:
         """Prescribes a joint coordinate over time: the relative angle of a revolute joint [rad] or the
-        displacement along a translational joint [m]; ``function`` from :mod:`jointplay.functions`."""
-        self._spec["drivers"].append({"name": name, "joint": joint, "function": as_function(function)})
+        displacement along a translational joint [m]; ``function`` from :mod:`jointplay.functions`
+        (its values may be strings with units, as in a model file) or a constant."""
+        kinds = {j["name"]: j["type"] for j in self._spec["joints"]}
+        kind = "length" if kinds.get(joint) == "translational" else "angle"
+        self._spec["drivers"].append({"name": name, "joint": joint,
+                                      "function": _function(function, kind, _where("drivers", name) + ".function")})
         self._changed()
         return name
 
-    def add_spring_damper(self, name: str, first: str, second: str, *, free_length: float,
-                          stiffness: float = 0.0, damping: float = 0.0) -> str:
+    def add_spring_damper(self, name: str, first: str, second: str, *, free_length: Quantity,
+                          stiffness: Quantity = 0.0, damping: Quantity = 0.0) -> str:
         """Linear spring [N/m] and damper [N s/m] between two points, free length [m]."""
-        return self._force({"type": "spring_damper", "name": name, "first": first, "second": second,
-                            "stiffness": float(stiffness), "damping": float(damping),
-                            "free_length": float(free_length)})
+        where = _where("forces", name)
+        values = {key: _arg("SpringDamperTable", key, raw, where)
+                  for key, raw in (("stiffness", stiffness), ("damping", damping), ("free_length", free_length))}
+        return self._force({"type": "spring_damper", "name": name, "first": first, "second": second, **values})
 
-    def add_rotational_spring_damper(self, name: str, first: str, second: str, *, stiffness: float = 0.0,
-                                     damping: float = 0.0, free_angle: float = 0.0) -> str:
+    def add_rotational_spring_damper(self, name: str, first: str, second: str, *, stiffness: Quantity = 0.0,
+                                     damping: Quantity = 0.0, free_angle: Quantity = 0.0) -> str:
         """Torsional spring [N m/rad] and damper [N m s/rad] on the relative angle of two bodies."""
+        where = _where("forces", name)
+        values = {key: _arg("RotationalSpringDamperTable", key, raw, where)
+                  for key, raw in (("stiffness", stiffness), ("damping", damping), ("free_angle", free_angle))}
         return self._force({"type": "rotational_spring_damper", "name": name, "first": first, "second": second,
-                            "stiffness": float(stiffness), "damping": float(damping),
-                            "free_angle": float(free_angle)})
+                            **values})
 
-    def add_point_force(self, name: str, point: str, fx: dict | float = 0.0, fy: dict | float = 0.0) -> str:
-        """Force at a point, global components [N] (numbers or functions of time)."""
+    def add_point_force(self, name: str, point: str, fx: dict | Quantity = 0.0, fy: dict | Quantity = 0.0) -> str:
+        """Force at a point, global components [N] (numbers, strings with units or functions of time)."""
+        where = _where("forces", name)
         return self._force({"type": "point_force", "name": name, "point": point,
-                            "fx": as_function(fx), "fy": as_function(fy)})
+                            "fx": _function(fx, "force", f"{where}.fx"), "fy": _function(fy, "force", f"{where}.fy")})
 
-    def add_torque(self, name: str, body: str, torque: dict | float) -> str:
+    def add_torque(self, name: str, body: str, torque: dict | Quantity) -> str:
         """Torque on a body [N m], counter-clockwise positive."""
-        return self._force({"type": "torque", "name": name, "body": body, "torque": as_function(torque)})
+        where = _where("forces", name)
+        return self._force({"type": "torque", "name": name, "body": body,
+                            "torque": _function(torque, "torque", f"{where}.torque")})
 
     def _force(self, force: dict) -> str:
         self._spec["forces"].append(force)
@@ -225,11 +258,14 @@ class Model:
     # compile, check, simulate -----------------------------------------------
 
     def compile(self):
-        """Compiles the description (cached until the next change); raises ModelError."""
+        """Compiles the description (cached until the next change); raises ModelError, located by element
+        name (``joints.B.clearance``, not the core's ``joints[3].clearance``)."""
         if self._core is None:
             core, problems = _core.compile_model(self.to_json())
             if problems:
-                raise ModelError(problems)
+                from .modelfile import core_location
+
+                raise ModelError([(core_location(where, self._spec), message) for where, message in problems])
             self._core = core
         return self._core
 
@@ -257,9 +293,16 @@ class Model:
         tolerances; ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
         accepted step). ``progress`` is called with the simulated time about ten times a second.
 
+        Values that are legal but almost certainly mistakes (a clearance of 20 % of the radius, a mass
+        1e4 times the others; :func:`jointplay.modelfile.plausibility`) are issued first as
+        :class:`~jointplay.errors.JointplayWarning` warnings; they do not stop the run.
+
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
         """
+        from .modelfile.plausibility import warn
+
+        warn(self._spec)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization)
         core = self.compile()
@@ -295,6 +338,12 @@ class Model:
         from pathlib import Path
 
         Path(path).write_text(self.to_toml(), encoding="utf-8")
+
+
+def _function(raw: Any, kind: str, where: str) -> dict:
+    from .modelfile import arguments
+
+    return arguments.function(as_function(raw) if isinstance(raw, (int, float)) else raw, kind, where)
 
 
 def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,

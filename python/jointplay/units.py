@@ -1,11 +1,21 @@
 """Physical quantities written with units, converted to SI with pint.
 
-A model file writes every physical quantity either as a bare number (SI
-units) or as a string with a unit: ``"0.5 mm"``, ``"5000 rpm"``,
+A quantity is a string with a unit: ``"0.5 mm"``, ``"5000 rpm"``,
 ``"207 GPa"``, ``"0.034 kg m^2"``, ``"400 cP"``. :func:`to_si` converts one
 to a float in the SI unit of its kind and raises :class:`UnitError` with a
 message fit for the user when the text is not a quantity or has the wrong
 dimension (``"5 kg"`` for a length).
+
+The number is read here, by a strict decimal pattern; pint sees only the
+unit text, which may hold unit names, spaces, ``*``, ``/``, parentheses and
+``^`` or ``**`` followed by a small integer. Nothing else reaches pint, so a
+quantity string is never arithmetic (``"10**10**8 kg"`` is refused at once).
+
+Bare numbers: in Python (the :class:`~jointplay.Model` builder, CLI options)
+a bare number is in SI units. In a model file (inside
+:func:`model_file_units`) a bare number in a dimensional field is an error
+unless the file declares the unit of that kind in its ``[units]`` table;
+zero and dimensionless numbers need no unit.
 
 Angles are in rad (``"deg"``, ``"rev"`` accepted); angular speeds in rad/s
 (``"rpm"`` is revolutions per minute, 2 pi / 60 rad/s). ``Hz`` is refused
@@ -16,10 +26,12 @@ a ``frequency`` in Hz given in ``rpm`` or ``rad/s`` is converted as cycles.
 from __future__ import annotations
 
 import math
+import re
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass
 from functools import lru_cache
-
-import pint
+from typing import Any
 
 
 class UnitError(ValueError):
@@ -34,6 +46,16 @@ class Kind:
     si: str
     example: str
     angular: bool = False
+
+    @property
+    def key(self) -> str:
+        """The kind's key in a model file's ``[units]`` table (``angular_velocity``)."""
+        return self.name.replace(" ", "_")
+
+    @property
+    def example_unit(self) -> str:
+        """The unit of the example (``"mm"`` for ``"0.5 mm"``)."""
+        return self.example.partition(" ")[2]
 
 
 KINDS: dict[str, Kind] = {k.name: k for k in [
@@ -58,17 +80,61 @@ KINDS: dict[str, Kind] = {k.name: k for k in [
     Kind("dimensionless", "", "0.9"),
 ]}
 
+#: Kinds whose default unit a model file may declare in ``[units]`` (by key: ``angular_velocity``).
+#: Every dimensional kind can be declared; none follows from another (see docs/model-files.md).
+DECLARABLE = {k.key: k for k in KINDS.values() if k.si}
+
 _ANGLE_UNITS = {"radian", "degree", "revolution", "turn", "arcminute", "arcsecond", "revolutions_per_minute",
                 "gradian", "grade", "milliradian", "cycle"}
 _HERTZ_UNITS = {"hertz", "kilohertz", "megahertz"}
 
+#: Longest quantity text read [characters] and longest unit text: far above any real quantity, small
+#: enough to read at once.
+MAX_TEXT, MAX_UNIT_TEXT = 1000, 100
+_NUMBER = re.compile(r"[+-]?(?:(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?|nan|inf(?:inity)?)", re.IGNORECASE)
+# unit names, spaces, * and /, parentheses, ^ or ** with an exponent of at most two digits, "1/" as in "1/s"
+_UNIT_TEXT = re.compile(r"(?:\s+|[^\W\d]+|(?:\^|\*\*)\s*[+-]?\d{1,2}(?!\d)|\*|/|\(|\)|%|1(?=\s*/))*")
+_POWER_OF_POWER = re.compile(r"(?:\^|\*\*)\s*[+-]?\d+\s*(?:\^|\*\*)")
+
+#: Units declared by the model file being read: kind key -> (unit text, SI value of one unit).
+_DECLARED: ContextVar[dict[str, tuple[str, float]] | None] = ContextVar("jointplay_declared_units", default=None)
+
 
 @lru_cache(maxsize=1)
-def registry() -> pint.UnitRegistry:
-    """The one pint registry jointplay uses (with ``rev`` for revolution, as in ``"10 rev/s"``)."""
+def registry():
+    """The one pint registry jointplay uses (with ``rev`` for revolution, as in ``"10 rev/s"``).
+    pint is imported here, on first use, so that ``import jointplay`` does not load it."""
+    import pint
+
     ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     ureg.define("rev = revolution")
     return ureg
+
+
+@contextmanager
+def model_file_units(declared: dict[str, tuple[str, float]]):
+    """While reading a model file: a bare number in a dimensional field needs a unit declared in
+    ``declared`` (from :func:`declare_units`), except zero."""
+    token = _DECLARED.set(dict(declared))
+    try:
+        yield
+    finally:
+        _DECLARED.reset(token)
+
+
+def declare_unit(key: str, unit: Any) -> tuple[str, float]:
+    """One entry of a ``[units]`` table checked: (unit text, SI value of one unit); raises UnitError."""
+    kind = DECLARABLE[key]
+    if not isinstance(unit, str):
+        raise UnitError(f"must be a unit of {kind.name} as a string, e.g. \"{kind.example_unit}\", "
+                        f"got {format_value(unit)}")
+    number, _ = _split(unit)
+    if number:
+        raise UnitError(f"must be a unit without a number, e.g. \"{kind.example_unit}\", got {unit!r}")
+    value = _convert(_quantity(1.0, unit.strip(), unit), kind, unit)
+    if not (math.isfinite(value) and value > 0):
+        raise UnitError(f"must be a unit of {kind.name} (e.g. \"{kind.example_unit}\"), got {unit!r}")
+    return unit.strip(), value
 
 
 def _unit_names(q) -> set[str]:
@@ -90,30 +156,76 @@ def describe_dimension(q) -> str:
     return f"a quantity of dimension {dims}"
 
 
+def _short(raw: int) -> str:
+    digits = str(raw)
+    return digits if len(digits) <= 20 else f"{digits[:12]}... (an integer of {len(digits.lstrip('-'))} digits)"
+
+
 def format_value(raw: object, kind: str | Kind | None = None) -> str:
-    """The value as the user wrote it: strings as they are, bare numbers followed by the SI unit."""
+    """The value as the user wrote it: strings as they are, bare numbers followed by the unit they are
+    read in (SI, or the unit a model file declares)."""
     if isinstance(raw, str):
-        return raw
+        return raw if len(raw) <= 60 else _quoted(raw)
     if isinstance(raw, bool):
         return repr(raw).lower()
     if isinstance(raw, (int, float)):
         spec = KINDS.get(kind) if isinstance(kind, str) else kind
-        unit = spec.si.replace("*", " ") if spec is not None else ""
-        return f"{raw:g} {unit}".strip() if isinstance(raw, float) else f"{raw} {unit}".strip()
+        unit = _bare_unit(spec) if spec is not None else ""
+        if isinstance(raw, int):
+            return f"{_short(raw)} {unit}".strip() if abs(raw) < 10**20 else _short(raw)
+        return f"{raw:g} {unit}".strip() if math.isfinite(raw) else f"{raw}"
+    if _is_quantity(raw):
+        return f"{raw.magnitude:g} {raw.units:~}".strip()
     return repr(raw)
 
 
-def parse(text: str):
-    """A pint Quantity from text; raises UnitError."""
+def _quoted(text: str) -> str:
+    """``text`` quoted for a message, shortened when long."""
+    return repr(text) if len(text) <= 60 else repr(text[:40]) + f"... ({len(text)} characters)"
+
+
+def _bare_unit(spec: Kind) -> str:
+    declared = _DECLARED.get()
+    if declared is not None and spec.key in declared:
+        return declared[spec.key][0]
+    return spec.si.replace("*", " ")
+
+
+def _split(text: str) -> tuple[str, str]:
+    """``"0.5 mm"`` -> ("0.5", "mm"): the leading number (may be empty) and the rest, stripped."""
+    text = text.strip()
+    match = _NUMBER.match(text)
+    if match is None:
+        return "", text
+    return match.group(0), text[match.end():].strip()
+
+
+def _quantity(value: float, unit: str, text: str):
+    """A pint Quantity of ``value`` in ``unit``, the unit text checked before pint reads it; ``text`` is
+    what the user wrote, for messages."""
+    import pint
+
+    unreadable = f"cannot be read as a number with a unit (e.g. \"0.5 mm\"), got {_quoted(text)}"
+    if len(unit) > MAX_UNIT_TEXT or not _UNIT_TEXT.fullmatch(unit) or _POWER_OF_POWER.search(unit):
+        raise UnitError(unreadable)
     try:
-        q = registry().Quantity(text.strip())
+        units = registry().parse_units(unit)
     except pint.UndefinedUnitError as exc:
-        raise UnitError(f"has an unknown unit {', '.join(map(repr, exc.unit_names))}, got {text!r}") from None
-    except Exception:  # pint's tokenizer raises many types (AssertionError, SyntaxError, TypeError...)
-        raise UnitError(f"cannot be read as a number with a unit (e.g. \"0.5 mm\"), got {text!r}") from None
-    if not isinstance(q, registry().Quantity):  # e.g. a plain number parsed from a string
-        q = registry().Quantity(float(q), "")
-    return q
+        names = exc.unit_names if isinstance(exc.unit_names, (list, tuple)) else [exc.unit_names]
+        raise UnitError(f"has an unknown unit {', '.join(map(repr, names))}, got {_quoted(text)}") from None
+    except Exception:  # pint's parser raises many types (DefinitionSyntaxError, TypeError...)
+        raise UnitError(unreadable) from None
+    return registry().Quantity(value, units)
+
+
+def parse(text: str):
+    """A pint Quantity from text (a plain number gives a dimensionless one); raises UnitError."""
+    if len(text) > MAX_TEXT:
+        raise UnitError(f"is too long to be a quantity ({len(text)} characters), got {_quoted(text)}")
+    number, unit = _split(text)
+    if not number:
+        raise UnitError(f"cannot be read as a number with a unit (e.g. \"0.5 mm\"), got {text!r}")
+    return _quantity(float(number), unit, text)
 
 
 def per_time(kind: str | Kind, power: int) -> Kind:
@@ -130,33 +242,71 @@ def per_time(kind: str | Kind, power: int) -> Kind:
     return Kind(f"{base.name} per s^{power}", si, f"1 {example_unit}", base.angular)
 
 
+def _is_quantity(raw: object) -> bool:
+    return hasattr(raw, "magnitude") and hasattr(raw, "units") and hasattr(raw, "dimensionality")
+
+
 def to_si(raw: object, kind: str | Kind) -> float:
-    """``raw`` (a number in SI units or a string with a unit) as a float in the SI unit of ``kind``."""
+    """``raw`` (a number, a string with a unit or a pint Quantity) as a float in the SI unit of ``kind``.
+    A bare number is SI, except while a model file is read (:func:`model_file_units`)."""
     spec = KINDS[kind] if isinstance(kind, str) else kind
+    if _is_quantity(raw):
+        return _from_quantity(raw, spec)
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
         raise UnitError(f"must be a number or a string with a unit (e.g. \"{spec.example}\"), got {format_value(raw)}")
+    if isinstance(raw, int) and abs(raw) > 10**300:
+        raise UnitError(f"must be finite, got {_short(raw)}")
     if isinstance(raw, (int, float)):
-        value = float(raw)
-    else:
-        q = parse(raw)
-        if not _unit_names(q):  # a number written as a string: SI, like a bare number
-            value = float(q.magnitude)
-        else:
-            value = _convert(q, spec, raw)
+        return _bare(float(raw), spec, raw)
+    q = parse(raw)
+    if not _unit_names(q):  # a number written as a string: a bare number
+        return _bare(float(q.magnitude), spec, raw)
+    if not math.isfinite(q.magnitude):
+        raise UnitError(f"must be finite, got {format_value(raw)}")
+    value = _convert(q, spec, raw)
     if not math.isfinite(value):
-        raise UnitError(f"must be finite, got {format_value(raw, spec)}")
+        raise UnitError(f"must be finite, got {format_value(raw)} (beyond the range of numbers once in SI units)")
     return value
+
+
+def _bare(value: float, spec: Kind, raw: object) -> float:
+    """A bare number: SI in Python; in a model file only zero, a plain number or a declared unit."""
+    if not math.isfinite(value):
+        raise UnitError(f"must be finite, got {format_value(raw) if isinstance(raw, str) else value}")
+    declared = _DECLARED.get()
+    if declared is None or not spec.si or value == 0.0:
+        return value
+    if spec.key in declared:
+        return value * declared[spec.key][1]
+    unit = spec.example_unit
+    shown = raw.strip() if isinstance(raw, str) else format_value(raw)
+    hint = f" (or declare [units] {spec.key} = \"{unit}\")" if spec.key in DECLARABLE else ""
+    raise UnitError(f"a bare number needs a unit, e.g. \"{shown} {unit}\"{hint}, got {shown}")
+
+
+def _from_quantity(raw, spec: Kind) -> float:
+    """A pint Quantity (of any registry) converted through its unit text."""
+    try:
+        magnitude = float(raw.magnitude)
+    except (TypeError, ValueError):
+        raise UnitError(f"must be a single quantity (e.g. \"{spec.example}\"), got {raw!r}") from None
+    if not math.isfinite(magnitude):
+        raise UnitError(f"must be finite, got {magnitude}")
+    text = format_value(raw)
+    q = registry().Quantity(magnitude, registry().parse_units(str(raw.units)))
+    return _convert(q, spec, text)
 
 
 def _convert(q, spec: Kind, raw: str) -> float:
     names = _unit_names(q)
     if spec.name == "angular velocity" and names & _HERTZ_UNITS:
-        raise UnitError(f"Hz is ambiguous for an angular speed; write rpm, rev/s or rad/s, got {raw!r}")
+        raise UnitError(f"Hz is ambiguous for an angular speed; write rpm, rev/s or rad/s, got {_quoted(raw)}")
     if not spec.angular and spec.name != "frequency" and names & _ANGLE_UNITS:
-        raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), got an angular quantity {raw!r}")
+        raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), "
+                        f"got an angular quantity {_quoted(raw)}")
     target = registry().Quantity(1, spec.si) if spec.si else registry().Quantity(1, "")
     if q.dimensionality != target.dimensionality:
-        raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), got {raw!r}, "
+        raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), got {_quoted(raw)}, "
                         f"which is {describe_dimension(q)}")
     value = float(q.to(target.units).magnitude)
     if spec.name == "frequency" and names & _ANGLE_UNITS:

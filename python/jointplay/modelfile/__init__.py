@@ -5,8 +5,11 @@ applies ``--set`` style overrides, validates every table (units, ranges,
 unknown keys, references, geometry), compiles the mechanism in the core and
 assembles its initial configuration. Every problem found comes back in one
 :class:`~jointplay.errors.ModelError`, located in the file's own terms
-(``joints.B.clearance``). ``to_toml(model)`` writes a model back; loading
-that text gives the same model. The keys are documented in
+(``joints.B.clearance``). A bare number in a dimensional key is an error
+unless the file's ``[units]`` table declares the unit of its kind.
+``plausibility(spec)`` lists legal but suspicious values (warnings, not
+errors). ``to_toml(model)`` writes a model back, every unit spelled out;
+loading that text gives the same model. The keys are documented in
 ``docs/model-files.md``.
 """
 
@@ -20,21 +23,34 @@ from typing import Any
 from ..errors import ModelError, Problem, SimulationError
 from .build import Builder
 from .overrides import apply_overrides, parse_assignment
+from .plausibility import plausibility
 from .writer import to_toml as _spec_to_toml
 
-__all__ = ["apply_overrides", "load", "loads", "parse_assignment", "read_document", "to_toml"]
+__all__ = ["apply_overrides", "load", "loads", "parse_assignment", "plausibility", "read_document", "to_toml"]
 
 
 def read_document(path: str | Path) -> dict:
     """The parsed TOML of a model file; a missing or unreadable file is a ModelError."""
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        data = path.read_bytes()
     except FileNotFoundError:
         raise ModelError([Problem(str(path), "no such file")]) from None
-    except (IsADirectoryError, PermissionError, UnicodeDecodeError) as exc:
+    except OSError as exc:  # a folder, no permission, a device...
         raise ModelError([Problem(str(path), f"cannot be read: {exc.strerror or exc}")]) from None
-    return parse_text(text, str(path))
+    return parse_text(_text(data, str(path)), str(path))
+
+
+def _text(data: bytes, where: str) -> str:
+    """The UTF-8 text of a model file; a binary file (NUL bytes, not UTF-8) is a ModelError."""
+    nul = data.find(b"\x00")
+    if nul >= 0:
+        _raise(where, f"is a binary file (a NUL byte at offset {nul}), not a TOML model file")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        return _raise(where, f"is not UTF-8 text (byte 0x{data[exc.start]:02x} at offset {exc.start}); "
+                             "a model file is TOML text in UTF-8")
 
 
 def parse_text(text: str, where: str = "model file") -> dict:

@@ -15,6 +15,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from ..errors import ModelError, Problem
+from ..units import DECLARABLE, UnitError, declare_unit, model_file_units
 from . import schema as s
 from .fields import Q, Strict, did_you_mean, join, problems_from
 from .functions import function_spec
@@ -42,6 +43,11 @@ class Builder:
             if key not in s.TOP_LEVEL:
                 self.problem(join(key), f"unknown section{did_you_mean(key, s.TOP_LEVEL)}; "
                                         f"sections: {', '.join(s.TOP_LEVEL)}")
+        with model_file_units(self.units_table()):
+            self.sections()
+        return self
+
+    def sections(self) -> None:
         self.model_table()
         self.ground()
         self.bodies()
@@ -50,7 +56,6 @@ class Builder:
         self.forces()
         self.simulation_table()
         self.connectivity()
-        return self
 
     def result(self) -> tuple[dict, dict]:
         if self.problems:
@@ -125,6 +130,21 @@ class Builder:
             self.referenced.add(ref)
 
     # sections --------------------------------------------------------------
+
+    def units_table(self) -> dict[str, tuple[str, float]]:
+        """``[units]``: the unit of bare numbers of each declared kind (``length = "mm"``)."""
+        declared = {}
+        for key, unit in self.table("units").items():
+            where = join("units", key)
+            if key not in DECLARABLE:
+                self.problem(where, f"unknown kind of quantity{did_you_mean(key, DECLARABLE)}; "
+                                    f"kinds: {', '.join(DECLARABLE)}")
+                continue
+            try:
+                declared[key] = declare_unit(key, unit)
+            except UnitError as exc:
+                self.problem(where, str(exc))
+        return declared
 
     def model_table(self) -> None:
         table = self.validate(s.ModelTable, self.table("model"), "model")
@@ -245,6 +265,13 @@ class Builder:
             return False
         # every problem of the table is reported, so the transition is read even when the rest is bad
         table = self.validate(s.LubricationTable, raw, where)
+        if table is not None and table.model not in s.REYNOLDS_MODELS:
+            unused = [key for key in s.REYNOLDS_ONLY_KEYS if key in raw]
+            for key in unused:
+                self.problem(join(where, key), f"applies only to the {' and '.join(s.REYNOLDS_MODELS)} models, "
+                                               f"not to model = {table.model!r}; remove it or choose a Reynolds model")
+            if unused:
+                return False
         transition = self.law(raw, "transition", s.TRANSITION_LAWS, where, default={"law": "wang_improved"})
         if length is None:
             self.problem(join(joint_where, "length"), 'missing required value: a lubricated joint needs the bearing '
@@ -373,7 +400,12 @@ class Builder:
                            for k, v in table.model_dump(exclude_none=True).items()}
 
     def connectivity(self) -> None:
-        """A body that no joint or force element refers to is a mistake unless marked ``free = true``."""
+        """A model without bodies is a mistake; so is a body that no joint or force element refers to,
+        unless marked ``free = true``."""
+        if not self.table("bodies"):
+            self.problem("bodies", "the model has no bodies: describe at least one as a [bodies.NAME] table "
+                                   "with its mass and inertia")
+            return
         if any(p.location.startswith(("joints", "forces")) for p in self.problems):
             return  # references are incomplete; do not pile on
         for body in self.spec["bodies"]:

@@ -81,7 +81,9 @@ def _vector(raw: Any, kind: str | Kind) -> tuple[Q, Q]:
         try:
             out.append(convert(component, kind))
         except PydanticCustomError as exc:
-            raise fail(f"{'xy'[k]} component {exc.message()}") from None
+            message = exc.message()
+            glue = ": " if message.startswith("a bare number") else " "
+            raise fail(f"{'xy'[k]} component{glue}{message}") from None
     return out[0], out[1]
 
 

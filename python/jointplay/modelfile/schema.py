@@ -280,13 +280,17 @@ class SimulationTable(Strict):
     stabilization: choice("projection", "baumgarte", "none") = None
 
 
-TOP_LEVEL = ("model", "ground", "bodies", "joints", "drivers", "forces", "simulation")
+TOP_LEVEL = ("model", "units", "ground", "bodies", "joints", "drivers", "forces", "simulation")
 
 
 # lubrication ---------------------------------------------------------------
 
 FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamrock_long", "frene_short",
                "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
+REYNOLDS_MODELS = ("reynolds_exact", "reynolds_table")
+#: Keys of a lubrication table that only the Reynolds solver reads (the closed forms have no grid,
+#: cavitation condition or boundary pressures).
+REYNOLDS_ONLY_KEYS = ("cavitation", "grid", "ambient_pressure", "groove_supply_pressure")
 
 
 class LubricationTable(Strict):

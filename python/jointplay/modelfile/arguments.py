@@ -1,0 +1,99 @@
+"""Arguments of the Python builder, converted by the model file's own field definitions.
+
+``Model.add_body(mass="0.3 kg")``, ``add_clearance_revolute(clearance="0.5 mm")``: every physical
+argument of the builder is a number (SI units), a string with a unit or a pint Quantity. Each one is
+read by the validator of the matching model-file key (:mod:`.schema`), so units, ranges and messages
+are defined once: ``joints.B.clearance: must be > 0, got -0.1 mm`` in a file and in Python alike.
+A wrong argument raises a :class:`~jointplay.errors.ModelError` located by element name.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from pydantic import BaseModel
+from pydantic_core import PydanticCustomError
+
+from ..errors import ModelError, Problem
+from .fields import _vector, join
+from .functions import function_spec
+
+
+def _validator(cls: type[BaseModel], key: str):
+    """The plain validator of a field of a model-file table (a quantity or a vector)."""
+    for item in cls.model_fields[key].metadata:
+        if hasattr(item, "func"):
+            return item.func
+    raise KeyError(f"{cls.__name__}.{key} has no validator")
+
+
+def _fail(where: str, exc: PydanticCustomError):
+    raise ModelError([Problem(where, exc.message())]) from None
+
+
+def value(cls: type[BaseModel], key: str, raw: Any, where: str) -> Any:
+    """``raw`` read as the key ``key`` of the table class ``cls``: a float, a list of two floats, or None
+    for None; ``where`` is the element's location (``joints.B``)."""
+    if raw is None:
+        return None
+    try:
+        out = _validator(cls, key)(raw)
+    except PydanticCustomError as exc:
+        _fail(join(where, key), exc)
+    if isinstance(out, tuple):
+        return [float(v) for v in out]
+    return float(out)
+
+
+def point(raw: Any, where: str) -> list[float]:
+    """A point ``(x, y)`` [m] of the ground or of a body."""
+    try:
+        x, y = _vector(raw, "length")
+    except PydanticCustomError as exc:
+        _fail(where, exc)
+    return [float(x), float(y)]
+
+
+def points(raw: dict[str, Any] | None, where: str) -> list[dict]:
+    """Named points of a body, ``{"A": ("25 mm", 0)}``, as the core's list."""
+    return [{"name": name, "position": point(p, join(where, "points", name))} for name, p in (raw or {}).items()]
+
+
+def material(raw: dict, where: str) -> dict:
+    """A material ``{"youngs_modulus": "207 GPa", "poisson_ratio": 0.3}``."""
+    from .schema import MaterialTable
+
+    if not isinstance(raw, dict) or set(raw) != {"youngs_modulus", "poisson_ratio"}:
+        raise ModelError([Problem(where, f"must be a material such as jointplay.laws.material(\"207 GPa\", 0.3), "
+                                         f"got {raw!r}")])
+    return {key: value(MaterialTable, key, raw[key], where) for key in ("youngs_modulus", "poisson_ratio")}
+
+
+def function(raw: Any, kind: str, where: str) -> dict:
+    """A function of time (a dict from :mod:`jointplay.functions`, a number in SI units, a string with a
+    unit or a pint Quantity for a constant) with its values converted to SI."""
+    if isinstance(raw, (int, float)) and not isinstance(raw, bool):
+        raw = float(raw)
+    problems: list[Problem] = []
+    spec = function_spec(raw, kind, where, problems)
+    if problems or spec is None:
+        raise ModelError(problems or [Problem(where, f"must be a function of time, got {raw!r}")])
+    return spec
+
+
+def law(raw: Any, key: str, where: str) -> dict:
+    """A contact, stiffness or friction law (a dict from :mod:`jointplay.laws`, or written by hand with
+    units: ``{"law": "ambrosio", "coefficient": 0.01, "v0": "0.1 mm/s"}``) checked as in a model file."""
+    from . import schema as s
+    from .build import Builder
+
+    laws = {"contact": s.CONTACT_LAWS, "stiffness": s.STIFFNESS_LAWS, "friction": s.FRICTION_LAWS}[key]
+    builder = Builder({})
+    out = builder.law({key: raw}, key, laws, where, required=True)
+    if builder.problems or out is None:
+        raise ModelError(builder.problems or [Problem(join(where, key), f"must be a law, got {raw!r}")])
+    if key == "stiffness" and out["law"].startswith("hertz_cylinder"):
+        exponent = out.pop("exponent", None)
+        out = ({"law": "hertz_cylinder_exponent", "exponent": exponent} if exponent is not None
+               else {"law": "hertz_cylinder"})
+    return out
