@@ -117,3 +117,39 @@ def test_core_errors_name_the_element_not_its_index():
         m.compile()
     assert str(info.value.problems[0]) == "joints.B.clearance: clearance must be > 0, got -0.0001"
     assert {p.location for p in info.value.problems} == {"joints.B.clearance", "joints.B.stiffness"}
+
+
+def test_law_and_function_helpers_take_units():
+    from jointplay import functions as fn
+
+    q = registry().Quantity
+    assert laws.ambrosio(0.01, "0.1 mm/s", q(1, "mm/s")) == {"law": "ambrosio", "coefficient": 0.01,
+                                                             "v0": pytest.approx(1e-4), "v1": pytest.approx(1e-3)}
+    assert laws.material("207 GPa", 0.3)["youngs_modulus"] == pytest.approx(207e9)
+    assert laws.lubrication("hamrock_short", "400 cP")["viscosity"] == pytest.approx(0.4)
+    assert laws.wang_transition("2 um")["safe_film_thickness"] == pytest.approx(2e-6)
+    m = flores_with_units()
+    m.add_torque("load", "crank", fn.cubic_step("0 ms", "10 ms", 0, "2 N m"))
+    spec = m.to_spec()
+    assert spec["forces"][0]["torque"] == {"kind": "cubic_step", "t_start": 0.0, "t_end": pytest.approx(0.01),
+                                           "value_start": 0.0, "value_end": pytest.approx(2.0)}
+    m2 = flores_with_units()
+    m2._spec["drivers"].clear()
+    m2.add_driver("motor", "O", fn.constant_speed("5000 rpm"))
+    assert m2.to_spec()["drivers"][0]["function"]["rate"] == pytest.approx(5000 * 2 * math.pi / 60, rel=1e-12)
+
+
+def test_law_helpers_name_the_key_of_a_wrong_unit():
+    with pytest.raises(jp.ModelError, match=r"friction.v0: must be a velocity .*got '0.1 mm'"):
+        laws.ambrosio(0.01, "0.1 mm")
+    with pytest.raises(jp.ModelError, match=r"lubrication.viscosity: must be a viscosity"):
+        laws.lubrication("hamrock_short", "400 kg")
+
+
+def test_function_helper_with_a_wrong_unit_is_reported_at_the_driver():
+    from jointplay import functions as fn
+
+    m = flores_with_units()
+    m._spec["drivers"].clear()
+    with pytest.raises(jp.ModelError, match=r"drivers.motor.function.rate: must be an angular velocity"):
+        m.add_driver("motor", "O", fn.constant_speed("5 m/s"))

@@ -1,24 +1,36 @@
 """Functions of time for drivers and loads, as plain model-description data.
 
-Each helper returns the dictionary the core reads; the value is in SI units
-of whatever it prescribes (rad for a joint angle, m for a slider position,
-N for a force, N m for a torque).
+Each helper returns the dictionary the core reads. A value is a number in SI
+units of whatever it prescribes (rad for a joint angle, m for a slider
+position, N for a force, N m for a torque), or a string with a unit or a pint
+Quantity (``constant_speed("5000 rpm")``, ``cubic_step("0 ms", "30 ms", 0,
+"90 deg")``): those are kept as written and converted when the function is
+attached to a driver or a load, where the kind of the prescribed quantity is
+known (the builder validates them as a model file's function table).
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from typing import Any
+
+
+def _value(x: Any) -> Any:
+    """A number as a float (SI); a string with a unit or a pint Quantity as it is, for the builder."""
+    if isinstance(x, (int, float)) and not isinstance(x, bool):
+        return float(x)
+    return x
 
 
 def constant(value: float) -> dict:
     """A constant value."""
-    return {"kind": "constant", "value": float(value)}
+    return {"kind": "constant", "value": _value(value)}
 
 
 def constant_speed(rate: float, initial: float = 0.0) -> dict:
     """``initial + rate * t``: a crank at constant speed (rate in rad/s) or a slider at constant velocity."""
-    return {"kind": "constant_rate", "initial": float(initial), "rate": float(rate)}
+    return {"kind": "constant_rate", "initial": _value(initial), "rate": _value(rate)}
 
 
 def rpm(speed: float) -> float:
@@ -28,28 +40,29 @@ def rpm(speed: float) -> float:
 
 def polynomial(coefficients: Sequence[float]) -> dict:
     """``sum c_k t^k``, constant term first."""
-    return {"kind": "polynomial", "coefficients": [float(c) for c in coefficients]}
+    return {"kind": "polynomial", "coefficients": [_value(c) for c in coefficients]}
 
 
 def cubic_step(t_start: float, t_end: float, value_start: float, value_end: float) -> dict:
     """Smooth step ``v0 + (v1 - v0) s^2 (3 - 2 s)``, ``s = (t - t0)/(t1 - t0)``, constant outside."""
-    return {"kind": "cubic_step", "t_start": float(t_start), "t_end": float(t_end),
-            "value_start": float(value_start), "value_end": float(value_end)}
+    return {"kind": "cubic_step", "t_start": _value(t_start), "t_end": _value(t_end),
+            "value_start": _value(value_start), "value_end": _value(value_end)}
 
 
 def sine(amplitude: float, frequency: float, offset: float = 0.0, phase: float = 0.0) -> dict:
     """``offset + amplitude sin(2 pi frequency t + phase)``; frequency in Hz, phase in rad."""
-    return {"kind": "sine", "offset": float(offset), "amplitude": float(amplitude),
-            "frequency": float(frequency), "phase": float(phase)}
+    return {"kind": "sine", "offset": _value(offset), "amplitude": _value(amplitude),
+            "frequency": _value(frequency), "phase": _value(phase)}
 
 
 def table(times: Sequence[float], values: Sequence[float]) -> dict:
     """Natural cubic spline through ``(times, values)``; linear beyond the ends."""
-    return {"kind": "table", "times": [float(t) for t in times], "values": [float(v) for v in values]}
+    return {"kind": "table", "times": [_value(t) for t in times], "values": [_value(v) for v in values]}
 
 
-def as_function(value: float | dict) -> dict:
-    """A number becomes a constant function; a function dict is passed through."""
+def as_function(value: Any) -> dict:
+    """A number (or a string with a unit, or a pint Quantity) becomes a constant function; a function
+    dict is passed through."""
     if isinstance(value, dict):
         return value
-    return constant(float(value))
+    return constant(value)

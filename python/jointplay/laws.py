@@ -1,9 +1,25 @@
 """Contact, stiffness and friction laws of a clearance joint, as plain data.
 
-See ``docs/theory/`` for the equation, units and source of each law.
+See ``docs/theory/`` for the equation, units and source of each law. Every
+physical argument is a number in SI units, a string with a unit (``"0.1 mm/s"``,
+``"400 cP"``) or a pint Quantity, converted here by :func:`jointplay.units.to_si`;
+a wrong one raises :class:`~jointplay.errors.ModelError` naming the law's key.
 """
 
 from __future__ import annotations
+
+from typing import Any
+
+
+def _si(raw: Any, kind: str, where: str) -> float:
+    """``raw`` in the SI unit of ``kind``; a ModelError located at ``where`` when it is not one."""
+    from .errors import ModelError, Problem
+    from .units import UnitError, to_si
+
+    try:
+        return to_si(raw, kind)
+    except UnitError as exc:
+        raise ModelError([Problem(where, str(exc))]) from None
 
 STEEL = {"youngs_modulus": 207e9, "poisson_ratio": 0.3}
 """Structural steel, E = 207 GPa, nu = 0.3 (the value the Flores papers use)."""
@@ -11,7 +27,8 @@ STEEL = {"youngs_modulus": 207e9, "poisson_ratio": 0.3}
 
 def material(youngs_modulus: float, poisson_ratio: float) -> dict:
     """An elastic material: Young's modulus [Pa], Poisson's ratio [-]."""
-    return {"youngs_modulus": float(youngs_modulus), "poisson_ratio": float(poisson_ratio)}
+    return {"youngs_modulus": _si(youngs_modulus, "pressure", "material.youngs_modulus"),
+            "poisson_ratio": _si(poisson_ratio, "dimensionless", "material.poisson_ratio")}
 
 
 # normal force laws ---------------------------------------------------------
@@ -23,27 +40,27 @@ def hertz() -> dict:
 
 def hunt_crossley(restitution: float) -> dict:
     """Hunt-Crossley, D = 3(1-e)/2."""
-    return {"law": "hunt_crossley", "restitution": float(restitution)}
+    return {"law": "hunt_crossley", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
 
 
 def lankarani_nikravesh(restitution: float) -> dict:
     """Lankarani-Nikravesh, D = 3(1-e^2)/4 (accurate for e near 1)."""
-    return {"law": "lankarani_nikravesh", "restitution": float(restitution)}
+    return {"law": "lankarani_nikravesh", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
 
 
 def flores(restitution: float) -> dict:
     """Flores et al. 2011, D = 8(1-e)/(5e) (for any e)."""
-    return {"law": "flores", "restitution": float(restitution)}
+    return {"law": "flores", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
 
 
 def gonthier(restitution: float) -> dict:
     """Gonthier et al. 2004."""
-    return {"law": "gonthier", "restitution": float(restitution)}
+    return {"law": "gonthier", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
 
 
 def hu_guo(restitution: float) -> dict:
     """Hu and Guo 2015."""
-    return {"law": "hu_guo", "restitution": float(restitution)}
+    return {"law": "hu_guo", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
 
 
 # stiffness laws ------------------------------------------------------------
@@ -52,7 +69,7 @@ def hertz_cylinder(exponent: float | None = None) -> dict:
     """K delta^n with K = (4/3) E* sqrt(R*); n = 1.5 unless given."""
     if exponent is None:
         return {"law": "hertz_cylinder"}
-    return {"law": "hertz_cylinder_exponent", "exponent": float(exponent)}
+    return {"law": "hertz_cylinder_exponent", "exponent": _si(exponent, "dimensionless", "stiffness.exponent")}
 
 
 def johnson_line() -> dict:
@@ -74,25 +91,29 @@ def frictionless() -> dict:
 
 def coulomb(coefficient: float, velocity_tolerance: float = 1e-3) -> dict:
     """Coulomb friction regularised by tanh(v / velocity_tolerance)."""
-    return {"law": "coulomb", "coefficient": float(coefficient), "velocity_tolerance": float(velocity_tolerance)}
+    return {"law": "coulomb", "coefficient": _si(coefficient, "dimensionless", "friction.coefficient"),
+            "velocity_tolerance": _si(velocity_tolerance, "velocity", "friction.velocity_tolerance")}
 
 
 def ambrosio(coefficient: float, v0: float = 1e-4, v1: float = 1e-3) -> dict:
     """Modified Coulomb law of Ambrosio: none below v0, full above v1, linear between [m/s]."""
-    return {"law": "ambrosio", "coefficient": float(coefficient), "v0": float(v0), "v1": float(v1)}
+    return {"law": "ambrosio", "coefficient": _si(coefficient, "dimensionless", "friction.coefficient"),
+            "v0": _si(v0, "velocity", "friction.v0"), "v1": _si(v1, "velocity", "friction.v1")}
 
 
 def threlfall(coefficient: float, v0: float = 1e-3) -> dict:
     """Threlfall: mu F_n (1 - exp(-3|v|/v0))."""
-    return {"law": "threlfall", "coefficient": float(coefficient), "v0": float(v0)}
+    return {"law": "threlfall", "coefficient": _si(coefficient, "dimensionless", "friction.coefficient"),
+            "v0": _si(v0, "velocity", "friction.v0")}
 
 
 def stiction(static_coefficient: float, kinetic_coefficient: float,
              stiction_velocity: float = 1e-4, transition_velocity: float = 1e-3) -> dict:
     """Static and kinetic coefficients with velocity tolerances [m/s]."""
-    return {"law": "stiction", "static_coefficient": float(static_coefficient),
-            "kinetic_coefficient": float(kinetic_coefficient),
-            "stiction_velocity": float(stiction_velocity), "transition_velocity": float(transition_velocity)}
+    return {"law": "stiction", "static_coefficient": _si(static_coefficient, "dimensionless", "friction.static_coefficient"),
+            "kinetic_coefficient": _si(kinetic_coefficient, "dimensionless", "friction.kinetic_coefficient"),
+            "stiction_velocity": _si(stiction_velocity, "velocity", "friction.stiction_velocity"),
+            "transition_velocity": _si(transition_velocity, "velocity", "friction.transition_velocity")}
 
 
 # lubrication ---------------------------------------------------------------
@@ -103,24 +124,25 @@ FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamr
 
 def centipoise(value: float) -> float:
     """Viscosity in cP to Pa s (1 cP = 1e-3 Pa s)."""
-    return value * 1e-3
+    return float(value) * 1e-3
 
 
 def lubrication(model: str, viscosity: float, transition: dict | None = None, *, cavitation: str = "swift_stieber",
                 n_circumferential: int | None = None, n_axial: int | None = None, ambient_pressure: float = 0.0,
                 groove_supply_pressure: float | None = None) -> dict:
     """A lubricant film for a clearance joint: ``model`` one of :data:`FILM_MODELS`, ``viscosity`` [Pa s]
-    (see :func:`centipoise`), ``transition`` from :func:`wang_transition` (default), :func:`flores_transition`
+    (a number, or ``"400 cP"``; see :func:`centipoise`), ``transition`` from :func:`wang_transition` (default), :func:`flores_transition`
     or :func:`switch_transition`. The Reynolds models take the cavitation condition (``gumbel``,
     ``swift_stieber``, ``elrod_adams``), the grid, the ambient pressure at the ends [Pa] and the supply
     pressure of a circumferential groove at mid-length [Pa]."""
     if model not in FILM_MODELS:
         raise ValueError(f"unknown film model {model!r}; choose one of {', '.join(FILM_MODELS)}")
-    spec = {"model": model, "viscosity": float(viscosity), "transition": transition or wang_transition()}
+    spec = {"model": model, "viscosity": _si(viscosity, "viscosity", "lubrication.viscosity"), "transition": transition or wang_transition()}
     if model.startswith("reynolds"):
         spec["reynolds"] = {"cavitation": cavitation, "n_circumferential": n_circumferential, "n_axial": n_axial,
-                            "ambient_pressure": float(ambient_pressure),
-                            "groove_supply_pressure": None if groove_supply_pressure is None else float(groove_supply_pressure)}
+                            "ambient_pressure": _si(ambient_pressure, "pressure", "lubrication.ambient_pressure"),
+                            "groove_supply_pressure": None if groove_supply_pressure is None else
+                            _si(groove_supply_pressure, "pressure", "lubrication.groove_supply_pressure")}
     return spec
 
 
@@ -129,12 +151,14 @@ def wang_transition(safe_film_thickness: float | None = None) -> dict:
     (default 0.00015 of the diameter) to contact."""
     if safe_film_thickness is None:
         return {"law": "wang_improved"}
-    return {"law": "wang_improved", "safe_film_thickness": float(safe_film_thickness)}
+    return {"law": "wang_improved", "safe_film_thickness": _si(safe_film_thickness, "length",
+                                                                    "transition.safe_film_thickness")}
 
 
 def flores_transition(lubricated_limit: float = 0.95) -> dict:
     """Flores et al.: squeeze film only, faded out between eccentricity ratio ``lubricated_limit`` and contact."""
-    return {"law": "flores", "lubricated_limit": float(lubricated_limit)}
+    return {"law": "flores", "lubricated_limit": _si(lubricated_limit, "dimensionless",
+                                                               "transition.lubricated_limit")}
 
 
 def switch_transition() -> dict:
