@@ -8,6 +8,7 @@ mod assembly;
 mod channels;
 mod compile;
 mod equations;
+mod extrema;
 pub mod frame;
 mod model;
 mod progress;
@@ -20,6 +21,7 @@ mod workspace;
 pub use assembly::assemble;
 pub use channels::{ChannelInfo, Trajectory};
 pub use compile::compile;
+pub use extrema::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
 pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm};
 pub use progress::Progress;
@@ -27,5 +29,7 @@ pub use simulate::{simulate, Diagnostics, SimulationOptions, SimulationOutcome};
 pub use state::{ContactMemory, State};
 pub use workspace::Workspace;
 
+#[cfg(test)]
+pub(crate) use extrema::maximize;
 #[cfg(test)]
 mod tests;

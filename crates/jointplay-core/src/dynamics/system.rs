@@ -2,7 +2,8 @@
 //! contact-onset events, latching of the onset velocity, drift projection
 //! after each accepted step, and recording of the channels.
 
-use super::channels::Trajectory;
+use super::channels::{update_constraint_forces, value, Trajectory};
+use super::extrema::{ExtremaTracker, StepProbe};
 use super::equations::{accelerations, update_frames, Stabilization};
 use super::frame::Frame;
 use super::projection::{project_positions, project_velocities};
@@ -33,6 +34,20 @@ pub(crate) struct MechanismSystem<'a> {
     /// What the workspace holds: the state of the last successful `rhs()`
     /// and of the last `project()`; a step-end sample reuses them.
     pub step_end: StepEndCache,
+    /// Summary quantities tracked at every accepted step.
+    pub tracking: &'a mut Tracking,
+}
+
+/// The tracker of summary quantities with what it reads.
+pub(crate) struct Tracking {
+    /// Peaks, gaps and contact time.
+    pub tracker: ExtremaTracker,
+    /// Indices into `Model::channels` of the tracked channels.
+    pub channels: Vec<usize>,
+    /// State from the dense output at a time inside a step.
+    pub state: Vec<f64>,
+    /// State after the last accepted step (`[q, q_dot]`), at `MechanismSystem::last_accepted`.
+    pub accepted_state: Vec<f64>,
 }
 
 /// The last evaluated and the last projected state, so that the sample at a
@@ -43,6 +58,8 @@ pub(crate) struct StepEndCache {
     evaluated_at: Option<f64>,
     /// State of that evaluation.
     evaluated_state: Vec<f64>,
+    /// Whether that evaluation computed the outputs only samples need (`Workspace::detailed`).
+    evaluated_detailed: bool,
     /// Time [s] of the last state `project()` returned.
     projected_at: Option<f64>,
     /// That state.
@@ -52,13 +69,14 @@ pub(crate) struct StepEndCache {
 impl StepEndCache {
     /// Empty cache for a state of `len` components.
     pub(crate) fn new(len: usize) -> Self {
-        Self { evaluated_at: None, evaluated_state: vec![0.0; len], projected_at: None, projected_state: vec![0.0; len] }
+        Self { evaluated_at: None, evaluated_state: vec![0.0; len], evaluated_detailed: false, projected_at: None, projected_state: vec![0.0; len] }
     }
 
-    /// The workspace holds the evaluation at (t, y).
-    fn remember_evaluation(&mut self, t: f64, y: &[f64]) {
+    /// The workspace holds the evaluation at (t, y), `detailed` or not.
+    fn remember_evaluation(&mut self, t: f64, y: &[f64], detailed: bool) {
         self.evaluated_state.copy_from_slice(y);
         self.evaluated_at = Some(t);
+        self.evaluated_detailed = detailed;
     }
 
     /// Whether the workspace holds the evaluation at exactly (t, y).
@@ -156,7 +174,9 @@ impl OdeSystem for MechanismSystem<'_> {
         }
         dydt[..n].copy_from_slice(&y[n..]);
         dydt[n..].copy_from_slice(&self.ws.accelerations);
-        self.step_end.remember_evaluation(t, y);
+        if self.step_end.evaluated_at.is_none() {
+            self.step_end.remember_evaluation(t, y, false);
+        }
         Ok(())
     }
 
@@ -216,6 +236,7 @@ impl OdeSystem for MechanismSystem<'_> {
             self.step_end.evaluated_at = None;
         }
         self.last_accepted = t;
+        self.tracking.accepted_state.copy_from_slice(y);
         Ok(false)
     }
 
@@ -234,11 +255,26 @@ impl OdeSystem for MechanismSystem<'_> {
         }
         Ok(())
     }
+
+    fn observe_step(&mut self, t_old: f64, t_new: f64, y: &[f64], dense: &mut dyn FnMut(f64, &mut [f64])) -> Result<(), SimulationError> {
+        self.track_step(t_old, t_new, y, dense)
+    }
 }
 
 impl MechanismSystem<'_> {
     /// Evaluates the sample at (t, y) with the outputs only samples need and records it.
     fn evaluate_and_push(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        self.evaluate_sample(t, y)?;
+        let sample = std::mem::take(&mut self.ws.sample);
+        self.trajectory.push(self.model, t, &sample, self.ws);
+        self.ws.sample = sample;
+        Ok(())
+    }
+
+    /// Evaluates (t, y) with the outputs only samples need; the workspace then
+    /// holds the evaluation and `ws.sample` the state it was made at.
+    fn evaluate_sample(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        self.step_end.evaluated_at = None;
         let n = self.model.n_coordinates();
         // samples between steps come from dense output: project them like the steps
         // (a sample at the step just accepted was projected by accept())
@@ -254,10 +290,84 @@ impl MechanismSystem<'_> {
             self.ws.detailed = false;
         }
         if evaluated.is_ok() {
-            self.trajectory.push(self.model, t, &sample, self.ws);
-            self.step_end.remember_evaluation(t, &sample);
+            self.step_end.remember_evaluation(t, &sample, true);
         }
         self.ws.sample = sample;
         evaluated
+    }
+
+    /// Tracked channel values from the evaluation the workspace holds at `state`.
+    fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
+        update_constraint_forces(self.model, self.ws);
+        let ws = &*self.ws;
+        for (v, &c) in values.iter_mut().zip(&self.tracking.channels) {
+            // (tracked channels read forces and accelerations, never the energy)
+            *v = value(self.model, self.model.channels[c].source, state, ws, [f64::NAN; 2]);
+        }
+    }
+}
+
+/// The system seen by the extrema tracker during one accepted step.
+struct SystemProbe<'s, 'a, 'd> {
+    system: &'s mut MechanismSystem<'a>,
+    /// End of the step [s].
+    t_new: f64,
+    /// Accepted state at its end.
+    y_new: &'s [f64],
+    /// The step's dense output.
+    dense: &'d mut dyn FnMut(f64, &mut [f64]),
+}
+
+impl StepProbe for SystemProbe<'_, '_, '_> {
+    fn channels_at(&mut self, t: f64, values: &mut [f64]) -> Result<(), SimulationError> {
+        let system = &mut *self.system;
+        if t == self.t_new {
+            // the step end: reuse its evaluation when the workspace holds it with the needed outputs
+            let detailed = system.model.has_lubricated_joints();
+            let held = system.step_end.holds_evaluation(t, self.y_new) && (system.step_end.evaluated_detailed || !detailed);
+            if !held {
+                system.evaluate_sample(t, self.y_new)?;
+            }
+            system.tracked_values(self.y_new, values);
+        } else {
+            let mut state = std::mem::take(&mut system.tracking.state);
+            (self.dense)(t, &mut state);
+            let evaluated = system.evaluate_sample(t, &state);
+            system.tracking.state = state;
+            evaluated?;
+            let sample = std::mem::take(&mut system.ws.sample);
+            system.tracked_values(&sample, values);
+            system.ws.sample = sample;
+        }
+        Ok(())
+    }
+
+    fn gaps_at(&mut self, t: f64, gaps: &mut [f64]) {
+        let system = &mut *self.system;
+        if t == self.t_new {
+            system.event_functions(t, self.y_new, gaps);
+        } else {
+            let mut state = std::mem::take(&mut system.tracking.state);
+            (self.dense)(t, &mut state);
+            system.event_functions(t, &state, gaps);
+            system.tracking.state = state;
+        }
+    }
+}
+
+impl MechanismSystem<'_> {
+    /// Observes an accepted step for the summary (see [`OdeSystem::observe_step`]).
+    fn track_step(&mut self, t_old: f64, t_new: f64, y: &[f64], dense: &mut dyn FnMut(f64, &mut [f64])) -> Result<(), SimulationError> {
+        let mut tracker = std::mem::take(&mut self.tracking.tracker);
+        let mut probe = SystemProbe { system: self, t_new, y_new: y, dense };
+        let mut observed = Ok(());
+        if tracker.t_start.is_nan() {
+            observed = tracker.begin(&mut probe, t_old);
+        }
+        if observed.is_ok() {
+            observed = tracker.observe(&mut probe, t_old, t_new);
+        }
+        self.tracking.tracker = tracker;
+        observed
     }
 }
