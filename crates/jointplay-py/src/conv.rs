@@ -111,7 +111,7 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
 /// a time that does not exist, such as that of a penetration never reached, is None):
 /// `{"steps", "t_start", "t_end", "channels": {name: {"peak", "value", "time", "unit"}},
 /// "clearance_joints": {name: {"impacts", "contact_time", "contact_fraction",
-/// "max_penetration", "max_penetration_time", and for lubricated joints "min_film",
+/// "max_penetration", "max_penetration_time", "max_eccentricity_ratio", and for lubricated joints "min_film",
 /// "min_film_time", "peak_film_pressure", "peak_film_pressure_time"}}}`.
 pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>> {
     let time = |t: f64| if t.is_nan() { None } else { Some(t) };
@@ -137,6 +137,7 @@ pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>
         entry.set_item("contact_fraction", j.contact_fraction)?;
         entry.set_item("max_penetration", j.max_penetration)?;
         entry.set_item("max_penetration_time", time(j.max_penetration_time))?;
+        entry.set_item("max_eccentricity_ratio", j.max_eccentricity_ratio)?;
         if let (Some(film), Some(at)) = (j.min_film, j.min_film_time) {
             entry.set_item("min_film", film)?;
             entry.set_item("min_film_time", time(at))?;

@@ -374,6 +374,8 @@ pub struct JointExtrema {
     pub max_penetration: f64,
     /// When it occurred [s] (NaN when never in contact).
     pub max_penetration_time: f64,
+    /// Largest eccentricity ratio |e| / c [-], at the time of the largest gap.
+    pub max_eccentricity_ratio: f64,
     /// Thinnest film c - |e| [m] (0 in contact); lubricated joints only.
     pub min_film: Option<f64>,
     /// When it occurred [s]; lubricated joints only.
@@ -400,8 +402,8 @@ pub struct Extrema {
 
 impl ExtremaTracker {
     /// The summary: `names` and `units` of the tracked channels, then for each
-    /// clearance joint its name, impacts and whether it is lubricated.
-    pub(crate) fn summary(&self, names: &[(String, &'static str)], joints: &[(String, usize, bool)]) -> Extrema {
+    /// clearance joint its name, impacts, whether it is lubricated and its clearance [m].
+    pub(crate) fn summary(&self, names: &[(String, &'static str)], joints: &[(String, usize, bool, f64)]) -> Extrema {
         let duration = self.t_last - self.t_start;
         let channels = names
             .iter()
@@ -412,7 +414,7 @@ impl ExtremaTracker {
         let clearance_joints = joints
             .iter()
             .zip(self.gaps.peaks.iter().zip(&self.contact_time))
-            .map(|((name, impacts, lubricated), (gap, &contact_time))| {
+            .map(|((name, impacts, lubricated, clearance), (gap, &contact_time))| {
                 let touched = gap.score > 0.0;
                 JointExtrema {
                     name: name.clone(),
@@ -421,6 +423,7 @@ impl ExtremaTracker {
                     contact_fraction: if duration > 0.0 { contact_time / duration } else { 0.0 },
                     max_penetration: if touched { gap.score } else { 0.0 },
                     max_penetration_time: if touched { gap.time } else { f64::NAN },
+                    max_eccentricity_ratio: 1.0 + gap.score / clearance,
                     min_film: lubricated.then_some((-gap.score).max(0.0)),
                     min_film_time: lubricated.then_some(gap.time),
                     peak_film_pressure: None,

@@ -116,8 +116,11 @@ fn new_tracking(model: &Model, len: usize) -> Tracking {
 /// The tracked summary with the names of its channels and joints.
 fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], impacts: &[usize]) -> Extrema {
     let names: Vec<(String, &'static str)> = channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).collect();
-    let joints: Vec<(String, usize, bool)> = (0..model.clearance_joints.len())
-        .map(|k| (model.clearance_names[k].clone(), impacts[k], model.clearance_joints[k].lubrication.is_some()))
+    let joints: Vec<(String, usize, bool, f64)> = (0..model.clearance_joints.len())
+        .map(|k| {
+            let joint = &model.clearance_joints[k];
+            (model.clearance_names[k].clone(), impacts[k], joint.lubrication.is_some(), joint.clearance)
+        })
         .collect();
     let mut extrema = tracker.summary(&names, &joints);
     for joint in extrema.clearance_joints.iter_mut().filter(|j| j.min_film.is_some()) {
