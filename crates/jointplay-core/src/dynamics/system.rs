@@ -12,6 +12,7 @@ use super::state::ContactMemory;
 use super::{Model, Progress, Workspace};
 use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
+use crate::joint::Lubrication;
 
 /// Newton iterations allowed when projecting after a step: the drift of one
 /// step is at the level of the integration tolerance, so one or two suffice.
@@ -296,6 +297,21 @@ impl MechanismSystem<'_> {
         evaluated
     }
 
+    /// Completes the evaluation the workspace holds with the film outputs only
+    /// samples need (the peak pressure), re-evaluating just the films.
+    fn detail_films(&mut self, t: f64) -> Result<(), SimulationError> {
+        let ws = &mut *self.ws;
+        for (k, joint) in self.model.clearance_joints.iter().enumerate() {
+            let Some(lubrication) = &joint.lubrication else { continue };
+            let (fi, fj) = (&ws.frames[joint.bearing.body.0], &ws.frames[joint.journal.body.0]);
+            let kinematics = Lubrication::kinematics(fi, fj, fi.point(joint.bearing.local), fj.point(joint.journal.local));
+            let film = lubrication.evaluate(&kinematics, ws.film_solvers[k].as_mut(), true);
+            ws.films[k] = film.map_err(|cause| SimulationError::FilmModel { time: t, element: self.model.clearance_names[k].clone(), cause })?;
+        }
+        self.step_end.evaluated_detailed = true;
+        Ok(())
+    }
+
     /// Tracked channel values from the evaluation the workspace holds at `state`.
     fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
         update_constraint_forces(self.model, self.ws);
@@ -323,10 +339,10 @@ impl StepProbe for SystemProbe<'_, '_, '_> {
         let system = &mut *self.system;
         if t == self.t_new {
             // the step end: reuse its evaluation when the workspace holds it with the needed outputs
-            let detailed = system.model.has_lubricated_joints();
-            let held = system.step_end.holds_evaluation(t, self.y_new) && (system.step_end.evaluated_detailed || !detailed);
-            if !held {
+            if !system.step_end.holds_evaluation(t, self.y_new) {
                 system.evaluate_sample(t, self.y_new)?;
+            } else if system.model.has_lubricated_joints() && !system.step_end.evaluated_detailed {
+                system.detail_films(t)?;
             }
             system.tracked_values(self.y_new, values);
         } else {
