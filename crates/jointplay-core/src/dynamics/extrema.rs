@@ -11,6 +11,7 @@
 //! next step is searched unless its end improves again. Every evaluation
 //! serves all channels of its group (`docs/theory/summary-extrema.md`).
 
+use super::brent::maximize_from;
 use crate::error::SimulationError;
 
 /// Fraction of the step before its end where the probe looks [-]: small
@@ -18,12 +19,20 @@ use crate::error::SimulationError;
 /// round-off of the dense output.
 const PROBE_FRACTION: f64 = 1e-3;
 /// Interval tolerance of the peak search, as a fraction of the step [-]:
-/// the peak value is then exact to about its square (1e-12 relative).
-const SEARCH_TOLERANCE: f64 = 1e-6;
+/// the peak value is then exact to about its square (1e-8) times the
+/// channel's variation over the step, and the parabolic steps usually land
+/// far closer. Tighter costs golden-section steps where a channel has a kink.
+const SEARCH_TOLERANCE: f64 = 1e-4;
+/// Interval tolerance locating a separation, as a fraction of the step [-]
+/// (the gaps are cheap to evaluate).
+const SEPARATION_TOLERANCE: f64 = 1e-9;
 /// Most evaluations of one peak search (Brent needs about 10 on a smooth peak).
 const SEARCH_EVALUATIONS: usize = 60;
 /// Regula falsi iterations locating a separation inside a step.
 const SEPARATION_ITERATIONS: usize = 30;
+/// Evaluations of one step remembered so that the searches of several
+/// quantities share them (beyond, a search starts from the whole step).
+const STEP_POINTS: usize = 4 * SEARCH_EVALUATIONS;
 
 /// The largest score seen for one quantity.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,6 +104,58 @@ pub(crate) struct PeakGroup {
     search: Vec<bool>,
     /// Quantities whose running peak the current step end improved.
     improved: Vec<bool>,
+    /// Evaluations made in the current step.
+    points: StepPoints,
+}
+
+/// The times and values of the evaluations made in one step.
+#[derive(Clone, Debug, Default)]
+struct StepPoints {
+    /// Times [s].
+    times: Vec<f64>,
+    /// Values, `width` per time.
+    values: Vec<f64>,
+    /// Quantities per evaluation.
+    width: usize,
+    /// Evaluations held.
+    len: usize,
+}
+
+impl StepPoints {
+    fn new(width: usize) -> Self {
+        Self { times: vec![0.0; STEP_POINTS], values: vec![0.0; STEP_POINTS * width], width, len: 0 }
+    }
+
+    /// Remembers an evaluation (silently dropped once the buffer is full).
+    fn push(&mut self, t: f64, values: &[f64]) {
+        if self.len < STEP_POINTS {
+            self.times[self.len] = t;
+            self.values[self.len * self.width..(self.len + 1) * self.width].copy_from_slice(values);
+            self.len += 1;
+        }
+    }
+
+    /// The evaluation where quantity i scores highest: its time and score,
+    /// and the nearest evaluated times on either side within [a, b].
+    fn bracket(&self, kind: Quantities, i: usize, a: f64, b: f64) -> (f64, f64, f64, f64) {
+        let (mut x, mut best) = (a, f64::NEG_INFINITY);
+        for k in 0..self.len {
+            let score = kind.score(self.values[k * self.width + i]);
+            if score > best {
+                (x, best) = (self.times[k], score);
+            }
+        }
+        let (mut low, mut high) = (a, b);
+        for &t in &self.times[..self.len] {
+            if t < x && t > low {
+                low = t;
+            }
+            if t > x && t < high {
+                high = t;
+            }
+        }
+        (low, x, high, best)
+    }
 }
 
 impl PeakGroup {
@@ -108,6 +169,7 @@ impl PeakGroup {
             pending: vec![false; n],
             search: vec![false; n],
             improved: vec![false; n],
+            points: StepPoints::new(n),
         }
     }
 
@@ -138,6 +200,9 @@ impl PeakGroup {
     fn observe<P: StepProbe>(&mut self, probe: &mut P, t_old: f64, t_new: f64) -> Result<(), SimulationError> {
         std::mem::swap(&mut self.start, &mut self.end);
         self.kind.evaluate(probe, t_new, &mut self.end)?;
+        self.points.len = 0;
+        self.points.push(t_old, &self.start);
+        self.points.push(t_new, &self.end);
         Self::offer(&mut self.peaks, self.kind, &self.end, t_new, Some(&mut self.improved));
         // a quantity that rose at the last step end and did not climb further peaked in this step
         for i in 0..self.peaks.len() {
@@ -156,6 +221,7 @@ impl PeakGroup {
                     }
                 }
                 Self::offer(&mut self.peaks, self.kind, &self.scratch, t_probe, None);
+                self.points.push(t_probe, &self.scratch);
             }
         }
         for i in 0..self.peaks.len() {
@@ -166,80 +232,27 @@ impl PeakGroup {
         Ok(())
     }
 
-    /// Searches the peak of quantity i inside [a, b]; every evaluation is offered to all quantities.
-    /// An evaluation that fails inside the step ends the search (the step ends stand).
+    /// Searches the peak of quantity i inside the step [a, b], starting from the
+    /// best evaluation of the step so far and its neighbours (the searches of
+    /// quantities that peak together then share their evaluations); every
+    /// evaluation is offered to all quantities. An evaluation that fails
+    /// inside the step ends the search (the step ends stand).
     fn search_peak<P: StepProbe>(&mut self, probe: &mut P, i: usize, a: f64, b: f64) {
-        let (kind, peaks, scratch) = (self.kind, &mut self.peaks, &mut self.scratch);
+        let tolerance = SEARCH_TOLERANCE * (b - a);
+        let (low, x, high, best) = self.points.bracket(self.kind, i, a, b);
+        if high - low <= 2.0 * tolerance {
+            return;
+        }
+        let (kind, peaks, scratch, points) = (self.kind, &mut self.peaks, &mut self.scratch, &mut self.points);
         let mut score = |t: f64| -> Option<f64> {
             kind.evaluate(probe, t, scratch).ok()?;
             Self::offer(peaks, kind, scratch, t, None);
+            points.push(t, scratch);
             Some(kind.score(scratch[i]))
         };
-        maximize(&mut score, a, b, SEARCH_TOLERANCE * (b - a), SEARCH_EVALUATIONS);
+        let start = (x > low && x < high).then_some((x, best));
+        maximize_from(&mut score, low, high, start, tolerance, SEARCH_EVALUATIONS);
     }
-}
-
-/// Maximum of f on [a, b] by Brent's method (golden section with parabolic
-/// steps; Brent 1973, ch. 5), to an interval of `tolerance` [unit of t] or
-/// after `max_evaluations`; returns the best (t, f(t)) found, `None` when an
-/// evaluation failed first.
-pub(crate) fn maximize(f: &mut dyn FnMut(f64) -> Option<f64>, a: f64, b: f64, tolerance: f64, max_evaluations: usize) -> Option<(f64, f64)> {
-    let golden = 0.5 * (3.0 - 5f64.sqrt());
-    let (mut a, mut b) = (a, b);
-    let mut x = a + golden * (b - a);
-    let (mut w, mut v) = (x, x);
-    // minimise -f
-    let mut fx = -f(x)?;
-    let (mut fw, mut fv) = (fx, fx);
-    let (mut d, mut e) = (0.0f64, 0.0f64);
-    let tol1 = (tolerance / 3.0).max(f64::EPSILON * b.abs().max(a.abs()));
-    for _ in 1..max_evaluations {
-        let xm = 0.5 * (a + b);
-        let tol2 = 2.0 * tol1;
-        if (x - xm).abs() <= tol2 - 0.5 * (b - a) {
-            break;
-        }
-        let mut take_golden = true;
-        if e.abs() > tol1 {
-            // parabola through x, w, v
-            let r = (x - w) * (fx - fv);
-            let q = (x - v) * (fx - fw);
-            let mut p = (x - v) * q - (x - w) * r;
-            let mut q = 2.0 * (q - r);
-            if q > 0.0 {
-                p = -p;
-            }
-            q = q.abs();
-            let e_old = e;
-            e = d;
-            if p.abs() < (0.5 * q * e_old).abs() && p > q * (a - x) && p < q * (b - x) {
-                d = p / q;
-                let u = x + d;
-                if u - a < tol2 || b - u < tol2 {
-                    d = tol1.copysign(xm - x);
-                }
-                take_golden = false;
-            }
-        }
-        if take_golden {
-            e = if x >= xm { a - x } else { b - x };
-            d = golden * e;
-        }
-        let u = x + if d.abs() >= tol1 { d } else { tol1.copysign(d) };
-        let fu = -f(u)?;
-        if fu <= fx {
-            if u >= x { a = x } else { b = x }
-            (v, fv, w, fw, x, fx) = (w, fw, x, fx, u, fu);
-        } else {
-            if u < x { a = u } else { b = u }
-            if fu <= fw || w == x {
-                (v, fv, w, fw) = (w, fw, u, fu);
-            } else if fu <= fv || v == x || v == w {
-                (v, fv) = (u, fu);
-            }
-        }
-    }
-    Some((x, -fx))
 }
 
 /// Peaks, gaps and contact time over the accepted steps of a run (the
@@ -309,7 +322,7 @@ impl ExtremaTracker {
 
     /// Time in [a, b] where the gap of joint k changes sign (the ends have opposite signs).
     fn locate_sign_change<P: StepProbe>(&mut self, probe: &mut P, k: usize, a: f64, b: f64) -> f64 {
-        let tolerance = SEARCH_TOLERANCE * (b - a);
+        let tolerance = SEPARATION_TOLERANCE * (b - a);
         let (mut a, mut b) = (a, b);
         let (mut ga, mut gb) = (self.gaps.start[k], self.gaps.end[k]);
         let mut side = 0i8;
@@ -332,105 +345,6 @@ impl ExtremaTracker {
             }
         }
         0.5 * (a + b)
-    }
-}
-
-/// Units of the channels whose peak is tracked: forces, moments and
-/// torques, linear and angular accelerations, pressures.
-pub const PEAK_UNITS: [&str; 5] = ["N", "N m", "m/s^2", "rad/s^2", "Pa"];
-
-/// Whether a channel of this unit has its peak tracked.
-pub(crate) fn is_peak_unit(unit: &str) -> bool {
-    PEAK_UNITS.contains(&unit)
-}
-
-/// Peak |value| of one channel over a run.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ChannelPeak {
-    /// Channel name `"<element>.<quantity>"`.
-    pub name: String,
-    /// SI unit of the channel.
-    pub unit: &'static str,
-    /// Largest |value| [unit].
-    pub peak: f64,
-    /// The signed value there [unit].
-    pub value: f64,
-    /// When it occurred [s].
-    pub time: f64,
-}
-
-/// Contact statistics of one clearance joint over a run.
-#[derive(Clone, Debug, PartialEq)]
-pub struct JointExtrema {
-    /// Name of the clearance joint.
-    pub name: String,
-    /// Contact onsets.
-    pub impacts: usize,
-    /// Time in contact (penetration > 0) [s].
-    pub contact_time: f64,
-    /// Time in contact over the time simulated [-].
-    pub contact_fraction: f64,
-    /// Deepest penetration [m] (0 when never in contact).
-    pub max_penetration: f64,
-    /// When it occurred [s] (NaN when never in contact).
-    pub max_penetration_time: f64,
-    /// Largest eccentricity ratio |e| / c [-], at the time of the largest gap.
-    pub max_eccentricity_ratio: f64,
-    /// Thinnest film c - |e| [m] (0 in contact); lubricated joints only.
-    pub min_film: Option<f64>,
-    /// When it occurred [s]; lubricated joints only.
-    pub min_film_time: Option<f64>,
-    /// Largest film pressure (gauge) [Pa] and when it occurred [s]; lubricated joints only.
-    pub peak_film_pressure: Option<(f64, f64)>,
-}
-
-/// Summary quantities of a run, from every accepted step and refined inside
-/// the steps on the dense output, whatever the output sampling.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Extrema {
-    /// Accepted steps observed.
-    pub steps: usize,
-    /// Start of the run [s].
-    pub t_start: f64,
-    /// End of the last accepted step [s].
-    pub t_end: f64,
-    /// Peaks of the channels with a unit in [`PEAK_UNITS`], in channel order.
-    pub channels: Vec<ChannelPeak>,
-    /// Statistics of each clearance joint, in model order.
-    pub clearance_joints: Vec<JointExtrema>,
-}
-
-impl ExtremaTracker {
-    /// The summary: `names` and `units` of the tracked channels, then for each
-    /// clearance joint its name, impacts, whether it is lubricated and its clearance [m].
-    pub(crate) fn summary(&self, names: &[(String, &'static str)], joints: &[(String, usize, bool, f64)]) -> Extrema {
-        let duration = self.t_last - self.t_start;
-        let channels = names
-            .iter()
-            .zip(&self.channels.peaks)
-            .filter(|(_, p)| !p.time.is_nan())
-            .map(|((name, unit), p)| ChannelPeak { name: name.clone(), unit, peak: p.score, value: p.value, time: p.time })
-            .collect();
-        let clearance_joints = joints
-            .iter()
-            .zip(self.gaps.peaks.iter().zip(&self.contact_time))
-            .map(|((name, impacts, lubricated, clearance), (gap, &contact_time))| {
-                let touched = gap.score > 0.0;
-                JointExtrema {
-                    name: name.clone(),
-                    impacts: *impacts,
-                    contact_time,
-                    contact_fraction: if duration > 0.0 { contact_time / duration } else { 0.0 },
-                    max_penetration: if touched { gap.score } else { 0.0 },
-                    max_penetration_time: if touched { gap.time } else { f64::NAN },
-                    max_eccentricity_ratio: 1.0 + gap.score / clearance,
-                    min_film: lubricated.then_some((-gap.score).max(0.0)),
-                    min_film_time: lubricated.then_some(gap.time),
-                    peak_film_pressure: None,
-                }
-            })
-            .collect();
-        Extrema { steps: self.steps, t_start: self.t_start, t_end: self.t_last, channels, clearance_joints }
     }
 }
 

@@ -1,6 +1,7 @@
 //! Tests of the extrema tracker against closed forms.
 
 use super::*;
+use crate::dynamics::maximize;
 
 /// A probe whose single channel and single gap are known functions of time.
 struct Known<F: Fn(f64) -> f64, G: Fn(f64) -> f64> {
@@ -108,4 +109,39 @@ fn test_minimum_film_of_a_joint_never_in_contact_is_the_smallest_clearance_left(
     assert_eq!((joint.max_penetration, joint.contact_time), (0.0, 0.0));
     assert!((joint.max_eccentricity_ratio - 0.7).abs() < 1e-8);
     assert!(joint.max_penetration_time.is_nan());
+}
+
+/// Two channels: a pulse and a multiple of it, which peak together.
+struct Pair {
+    scale: f64,
+    evaluations: usize,
+}
+
+impl StepProbe for Pair {
+    fn channels_at(&mut self, t: f64, values: &mut [f64]) -> Result<(), SimulationError> {
+        self.evaluations += 1;
+        let pulse = (-((t - 0.3737) / 0.08).powi(2)).exp();
+        values[0] = pulse;
+        values[1] = self.scale * pulse;
+        Ok(())
+    }
+    fn gaps_at(&mut self, _t: f64, gaps: &mut [f64]) {
+        gaps[0] = -1.0;
+    }
+}
+
+#[test]
+fn channels_that_peak_together_share_one_search() {
+    let mut single = Known { channel: |t: f64| (-((t - 0.3737) / 0.08).powi(2)).exp(), gap: |_| -1.0, evaluations: 0 };
+    track(&mut single, 0.1, 1.0);
+    let mut pair = Pair { scale: -3.0, evaluations: 0 };
+    let mut tracker = ExtremaTracker::new(2, 1);
+    tracker.begin(&mut pair, 0.0).unwrap();
+    for k in 0..10 {
+        tracker.observe(&mut pair, k as f64 * 0.1, (k + 1) as f64 * 0.1).unwrap();
+    }
+    assert_eq!(pair.evaluations, single.evaluations, "the second channel's search cost evaluations");
+    let [first, second] = [tracker.channels.peaks[0], tracker.channels.peaks[1]];
+    assert!((first.score - 1.0).abs() < 1e-8 && (second.score - 3.0).abs() < 3e-8, "{first:?} {second:?}");
+    assert_eq!(second.value.signum(), -1.0);
 }

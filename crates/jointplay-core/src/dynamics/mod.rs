@@ -5,10 +5,12 @@
 //! simulation loop that produces a [`Trajectory`].
 
 mod assembly;
+mod brent;
 mod channels;
 mod compile;
 mod equations;
 mod extrema;
+mod extrema_summary;
 pub mod frame;
 mod model;
 mod progress;
@@ -21,7 +23,7 @@ mod workspace;
 pub use assembly::assemble;
 pub use channels::{ChannelInfo, Trajectory};
 pub use compile::compile;
-pub use extrema::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
+pub use extrema_summary::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
 pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm};
 pub use progress::Progress;
@@ -30,6 +32,6 @@ pub use state::{ContactMemory, State};
 pub use workspace::Workspace;
 
 #[cfg(test)]
-pub(crate) use extrema::maximize;
+pub(crate) use brent::maximize;
 #[cfg(test)]
 mod tests;

@@ -3,7 +3,8 @@
 
 use super::channels::Trajectory;
 use super::equations::Stabilization;
-use super::extrema::{is_peak_unit, Extrema, ExtremaTracker};
+use super::extrema::ExtremaTracker;
+use super::extrema_summary::{is_peak_unit, Extrema};
 use super::system::{MechanismSystem, StepEndCache, Tracking};
 use super::{Model, Progress, State, Workspace};
 use crate::error::SimulationError;
