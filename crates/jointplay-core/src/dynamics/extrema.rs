@@ -174,16 +174,11 @@ impl PeakGroup {
     }
 
     /// Offers every value of `values` at t as a peak candidate.
-    fn offer(peaks: &mut [Peak], kind: Quantities, values: &[f64], t: f64, improved: Option<&mut [bool]>) {
-        let mut flags = improved;
-        for (i, (peak, &v)) in peaks.iter_mut().zip(values).enumerate() {
-            let score = kind.score(v);
-            let better = score > peak.score;
-            if better {
-                *peak = Peak { score, value: v, time: t };
-            }
-            if let Some(flags) = flags.as_deref_mut() {
-                flags[i] = better;
+    fn offer(peaks: &mut [Peak], kind: Quantities, values: &[f64], t: f64) {
+        for (peak, &value) in peaks.iter_mut().zip(values) {
+            let score = kind.score(value);
+            if score > peak.score {
+                *peak = Peak { score, value, time: t };
             }
         }
     }
@@ -191,7 +186,7 @@ impl PeakGroup {
     /// Values at the start of the run.
     fn begin<P: StepProbe>(&mut self, probe: &mut P, t0: f64) -> Result<(), SimulationError> {
         self.kind.evaluate(probe, t0, &mut self.end)?;
-        Self::offer(&mut self.peaks, self.kind, &self.end, t0, None);
+        Self::offer(&mut self.peaks, self.kind, &self.end, t0);
         Ok(())
     }
 
@@ -201,35 +196,60 @@ impl PeakGroup {
         std::mem::swap(&mut self.start, &mut self.end);
         self.kind.evaluate(probe, t_new, &mut self.end)?;
         self.points.len = 0;
-        self.points.push(t_old, &self.start);
-        self.points.push(t_new, &self.end);
-        Self::offer(&mut self.peaks, self.kind, &self.end, t_new, Some(&mut self.improved));
-        // a quantity that rose at the last step end and did not climb further peaked in this step
+        // offer the step end; a quantity that rose at the last step end and
+        // did not climb further peaked in this step
+        let (mut any_improved, mut any_search) = (false, false);
         for i in 0..self.peaks.len() {
-            self.search[i] = self.pending[i] && !self.improved[i];
-            self.pending[i] = false;
-        }
-        if self.improved.iter().any(|&b| b) && t_new > t_old {
-            // probe the slope at the end: falling means a peak inside the step
-            let t_probe = t_new - PROBE_FRACTION * (t_new - t_old);
-            if self.kind.evaluate(probe, t_probe, &mut self.scratch).is_ok() {
-                for i in 0..self.peaks.len() {
-                    if self.improved[i] {
-                        let falling = self.kind.score(self.scratch[i]) > self.kind.score(self.end[i]);
-                        self.search[i] |= falling;
-                        self.pending[i] = !falling;
-                    }
-                }
-                Self::offer(&mut self.peaks, self.kind, &self.scratch, t_probe, None);
-                self.points.push(t_probe, &self.scratch);
+            let (value, peak) = (self.end[i], &mut self.peaks[i]);
+            let score = self.kind.score(value);
+            let improved = score > peak.score;
+            if improved {
+                *peak = Peak { score, value, time: t_new };
             }
+            self.improved[i] = improved;
+            self.search[i] = self.pending[i] && !improved;
+            self.pending[i] = false;
+            any_improved |= improved;
+            any_search |= self.search[i];
         }
-        for i in 0..self.peaks.len() {
-            if self.search[i] && t_new > t_old {
-                self.search_peak(probe, i, t_old, t_new);
+        if t_new <= t_old {
+            return Ok(());
+        }
+        if any_improved {
+            any_search |= self.probe_slope(probe, t_old, t_new);
+        }
+        if any_search {
+            self.points.push(t_old, &self.start);
+            self.points.push(t_new, &self.end);
+            for i in 0..self.peaks.len() {
+                if self.search[i] {
+                    self.search_peak(probe, i, t_old, t_new);
+                }
             }
         }
         Ok(())
+    }
+
+    /// Probes the slope at the end of the step for the quantities the end
+    /// improved: falling means a peak inside the step (searched now), rising
+    /// one in the next step (pending). True when some search is due.
+    fn probe_slope<P: StepProbe>(&mut self, probe: &mut P, t_old: f64, t_new: f64) -> bool {
+        let t_probe = t_new - PROBE_FRACTION * (t_new - t_old);
+        if self.kind.evaluate(probe, t_probe, &mut self.scratch).is_err() {
+            return false;
+        }
+        let mut any_search = false;
+        for i in 0..self.peaks.len() {
+            if self.improved[i] {
+                let falling = self.kind.score(self.scratch[i]) > self.kind.score(self.end[i]);
+                self.search[i] |= falling;
+                self.pending[i] = !falling;
+                any_search |= falling;
+            }
+        }
+        Self::offer(&mut self.peaks, self.kind, &self.scratch, t_probe);
+        self.points.push(t_probe, &self.scratch);
+        any_search
     }
 
     /// Searches the peak of quantity i inside the step [a, b], starting from the
@@ -246,7 +266,7 @@ impl PeakGroup {
         let (kind, peaks, scratch, points) = (self.kind, &mut self.peaks, &mut self.scratch, &mut self.points);
         let mut score = |t: f64| -> Option<f64> {
             kind.evaluate(probe, t, scratch).ok()?;
-            Self::offer(peaks, kind, scratch, t, None);
+            Self::offer(peaks, kind, scratch, t);
             points.push(t, scratch);
             Some(kind.score(scratch[i]))
         };
