@@ -86,6 +86,20 @@ def test_peak_contact_force_lies_inside_a_step_and_bounds_every_1us_sample(dry_r
     assert abs(fine.time[np.argmax(sampled_fn)] - at) <= 1e-6
 
 
+def test_point_accelerations_are_tracked_at_every_step_and_bound_the_1us_samples(dry_runs):
+    reference = dry_runs[None].summary()["point_accelerations"]
+    fine = dry_runs[1e-6]
+    assert set(reference) >= {"crank.A", "rod.B", "slider.B"}
+    for name, peak in reference.items():
+        assert close(dry_runs[1e-3].summary()["point_accelerations"][name], peak, 5e-3), name
+        ax, ay = fine.point_acceleration(name)
+        sampled = float(np.max(np.hypot(ax, ay)))
+        assert sampled <= fine.summary()["point_accelerations"][name] * (1 + 1e-9) + 1e-6, name
+    # the crank turns at 5000 rpm: its pin, 50 mm from O, has the centripetal omega^2 r
+    omega = 5000 * 2 * np.pi / 60
+    assert close(reference["crank.A"], omega**2 * 0.05, 1e-6)
+
+
 def test_lubricated_minimum_film_is_the_same_for_output_every_step_and_every_1ms(lubricated_runs):
     every, coarse = (lubricated_runs[s].summary()["clearance_joints"]["B"] for s in (None, 1e-3))
     assert close(coarse["min_film"], every["min_film"], 5e-3), (coarse, every)

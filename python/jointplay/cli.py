@@ -202,12 +202,12 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
         quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar and no summary.")] = False) -> None:
     """Simulate a model file, save the results (NetCDF) and print a summary.
 
-    The summary gives peak joint and contact forces with their times, impacts,
-    time in contact and deepest penetration (thinnest film when lubricated) of
-    each clearance joint, all tracked at every accepted step whatever the
-    output step; the peak accelerations of the named points (from the saved
-    samples), integrator statistics and wall time. If the simulation stops
-    early, what was computed is saved and the exit code is 1.
+    The summary gives peak accelerations of the named points and peak joint
+    and contact forces with their times, impacts, time in contact and deepest
+    penetration (thinnest film when lubricated) of each clearance joint, all
+    tracked at every accepted step whatever the output step; integrator
+    statistics and wall time. If the simulation stops early, what was
+    computed is saved and the exit code is 1.
     """
     m = _load(model, set_)
     options = dict(m.simulation)
@@ -275,7 +275,8 @@ def print_summary(results) -> None:
     tracked = s["extrema_source"] == "accepted steps"
     peaks = Table("quantity", "peak |value|", "at")
     for name, value in s["point_accelerations"].items():
-        peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"), "(samples)")
+        at = s["point_acceleration_times"].get(name)
+        peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"), _ms(at) if tracked else "(samples)")
     for name, value in s["peak_forces"].items():
         peaks.add_row(name, _fmt(value, results.unit(name)), _ms(s["peak_times"].get(name)))
     out.print(peaks)

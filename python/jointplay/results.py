@@ -22,17 +22,19 @@ class Results:
     the output sampling, with peaks inside a step found on the dense output (a JSON-serialisable
     dict; ``None`` for results files written before it existed)::
 
-        {"steps": 1612,                      # accepted steps observed
+        {"steps": 1832,                      # accepted steps observed
          "t_start": 0.0, "t_end": 0.024,     # [s]
+         "point_accelerations": {            # |acceleration| of every named point of a moving body
+             "slider.B": {"peak": 3.27e5, "time": 0.00025, "unit": "m/s^2"}, ...},
          "channels": {                       # every channel in N, N m, m/s^2, rad/s^2 or Pa
-             "B.fn": {"peak": 45912.0,       # largest |value| [unit]
-                      "value": 45912.0,      # the signed value there
-                      "time": 0.00061,       # [s]
+             "B.fn": {"peak": 45886.5,       # largest |value| [unit]
+                      "value": 45886.5,      # the signed value there
+                      "time": 0.000251,      # [s]
                       "unit": "N"}, ...},
          "clearance_joints": {
-             "B": {"impacts": 43, "contact_time": 0.0113, "contact_fraction": 0.47,
-                   "max_penetration": 2.1e-05, "max_penetration_time": 0.00061,  # None if never in contact
-                   "max_eccentricity_ratio": 1.16,
+             "B": {"impacts": 43, "contact_time": 0.01516, "contact_fraction": 0.632,
+                   "max_penetration": 7.80e-05, "max_penetration_time": 0.000253,  # None if never in contact
+                   "max_eccentricity_ratio": 1.156,
                    # lubricated joints also:
                    "min_film": 1.2e-06, "min_film_time": 0.0093,
                    "peak_film_pressure": 3.1e8, "peak_film_pressure_time": 0.0093}}}
@@ -174,10 +176,11 @@ class Results:
         pressure; integrator statistics and wall time.
 
         These come from :attr:`extrema`, tracked at every accepted step whatever the output step
-        (``extrema_source`` is ``"accepted steps"``, ``steps`` their number). Results files written
-        before the core tracked them fall back to the saved samples (``extrema_source`` ``"samples"``),
-        which miss what happens between samples. The peak accelerations of named body points
-        (``point_accelerations``) are always computed from the saved samples.
+        (``extrema_source`` is ``"accepted steps"``, ``steps`` their number), as do the peak
+        acceleration magnitudes of the named body points (``point_accelerations``, times in
+        ``point_acceleration_times``). Results files written before the core tracked them fall back
+        to the saved samples (``extrema_source`` ``"samples"``), which miss what happens between
+        samples.
         """
         out: dict[str, Any] = {"t_end": float(self.time[-1]) if self.time.size else 0.0,
                                "samples": int(self.time.size), "completed": self.error is None,
@@ -186,15 +189,12 @@ class Results:
             out.update(self._tracked_summary())
         else:
             out.update(self._sampled_summary())
-        out["point_accelerations"] = {}
-        for body in (self.spec or {}).get("bodies", []) if self.time.size else []:
-            for p in body.get("points", []):
-                name = f"{body['name']}.{p['name']}"
-                try:
-                    ax, ay = self.point_acceleration(name)
-                except KeyError:
-                    continue
-                out["point_accelerations"][name] = float(np.max(np.hypot(ax, ay)))
+        points = (self.extrema or {}).get("point_accelerations")
+        if points is not None:
+            out["point_accelerations"] = {n: float(p["peak"]) for n, p in points.items()}
+            out["point_acceleration_times"] = {n: p["time"] for n, p in points.items()}
+        else:
+            out["point_accelerations"], out["point_acceleration_times"] = self._sampled_point_accelerations()
         out["peak_forces"] = {n: v for n, v in out["peaks"].items() if n.rsplit(".", 1)[1] in FORCE_QUANTITIES}
         out["error"] = None if self.error is None else dict(self.error)
         out["statistics"] = dict(self.statistics)
@@ -211,6 +211,21 @@ class Results:
                 "peaks": {n: float(c["peak"]) for n, c in channels.items()},
                 "peak_times": {n: c["time"] for n, c in channels.items()},
                 "clearance_joints": joints}
+
+    def _sampled_point_accelerations(self) -> tuple[dict, dict]:
+        """Peak acceleration magnitude of every named body point and its time, from the samples."""
+        peaks, times = {}, {}
+        for body in (self.spec or {}).get("bodies", []) if self.time.size else []:
+            for p in body.get("points", []):
+                name = f"{body['name']}.{p['name']}"
+                try:
+                    ax, ay = self.point_acceleration(name)
+                except KeyError:
+                    continue
+                magnitude = np.hypot(ax, ay)
+                k = int(np.argmax(magnitude))
+                peaks[name], times[name] = float(magnitude[k]), float(self.time[k])
+        return peaks, times
 
     def _sampled_summary(self) -> dict:
         """Peaks and clearance-joint statistics from the saved samples (results files written before

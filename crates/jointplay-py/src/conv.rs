@@ -110,6 +110,7 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
 /// The summary tracked at every accepted step as plain data (JSON-serialisable:
 /// a time that does not exist, such as that of a penetration never reached, is None):
 /// `{"steps", "t_start", "t_end", "channels": {name: {"peak", "value", "time", "unit"}},
+/// "point_accelerations": {"<body>.<point>": {"peak", "time", "unit"}},
 /// "clearance_joints": {name: {"impacts", "contact_time", "contact_fraction",
 /// "max_penetration", "max_penetration_time", "max_eccentricity_ratio", and for lubricated joints "min_film",
 /// "min_film_time", "peak_film_pressure", "peak_film_pressure_time"}}}`.
@@ -129,6 +130,15 @@ pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>
         channels.set_item(&c.name, entry)?;
     }
     d.set_item("channels", channels)?;
+    let points = PyDict::new(py);
+    for c in &e.point_accelerations {
+        let entry = PyDict::new(py);
+        entry.set_item("peak", c.peak)?;
+        entry.set_item("time", c.time)?;
+        entry.set_item("unit", c.unit)?;
+        points.set_item(&c.name, entry)?;
+    }
+    d.set_item("point_accelerations", points)?;
     let joints = PyDict::new(py);
     for j in &e.clearance_joints {
         let entry = PyDict::new(py);

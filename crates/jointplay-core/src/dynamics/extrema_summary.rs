@@ -66,21 +66,29 @@ pub struct Extrema {
     pub t_end: f64,
     /// Peaks of the channels with a unit in [`PEAK_UNITS`], in channel order.
     pub channels: Vec<ChannelPeak>,
+    /// Peak acceleration magnitude of each named body point `"<body>.<point>"` [m/s^2]
+    /// (`value` is the magnitude too).
+    pub point_accelerations: Vec<ChannelPeak>,
     /// Statistics of each clearance joint, in model order.
     pub clearance_joints: Vec<JointExtrema>,
 }
 
 impl ExtremaTracker {
-    /// The summary: `names` and `units` of the tracked channels, then for each
-    /// clearance joint its name, impacts, whether it is lubricated and its clearance [m].
-    pub(crate) fn summary(&self, names: &[(String, &'static str)], joints: &[(String, usize, bool, f64)]) -> Extrema {
+    /// The summary: `names` and `units` of the tracked quantities (the first
+    /// `n_channels` channels, then point accelerations), then for each clearance
+    /// joint its name, impacts, whether it is lubricated and its clearance [m].
+    pub(crate) fn summary(&self, names: &[(String, &'static str)], n_channels: usize, joints: &[(String, usize, bool, f64)]) -> Extrema {
         let duration = self.t_last - self.t_start;
-        let channels = names
-            .iter()
-            .zip(&self.channels.peaks)
-            .filter(|(_, p)| !p.time.is_nan())
-            .map(|((name, unit), p)| ChannelPeak { name: name.clone(), unit, peak: p.score, value: p.value, time: p.time })
-            .collect();
+        let peaks = |range: std::ops::Range<usize>| -> Vec<ChannelPeak> {
+            names[range.clone()]
+                .iter()
+                .zip(&self.channels.peaks[range])
+                .filter(|(_, p)| !p.time.is_nan())
+                .map(|((name, unit), p)| ChannelPeak { name: name.clone(), unit, peak: p.score, value: p.value, time: p.time })
+                .collect()
+        };
+        let channels = peaks(0..n_channels);
+        let point_accelerations = peaks(n_channels..names.len());
         let clearance_joints = joints
             .iter()
             .zip(self.gaps.peaks.iter().zip(&self.contact_time))
@@ -100,6 +108,6 @@ impl ExtremaTracker {
                 }
             })
             .collect();
-        Extrema { steps: self.steps, t_start: self.t_start, t_end: self.t_last, channels, clearance_joints }
+        Extrema { steps: self.steps, t_start: self.t_start, t_end: self.t_last, channels, point_accelerations, clearance_joints }
     }
 }

@@ -4,6 +4,7 @@
 use super::channels::Trajectory;
 use super::equations::Stabilization;
 use super::extrema::ExtremaTracker;
+use super::frame::{BodyIndex, Vec2};
 use super::extrema_summary::{is_peak_unit, Extrema};
 use super::system::{MechanismSystem, StepEndCache, Tracking};
 use super::{Model, Progress, State, Workspace};
@@ -103,12 +104,15 @@ pub fn simulate(
     SimulationOutcome { trajectory, statistics, diagnostics, extrema, error }
 }
 
-/// The tracker of the channels with a unit in [`super::PEAK_UNITS`] and of every clearance joint.
+/// The tracker of the channels with a unit in [`super::PEAK_UNITS`], of the
+/// acceleration of every named point of a moving body and of every clearance joint.
 fn new_tracking(model: &Model, len: usize) -> Tracking {
     let channels: Vec<usize> = (0..model.channels.len()).filter(|&c| is_peak_unit(model.channels[c].info.unit)).collect();
+    let points: Vec<(BodyIndex, Vec2)> = model.points.iter().filter(|p| p.1.coordinate().is_some()).map(|p| (p.1, p.2)).collect();
     Tracking {
-        tracker: ExtremaTracker::new(channels.len(), model.clearance_joints.len()),
+        tracker: ExtremaTracker::new(channels.len() + points.len(), model.clearance_joints.len()),
         channels,
+        points,
         state: vec![0.0; len],
         accepted_state: vec![0.0; len],
     }
@@ -116,14 +120,16 @@ fn new_tracking(model: &Model, len: usize) -> Tracking {
 
 /// The tracked summary with the names of its channels and joints.
 fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], impacts: &[usize]) -> Extrema {
-    let names: Vec<(String, &'static str)> = channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).collect();
+    let points = model.points.iter().filter(|p| p.1.coordinate().is_some()).map(|p| (p.0.clone(), "m/s^2"));
+    let names: Vec<(String, &'static str)> =
+        channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).chain(points).collect();
     let joints: Vec<(String, usize, bool, f64)> = (0..model.clearance_joints.len())
         .map(|k| {
             let joint = &model.clearance_joints[k];
             (model.clearance_names[k].clone(), impacts[k], joint.lubrication.is_some(), joint.clearance)
         })
         .collect();
-    let mut extrema = tracker.summary(&names, &joints);
+    let mut extrema = tracker.summary(&names, channels.len(), &joints);
     for joint in extrema.clearance_joints.iter_mut().filter(|j| j.min_film.is_some()) {
         let pressure = format!("{}.peak_pressure", joint.name);
         joint.peak_film_pressure = extrema.channels.iter().find(|c| c.name == pressure).map(|c| (c.peak, c.time));

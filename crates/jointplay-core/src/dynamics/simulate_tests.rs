@@ -71,3 +71,18 @@ fn tracked_peaks_do_not_depend_on_the_output_step_and_bound_every_sample() {
     let sampled = every_step.trajectory.channel("B.fn").unwrap().iter().fold(0.0f64, |m, v| m.max(v.abs()));
     assert!(fn_peak.peak > sampled, "tracked {}, step ends {sampled}", fn_peak.peak);
 }
+
+#[test]
+fn tracked_point_acceleration_of_the_crank_pin_is_the_centripetal_closed_form() {
+    // the crank turns at constant omega: its pin A, 0.05 m from O, accelerates at omega^2 0.05 throughout
+    let (_, _, outcome) = run(0.004, Some(1e-3), 10_000_000);
+    let pin = outcome.extrema.point_accelerations.iter().find(|p| p.name == "crank.A").expect("crank.A tracked");
+    let expected = OMEGA * OMEGA * 0.05;
+    assert!((pin.peak - expected).abs() < 1e-6 * expected, "{} vs {expected}", pin.peak);
+    // the slider's point B is its centre: its peak is that of |(ax, ay)| of a fine output, from above
+    let (_, _, fine) = run(0.004, Some(1e-6), 10_000_000);
+    let (ax, ay) = (fine.trajectory.channel("slider.ax").unwrap(), fine.trajectory.channel("slider.ay").unwrap());
+    let sampled = ax.iter().zip(&ay).fold(0.0f64, |m, (x, y)| m.max(x.hypot(*y)));
+    let slider = fine.extrema.point_accelerations.iter().find(|p| p.name == "slider.B").unwrap();
+    assert!(sampled <= slider.peak * (1.0 + 1e-9) && sampled >= slider.peak * (1.0 - 1e-3), "sampled {sampled}, tracked {}", slider.peak);
+}

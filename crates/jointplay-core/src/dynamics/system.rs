@@ -5,7 +5,7 @@
 use super::channels::{update_constraint_forces, value, Trajectory};
 use super::extrema::{ExtremaTracker, StepProbe};
 use super::equations::{accelerations, update_frames, Stabilization};
-use super::frame::Frame;
+use super::frame::{perp, BodyIndex, Frame, Vec2};
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::state::ContactMemory;
@@ -45,6 +45,8 @@ pub(crate) struct Tracking {
     pub tracker: ExtremaTracker,
     /// Indices into `Model::channels` of the tracked channels.
     pub channels: Vec<usize>,
+    /// Named body points whose acceleration magnitude is tracked after the channels: body and body-frame point [m].
+    pub points: Vec<(BodyIndex, Vec2)>,
     /// State from the dense output at a time inside a step.
     pub state: Vec<f64>,
     /// State after the last accepted step (`[q, q_dot]`), at `MechanismSystem::last_accepted`.
@@ -312,13 +314,18 @@ impl MechanismSystem<'_> {
         Ok(())
     }
 
-    /// Tracked channel values from the evaluation the workspace holds at `state`.
+    /// Tracked channel values, then point acceleration magnitudes [m/s^2], from
+    /// the evaluation the workspace holds at `state`.
     fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
         update_constraint_forces(self.model, self.ws);
         let ws = &*self.ws;
-        for (v, &c) in values.iter_mut().zip(&self.tracking.channels) {
+        let (channels, points) = values.split_at_mut(self.tracking.channels.len());
+        for (v, &c) in channels.iter_mut().zip(&self.tracking.channels) {
             // (tracked channels read forces and accelerations, never the energy)
             *v = value(self.model, self.model.channels[c].source, state, ws, [f64::NAN; 2]);
+        }
+        for (v, &(body, local)) in points.iter_mut().zip(&self.tracking.points) {
+            *v = point_acceleration(ws, body, local);
         }
     }
 }
@@ -386,4 +393,15 @@ impl MechanismSystem<'_> {
         self.tracking.tracker = tracker;
         observed
     }
+}
+
+/// Acceleration magnitude [m/s^2] of the point `local` [m] (body frame) of a
+/// moving body from an evaluated workspace: `|a_G + alpha perp(r) - omega^2 r|`.
+fn point_acceleration(ws: &Workspace, body: BodyIndex, local: Vec2) -> f64 {
+    let Some(c) = body.coordinate() else { return 0.0 };
+    let frame = &ws.frames[body.0];
+    let r = frame.rotate(local);
+    let a = ws.accelerations.as_slice();
+    let omega = frame.angular_velocity;
+    (Vec2::new(a[c], a[c + 1]) + perp(r) * a[c + 2] - r * (omega * omega)).norm()
 }
