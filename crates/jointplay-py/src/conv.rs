@@ -108,18 +108,19 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
 }
 
 /// The summary tracked at every accepted step as plain data (JSON-serialisable:
-/// a time that does not exist, such as that of a penetration never reached, is None):
+/// a time or extremum that does not exist, such as the time of a penetration
+/// never reached or anything of a run without a step, is None):
 /// `{"steps", "t_start", "t_end", "channels": {name: {"peak", "value", "time", "unit"}},
 /// "point_accelerations": {"<body>.<point>": {"peak", "time", "unit"}},
 /// "clearance_joints": {name: {"impacts", "contact_time", "contact_fraction",
 /// "max_penetration", "max_penetration_time", "max_eccentricity_ratio", and for lubricated joints "min_film",
 /// "min_film_time", "peak_film_pressure", "peak_film_pressure_time"}}}`.
 pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>> {
-    let time = |t: f64| if t.is_nan() { None } else { Some(t) };
+    let finite = |x: f64| if x.is_finite() { Some(x) } else { None };
     let d = PyDict::new(py);
     d.set_item("steps", e.steps)?;
-    d.set_item("t_start", time(e.t_start))?;
-    d.set_item("t_end", time(e.t_end))?;
+    d.set_item("t_start", finite(e.t_start))?;
+    d.set_item("t_end", finite(e.t_end))?;
     let channels = PyDict::new(py);
     for c in &e.channels {
         let entry = PyDict::new(py);
@@ -146,15 +147,15 @@ pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>
         entry.set_item("contact_time", j.contact_time)?;
         entry.set_item("contact_fraction", j.contact_fraction)?;
         entry.set_item("max_penetration", j.max_penetration)?;
-        entry.set_item("max_penetration_time", time(j.max_penetration_time))?;
-        entry.set_item("max_eccentricity_ratio", j.max_eccentricity_ratio)?;
+        entry.set_item("max_penetration_time", finite(j.max_penetration_time))?;
+        entry.set_item("max_eccentricity_ratio", finite(j.max_eccentricity_ratio))?;
         if let (Some(film), Some(at)) = (j.min_film, j.min_film_time) {
-            entry.set_item("min_film", film)?;
-            entry.set_item("min_film_time", time(at))?;
+            entry.set_item("min_film", finite(film))?;
+            entry.set_item("min_film_time", finite(at))?;
         }
         if let Some((pressure, at)) = j.peak_film_pressure {
             entry.set_item("peak_film_pressure", pressure)?;
-            entry.set_item("peak_film_pressure_time", time(at))?;
+            entry.set_item("peak_film_pressure_time", finite(at))?;
         }
         joints.set_item(&j.name, entry)?;
     }

@@ -93,6 +93,8 @@ impl ExtremaTracker {
             .iter()
             .zip(self.gaps.peaks.iter().zip(&self.contact_time))
             .map(|((name, impacts, lubricated, clearance), (gap, &contact_time))| {
+                // (a joint observed at no step at all has no extrema: NaN)
+                let observed = !gap.time.is_nan();
                 let touched = gap.score > 0.0;
                 JointExtrema {
                     name: name.clone(),
@@ -101,8 +103,8 @@ impl ExtremaTracker {
                     contact_fraction: if duration > 0.0 { contact_time / duration } else { 0.0 },
                     max_penetration: if touched { gap.score } else { 0.0 },
                     max_penetration_time: if touched { gap.time } else { f64::NAN },
-                    max_eccentricity_ratio: 1.0 + gap.score / clearance,
-                    min_film: lubricated.then_some((-gap.score).max(0.0)),
+                    max_eccentricity_ratio: if observed { 1.0 + gap.score / clearance } else { f64::NAN },
+                    min_film: lubricated.then_some(if observed { (-gap.score).max(0.0) } else { f64::NAN }),
                     min_film_time: lubricated.then_some(gap.time),
                     peak_film_pressure: None,
                 }

@@ -86,3 +86,14 @@ fn tracked_point_acceleration_of_the_crank_pin_is_the_centripetal_closed_form() 
     let slider = fine.extrema.point_accelerations.iter().find(|p| p.name == "slider.B").unwrap();
     assert!(sampled <= slider.peak * (1.0 + 1e-9) && sampled >= slider.peak * (1.0 - 1e-3), "sampled {sampled}, tracked {}", slider.peak);
 }
+
+#[test]
+fn a_run_without_steps_has_no_extrema() {
+    let (_, state, outcome) = run(0.0, None, 10_000_000);
+    assert!(outcome.error.is_none());
+    assert_eq!((state.time, outcome.extrema.steps), (0.0, 0));
+    assert!(outcome.extrema.channels.is_empty() && outcome.extrema.point_accelerations.is_empty());
+    let joint = &outcome.extrema.clearance_joints[0];
+    assert_eq!((joint.impacts, joint.contact_time, joint.max_penetration), (0, 0.0, 0.0));
+    assert!(joint.max_eccentricity_ratio.is_nan() && joint.max_penetration_time.is_nan());
+}
