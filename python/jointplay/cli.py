@@ -292,11 +292,14 @@ def print_summary(results) -> None:
             if tracked and c.get("max_penetration_time") is not None:
                 penetration += f" at {_ms(c['max_penetration_time'])}"
             cells = [name, str(c["impacts"]), contact, penetration]
-            if lubricated and "min_film" in c:
+            if lubricated and c.get("min_film") is not None:
                 film = f"{c['min_film'] * 1e6:.3g} um"
                 if tracked and c.get("min_film_time") is not None:
                     film += f" at {_ms(c['min_film_time'])}"
-                cells += [film, _fmt(c.get("peak_film_pressure"), "Pa")]
+                pressure = _fmt(c.get("peak_film_pressure"), "Pa")
+                if tracked and c.get("peak_film_pressure_time") is not None:
+                    pressure += f" at {_ms(c['peak_film_pressure_time'])}"
+                cells += [film, pressure]
             elif lubricated:
                 cells += ["-", "-"]
             t.add_row(*cells)

@@ -97,6 +97,6 @@ def tracked_peak(run: Results, name: str) -> float | None:
     element, _, quantity = name.rpartition(".")
     joint = run.extrema.get("clearance_joints", {}).get(element)
     key = {"penetration": "max_penetration", "eccentricity_ratio": "max_eccentricity_ratio"}.get(quantity)
-    if joint is not None and key in joint:
+    if joint is not None and joint.get(key) is not None:
         return float(joint[key])
     return None
