@@ -127,6 +127,28 @@ def _printed_warnings():
         yield
 
 
+def _count(n: int) -> str:
+    """``1612`` -> ``1 612``."""
+    return f"{n:,}".replace(",", " ")
+
+
+def _ms(t: float | None) -> str:
+    return "" if t is None else f"{t * 1e3:.4g} ms"
+
+
+def _summary_title(name: str, s: dict) -> str:
+    """``flores: 25 samples saved (output step 1 ms); peaks and extrema from all 1 832 accepted steps``."""
+    step = s.get("output_step")
+    saved = f"{_count(s['samples'])} samples saved " + (f"(output step {step * 1e3:.4g} ms)" if step
+                                                         else "(a sample every accepted step)")
+    if s["extrema_source"] == "accepted steps":
+        source = f"peaks and extrema from all {_count(s['steps'])} accepted steps"
+    else:
+        source = "peaks and extrema from the saved samples (results file written before they were tracked at every step)"
+    end = f" up to {s['t_end'] * 1e3:.4g} ms"
+    return f"{name + ': ' if name else ''}{saved}{end}; {source}"
+
+
 def _words(kind: str) -> str:
     """``RevoluteJoint`` -> ``revolute joint``."""
     return "".join(f" {c.lower()}" if c.isupper() else c for c in kind).strip()
@@ -201,17 +223,25 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
                                                      "[default: MODEL name with .nc, in the current folder].")] = None,
         t_end: Annotated[str | None, typer.Option("--t-end", help='End time, e.g. "24 ms" or 0.024 (seconds); '
                                                   "overrides simulation.t_end.")] = None,
+        output_step: Annotated[str | None, typer.Option("--output-step", help='Spacing of the saved samples, e.g. '
+                                                        '"1 ms" or 0.001 (seconds); overrides simulation.output_step. '
+                                                        "Default: a sample at every accepted step. The summary's "
+                                                        "peaks and extrema come from every step either way.")] = None,
         set_: SetOption = [],  # noqa: B006
         quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar and no summary.")] = False) -> None:
     """Simulate a model file, save the results (NetCDF) and print a summary.
 
-    The summary gives peak accelerations of the named points, peak joint and
-    contact forces, impacts and fraction of time in contact of each clearance
-    joint, integrator statistics and wall time. If the simulation stops early,
-    what was computed is saved and the exit code is 1.
+    The summary gives peak accelerations of the named points and peak joint
+    and contact forces with their times, impacts, time in contact and deepest
+    penetration (thinnest film when lubricated) of each clearance joint, all
+    tracked at every accepted step whatever the output step; integrator
+    statistics and wall time. If the simulation stops early, what was
+    computed is saved and the exit code is 1.
     """
     m = _load(model, set_)
     options = dict(m.simulation)
+    if output_step is not None:
+        options["output_step"] = _time_option(output_step, "--output-step")
     end = _time_option(t_end, "--t-end") or options.pop("t_end", None)
     options.pop("t_end", None)
     if end is None:
@@ -267,23 +297,41 @@ def _simulate(m, end: float, options: dict, quiet: bool):
 
 
 def print_summary(results) -> None:
-    """The numbers of ``Results.summary()`` as tables."""
+    """The numbers of ``Results.summary()`` as tables, under a line saying how many samples were
+    saved and where the peaks and extrema come from (every accepted step, or the samples of an
+    older results file)."""
     s = results.summary()
-    peaks = Table("quantity", "peak |value|", title=f"{results.spec.get('name', '')}: {s['samples']} samples "
-                                                     f"up to {s['t_end'] * 1e3:.4g} ms")
+    out.print(_summary_title(results.spec.get("name", "") if results.spec else "", s))
+    tracked = s["extrema_source"] == "accepted steps"
+    peaks = Table("quantity", "peak |value|", "at")
     for name, value in s["point_accelerations"].items():
-        peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"))
+        at = s["point_acceleration_times"].get(name)
+        peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"), _ms(at) if tracked else "(samples)")
     for name, value in s["peak_forces"].items():
-        peaks.add_row(name, _fmt(value, results.unit(name)))
+        peaks.add_row(name, _fmt(value, results.unit(name)), _ms(s["peak_times"].get(name)))
     out.print(peaks)
     if s["clearance_joints"]:
         lubricated = any("min_film" in c for c in s["clearance_joints"].values())
         columns = ("clearance joint", "impacts", "time in contact", "max penetration")
         t = Table(*columns, *(("min film", "peak film pressure") if lubricated else ()))
         for name, c in s["clearance_joints"].items():
-            cells = [name, str(c["impacts"]), f"{100 * c['contact_fraction']:.1f} %", f"{c['max_penetration'] * 1e6:.3g} um"]
-            if lubricated:
-                cells += [f"{c['min_film'] * 1e6:.3g} um", _fmt(c["peak_film_pressure"], "Pa")] if "min_film" in c else ["-", "-"]
+            contact = f"{100 * c['contact_fraction']:.1f} %"
+            if tracked:
+                contact += f" ({c['contact_time'] * 1e3:.4g} ms)"
+            penetration = f"{c['max_penetration'] * 1e6:.3g} um"
+            if tracked and c.get("max_penetration_time") is not None:
+                penetration += f" at {_ms(c['max_penetration_time'])}"
+            cells = [name, str(c["impacts"]), contact, penetration]
+            if lubricated and c.get("min_film") is not None:
+                film = f"{c['min_film'] * 1e6:.3g} um"
+                if tracked and c.get("min_film_time") is not None:
+                    film += f" at {_ms(c['min_film_time'])}"
+                pressure = _fmt(c.get("peak_film_pressure"), "Pa")
+                if tracked and c.get("peak_film_pressure_time") is not None:
+                    pressure += f" at {_ms(c['peak_film_pressure_time'])}"
+                cells += [film, pressure]
+            elif lubricated:
+                cells += ["-", "-"]
             t.add_row(*cells)
         out.print(t)
     st = s["statistics"]

@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from .plots import FORMATS, _figure, _save, clearance_joints, crank_angle_deg, default_channels
-from .results import Results
+from .results import PEAK_UNITS, Results
 
 
 def default_compare_channels(runs: Sequence[Results]) -> list[str]:
@@ -62,10 +62,41 @@ def compare_figures(runs: Sequence[Results], labels: Sequence[str], out_dir, cha
 
 
 def peak_table(runs: Sequence[Results], channels: Sequence[str]) -> list[list[str]]:
-    """Rows ``[channel, unit, peak |value| of each run]`` (``-`` where a run lacks the channel)."""
+    """Rows ``[channel, unit, peak |value| of each run]`` (``-`` where a run lacks the channel).
+
+    Peaks of force, moment, acceleration and pressure channels and the penetration of clearance
+    joints come from :attr:`Results.extrema`, tracked at every accepted step whatever the output
+    step. Other channels (positions, velocities) and results files written before the extrema were
+    tracked use the saved samples; a peak of the latter kind is marked ``(samples)``.
+    """
     rows = []
     for name in channels:
         unit = next((r.unit(name) for r in runs if name in r), "")
-        cells = [f"{np.max(np.abs(r[name])):.4g}" if name in r and len(r) else "-" for r in runs]
-        rows.append([name, unit, *cells])
+        rows.append([name, unit, *(_peak_cell(r, name) for r in runs)])
     return rows
+
+
+def _peak_cell(run: Results, name: str) -> str:
+    """Peak |value| of one channel of one run, as text."""
+    if name not in run or not len(run):
+        return "-"
+    tracked = tracked_peak(run, name)
+    if tracked is not None:
+        return f"{tracked:.4g}"
+    sampled = f"{np.max(np.abs(run[name])):.4g}"
+    return f"{sampled} (samples)" if run.extrema is None and run.unit(name) in PEAK_UNITS else sampled
+
+
+def tracked_peak(run: Results, name: str) -> float | None:
+    """The peak |value| of a channel tracked at every accepted step, if the run has it."""
+    if run.extrema is None:
+        return None
+    channel = run.extrema.get("channels", {}).get(name)
+    if channel is not None:
+        return float(channel["peak"])
+    element, _, quantity = name.rpartition(".")
+    joint = run.extrema.get("clearance_joints", {}).get(element)
+    key = {"penetration": "max_penetration", "eccentricity_ratio": "max_eccentricity_ratio"}.get(quantity)
+    if joint is not None and joint.get(key) is not None:
+        return float(joint[key])
+    return None

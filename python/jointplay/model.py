@@ -291,7 +291,10 @@ class Model:
         output), ``"adams"`` (variable-step Adams predictor-corrector) or ``"bdf"`` (implicit
         variable-order NDF/BDF with Newton iterations, for stiff models such as lubricated joints). ``rtol``/``atol``: error
         tolerances; ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
-        accepted step). ``progress`` is called with the simulated time about ten times a second.
+        accepted step; the peaks and extrema of :attr:`Results.extrema` come from every accepted step
+        whatever it is); ``max_steps``: most attempted (accepted + rejected) steps, default 10 000 000,
+        beyond which the run stops with a :class:`~jointplay.errors.SimulationError` naming the option.
+        ``progress`` is called with the simulated time about ten times a second.
 
         Values that are legal but almost certainly mistakes (a clearance of 20 % of the radius, a mass
         1e4 times the others; :func:`jointplay.modelfile.plausibility`) are issued first as

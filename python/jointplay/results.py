@@ -16,11 +16,36 @@ import numpy as np
 
 
 class Results:
-    """Channels recorded by a simulation (possibly cut short by an error)."""
+    """Channels recorded by a simulation (possibly cut short by an error).
+
+    ``extrema`` holds the summary quantities the core tracked at *every accepted step*, whatever
+    the output sampling, with peaks inside a step found on the dense output (a JSON-serialisable
+    dict; ``None`` for results files written before it existed)::
+
+        {"steps": 1832,                      # accepted steps observed
+         "t_start": 0.0, "t_end": 0.024,     # [s]
+         "point_accelerations": {            # |acceleration| of every named point of a moving body
+             "slider.B": {"peak": 3.27e5, "time": 0.00025, "unit": "m/s^2"}, ...},
+         "channels": {                       # every channel in N, N m, m/s^2, rad/s^2 or Pa
+             "B.fn": {"peak": 45886.5,       # largest |value| [unit]
+                      "value": 45886.5,      # the signed value there
+                      "time": 0.000251,      # [s]
+                      "unit": "N"}, ...},
+         "clearance_joints": {
+             "B": {"impacts": 43, "contact_time": 0.01516, "contact_fraction": 0.632,
+                   "max_penetration": 7.80e-05, "max_penetration_time": 0.000253,  # None if never in contact
+                   "max_eccentricity_ratio": 1.156,
+                   # lubricated joints also:
+                   "min_film": 1.2e-06, "min_film_time": 0.0093,
+                   "peak_film_pressure": 3.1e8, "peak_film_pressure_time": 0.0093}}}
+
+    Contact is penetration > 0; a separation inside a step is located on the dense output.
+    """
 
     def __init__(self, time: np.ndarray, names: list[str], units: list[str], descriptions: list[str],
                  values: np.ndarray, statistics: dict, diagnostics: dict, spec: dict | None = None,
-                 options: dict | None = None, wall_time: float = float("nan"), error: dict | None = None):
+                 options: dict | None = None, wall_time: float = float("nan"), error: dict | None = None,
+                 extrema: dict | None = None):
         self.time = np.asarray(time, dtype=float)
         self._names = list(names)
         self._index = {n: k for k, n in enumerate(self._names)}
@@ -33,6 +58,7 @@ class Results:
         self.options = dict(options or {})
         self.wall_time = wall_time
         self.error = error
+        self.extrema = extrema
 
     @classmethod
     def from_core(cls, raw: dict, spec: dict | None, options: dict | None, wall_time: float) -> Results:
@@ -40,7 +66,7 @@ class Results:
         # the core records sample after sample, (samples, channels): its transpose is a view
         return cls(raw["time"], raw["names"], raw["units"], raw["descriptions"], np.asarray(raw["values"]).T,
                    raw["statistics"], raw["diagnostics"], spec=spec, options=options, wall_time=wall_time,
-                   error=raw["error"])
+                   error=raw["error"], extrema=raw.get("extrema"))
 
     # access ----------------------------------------------------------------
 
@@ -101,6 +127,8 @@ class Results:
             "wall_time_s": float(self.wall_time),
             "completed": int(self.error is None),
         }
+        if self.extrema is not None:
+            attrs["extrema_json"] = json.dumps(self.extrema)
         if self.error is not None:
             attrs["error"] = str(self.error.get("message", ""))
             attrs["error_json"] = json.dumps(self.error, default=str)
@@ -142,16 +170,72 @@ class Results:
     # summary ---------------------------------------------------------------
 
     def summary(self) -> dict:
-        """Headline numbers: peaks of accelerations, reaction and contact forces, impacts,
-        contact fraction per clearance joint, integrator statistics and wall time."""
+        """Headline numbers: peak |value| of every force, moment, acceleration and pressure channel
+        (``peaks``, with their times in ``peak_times``), per clearance joint the impacts, time and
+        fraction in contact, deepest penetration and, when lubricated, thinnest film and peak film
+        pressure; integrator statistics and wall time.
+
+        These come from :attr:`extrema`, tracked at every accepted step whatever the output step
+        (``extrema_source`` is ``"accepted steps"``, ``steps`` their number), as do the peak
+        acceleration magnitudes of the named body points (``point_accelerations``, times in
+        ``point_acceleration_times``). Results files written before the core tracked them fall back
+        to the saved samples (``extrema_source`` ``"samples"``), which miss what happens between
+        samples.
+        """
         out: dict[str, Any] = {"t_end": float(self.time[-1]) if self.time.size else 0.0,
-                               "samples": int(self.time.size), "completed": self.error is None}
+                               "samples": int(self.time.size), "completed": self.error is None,
+                               "output_step": self.options.get("output_step")}
+        if self.extrema is not None:
+            out.update(self._tracked_summary())
+        else:
+            out.update(self._sampled_summary())
+        points = (self.extrema or {}).get("point_accelerations")
+        if points is not None:
+            out["point_accelerations"] = {n: float(p["peak"]) for n, p in points.items()}
+            out["point_acceleration_times"] = {n: p["time"] for n, p in points.items()}
+        else:
+            out["point_accelerations"], out["point_acceleration_times"] = self._sampled_point_accelerations()
+        out["peak_forces"] = {n: v for n, v in out["peaks"].items() if n.rsplit(".", 1)[1] in FORCE_QUANTITIES}
+        out["error"] = None if self.error is None else dict(self.error)
+        out["statistics"] = dict(self.statistics)
+        out["wall_time"] = self.wall_time
+        return out
+
+    def _tracked_summary(self) -> dict:
+        """Peaks and clearance-joint statistics from :attr:`extrema`."""
+        channels = self.extrema.get("channels", {})
+        joints = {}
+        for name, j in self.extrema.get("clearance_joints", {}).items():
+            joints[name] = {key: j[key] for key in JOINT_KEYS if key in j}
+        return {"extrema_source": "accepted steps", "steps": int(self.extrema.get("steps", 0)),
+                "peaks": {n: float(c["peak"]) for n, c in channels.items()},
+                "peak_times": {n: c["time"] for n, c in channels.items()},
+                "clearance_joints": joints}
+
+    def _sampled_point_accelerations(self) -> tuple[dict, dict]:
+        """Peak acceleration magnitude of every named body point and its time, from the samples."""
+        peaks, times = {}, {}
+        for body in (self.spec or {}).get("bodies", []) if self.time.size else []:
+            for p in body.get("points", []):
+                name = f"{body['name']}.{p['name']}"
+                try:
+                    ax, ay = self.point_acceleration(name)
+                except KeyError:
+                    continue
+                magnitude = np.hypot(ax, ay)
+                k = int(np.argmax(magnitude))
+                peaks[name], times[name] = float(magnitude[k]), float(self.time[k])
+        return peaks, times
+
+    def _sampled_summary(self) -> dict:
+        """Peaks and clearance-joint statistics from the saved samples (results files written before
+        the core tracked them at every step)."""
         peaks = {}
-        for name in self._names:
-            element, quantity = name.rsplit(".", 1)
-            if quantity in ("ax", "ay", "alpha", "f", "fn", "torque", "force") and self.time.size:
-                peaks[name] = float(np.max(np.abs(self[name])))
-        out["peaks"] = peaks
+        times = {}
+        for name, unit in zip(self._names, self._units):
+            if unit in PEAK_UNITS and self.time.size:
+                k = int(np.argmax(np.abs(self[name])))
+                peaks[name], times[name] = float(abs(self[name][k])), float(self.time[k])
         contact = {}
         impacts = self.diagnostics.get("impacts", [])
         clearance = [n.rsplit(".", 1)[0] for n in self._names if n.endswith(".contact")]
@@ -165,21 +249,18 @@ class Results:
             if f"{element}.film_min" in self._index and self.time.size:
                 contact[element]["min_film"] = float(np.min(self[f"{element}.film_min"]))
                 contact[element]["peak_film_pressure"] = float(np.max(self[f"{element}.peak_pressure"]))
-        out["clearance_joints"] = contact
-        out["point_accelerations"] = {}
-        for body in (self.spec or {}).get("bodies", []) if self.time.size else []:
-            for p in body.get("points", []):
-                name = f"{body['name']}.{p['name']}"
-                try:
-                    ax, ay = self.point_acceleration(name)
-                except KeyError:
-                    continue
-                out["point_accelerations"][name] = float(np.max(np.hypot(ax, ay)))
-        out["peak_forces"] = {n: v for n, v in peaks.items() if n.rsplit(".", 1)[1] in ("f", "fn", "force", "torque")}
-        out["error"] = None if self.error is None else dict(self.error)
-        out["statistics"] = dict(self.statistics)
-        out["wall_time"] = self.wall_time
-        return out
+        return {"extrema_source": "samples", "steps": None, "peaks": peaks, "peak_times": times,
+                "clearance_joints": contact}
+
+
+#: Units of the channels whose peak the summary reports (the core tracks the same).
+PEAK_UNITS = ("N", "N m", "m/s^2", "rad/s^2", "Pa")
+#: Quantities listed as forces (and torques) in the summary's ``peak_forces``.
+FORCE_QUANTITIES = ("f", "fn", "force", "torque")
+#: What the summary reports per clearance joint from :attr:`Results.extrema`.
+JOINT_KEYS = ("impacts", "contact_time", "contact_fraction", "max_penetration", "max_penetration_time",
+              "max_eccentricity_ratio",
+              "min_film", "min_film_time", "peak_film_pressure", "peak_film_pressure_time")
 
 
 def contact_fraction(time: np.ndarray, flag: np.ndarray) -> float:
@@ -230,5 +311,7 @@ def open_results(path) -> Results:
     error = None
     if not int(attrs.get("completed", 1)):
         error = json.loads(attrs["error_json"]) if attrs.get("error_json") else {"message": attrs.get("error", "")}
+    extrema = json.loads(attrs["extrema_json"]) if attrs.get("extrema_json") else None
     return Results(time, names, units, descriptions, values, _attr_dict(attrs, "statistics_"), diagnostics,
-                   spec=spec, options=options, wall_time=float(attrs.get("wall_time_s", float("nan"))), error=error)
+                   spec=spec, options=options, wall_time=float(attrs.get("wall_time_s", float("nan"))), error=error,
+                   extrema=extrema)

@@ -70,7 +70,7 @@ pub enum SimulationError {
         element: Option<String>,
     },
     /// More steps than allowed were taken.
-    #[error("maximum number of steps ({max_steps}) reached at t = {time:.6e} s")]
+    #[error("the run exceeded max_steps = {max_steps} attempted steps at t = {time:.6e} s; raise simulation.max_steps (or look for why the steps are so small)")]
     TooManySteps {
         /// Time reached [s].
         time: f64,

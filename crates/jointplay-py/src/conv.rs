@@ -1,6 +1,6 @@
 //! All conversions between Python objects and core types live here.
 
-use jointplay_core::dynamics::{ChannelInfo, Model, SimulationOptions, SimulationOutcome, Stabilization};
+use jointplay_core::dynamics::{ChannelInfo, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::integrate::Method;
 use jointplay_core::SimulationError;
 use numpy::{PyArray1, PyArrayMethods};
@@ -98,12 +98,69 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
     diag.set_item("max_projection_iterations", g.max_projection_iterations)?;
     diag.set_item("impacts", g.impacts.clone())?;
     out.set_item("diagnostics", diag)?;
+    out.set_item("extrema", extrema(py, &o.extrema)?)?;
     match &o.error {
         Some(e) => out.set_item("error", simulation_error(py, e)?)?,
         None => out.set_item("error", py.None())?,
     }
     out.set_item("stage", "integration")?;
     Ok(())
+}
+
+/// The summary tracked at every accepted step as plain data (JSON-serialisable:
+/// a time or extremum that does not exist, such as the time of a penetration
+/// never reached or anything of a run without a step, is None):
+/// `{"steps", "t_start", "t_end", "channels": {name: {"peak", "value", "time", "unit"}},
+/// "point_accelerations": {"<body>.<point>": {"peak", "time", "unit"}},
+/// "clearance_joints": {name: {"impacts", "contact_time", "contact_fraction",
+/// "max_penetration", "max_penetration_time", "max_eccentricity_ratio", and for lubricated joints "min_film",
+/// "min_film_time", "peak_film_pressure", "peak_film_pressure_time"}}}`.
+pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>> {
+    let finite = |x: f64| if x.is_finite() { Some(x) } else { None };
+    let d = PyDict::new(py);
+    d.set_item("steps", e.steps)?;
+    d.set_item("t_start", finite(e.t_start))?;
+    d.set_item("t_end", finite(e.t_end))?;
+    let channels = PyDict::new(py);
+    for c in &e.channels {
+        let entry = PyDict::new(py);
+        entry.set_item("peak", c.peak)?;
+        entry.set_item("value", c.value)?;
+        entry.set_item("time", c.time)?;
+        entry.set_item("unit", c.unit)?;
+        channels.set_item(&c.name, entry)?;
+    }
+    d.set_item("channels", channels)?;
+    let points = PyDict::new(py);
+    for c in &e.point_accelerations {
+        let entry = PyDict::new(py);
+        entry.set_item("peak", c.peak)?;
+        entry.set_item("time", c.time)?;
+        entry.set_item("unit", c.unit)?;
+        points.set_item(&c.name, entry)?;
+    }
+    d.set_item("point_accelerations", points)?;
+    let joints = PyDict::new(py);
+    for j in &e.clearance_joints {
+        let entry = PyDict::new(py);
+        entry.set_item("impacts", j.impacts)?;
+        entry.set_item("contact_time", j.contact_time)?;
+        entry.set_item("contact_fraction", j.contact_fraction)?;
+        entry.set_item("max_penetration", j.max_penetration)?;
+        entry.set_item("max_penetration_time", finite(j.max_penetration_time))?;
+        entry.set_item("max_eccentricity_ratio", finite(j.max_eccentricity_ratio))?;
+        if let (Some(film), Some(at)) = (j.min_film, j.min_film_time) {
+            entry.set_item("min_film", finite(film))?;
+            entry.set_item("min_film_time", finite(at))?;
+        }
+        if let Some((pressure, at)) = j.peak_film_pressure {
+            entry.set_item("peak_film_pressure", pressure)?;
+            entry.set_item("peak_film_pressure_time", finite(at))?;
+        }
+        joints.set_item(&j.name, entry)?;
+    }
+    d.set_item("clearance_joints", joints)?;
+    Ok(d)
 }
 
 /// Summary of a compiled model.

@@ -112,7 +112,7 @@ impl Trajectory {
 }
 
 /// The value of one channel; `energy` is `[kinetic, potential]` [J] of the sample.
-fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, energy: [f64; 2]) -> f64 {
+pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, energy: [f64; 2]) -> f64 {
     let n = model.n_coordinates();
     match source {
         Source::Coordinate(k) => y[k],
@@ -132,7 +132,7 @@ fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, energy: [f64;
 
 /// Fills `ws.constraint_forces` for every element acting during the
 /// simulation (assembly locks keep zero).
-fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
+pub(crate) fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
     for (e, element) in model.elements.iter().enumerate() {
         if element.constraints.end <= model.n_dynamic_constraints {
             ws.constraint_forces[e] = constraint_force_on_second(model, e, ws);

@@ -5,9 +5,12 @@
 //! simulation loop that produces a [`Trajectory`].
 
 mod assembly;
+mod brent;
 mod channels;
 mod compile;
 mod equations;
+mod extrema;
+mod extrema_summary;
 pub mod frame;
 mod model;
 mod progress;
@@ -20,6 +23,7 @@ mod workspace;
 pub use assembly::assemble;
 pub use channels::{ChannelInfo, Trajectory};
 pub use compile::compile;
+pub use extrema_summary::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
 pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm};
 pub use progress::Progress;
@@ -27,5 +31,7 @@ pub use simulate::{simulate, Diagnostics, SimulationOptions, SimulationOutcome};
 pub use state::{ContactMemory, State};
 pub use workspace::Workspace;
 
+#[cfg(test)]
+pub(crate) use brent::maximize;
 #[cfg(test)]
 mod tests;

@@ -3,7 +3,10 @@
 
 use super::channels::Trajectory;
 use super::equations::Stabilization;
-use super::system::{MechanismSystem, StepEndCache};
+use super::extrema::ExtremaTracker;
+use super::frame::{BodyIndex, Vec2};
+use super::extrema_summary::{is_peak_unit, Extrema};
+use super::system::{MechanismSystem, StepEndCache, Tracking};
 use super::{Model, Progress, State, Workspace};
 use crate::error::SimulationError;
 use crate::integrate::{integrate, IntegratorOptions, Statistics};
@@ -50,6 +53,9 @@ pub struct SimulationOutcome {
     pub statistics: Statistics,
     /// Diagnostics.
     pub diagnostics: Diagnostics,
+    /// Peaks, contact statistics and film extrema from every accepted step
+    /// (up to the failure when the run failed).
+    pub extrema: Extrema,
     /// Why the run stopped early, if it did.
     pub error: Option<SimulationError>,
 }
@@ -67,7 +73,8 @@ pub fn simulate(
     let mut diagnostics = Diagnostics::default();
     let t0 = state.time;
     let mut y = state.y.clone();
-    let (statistics, result) = {
+    let mut tracking = new_tracking(model, y.len());
+    let (statistics, result, last_accepted) = {
         let mut system = MechanismSystem {
             model,
             memory: &mut state.contacts,
@@ -78,17 +85,56 @@ pub fn simulate(
             progress,
             last_accepted: f64::NAN,
             step_end: StepEndCache::new(y.len()),
+            tracking: &mut tracking,
         };
-        match system.update_contact_memory(t0, &y) {
+        let (statistics, result) = match system.update_contact_memory(t0, &y) {
             Ok(_) => integrate(&mut system, t0, t_end, &mut y, &options.integrator),
             Err(e) => (Statistics::default(), Err(e)),
-        }
+        };
+        (statistics, result, system.last_accepted)
     };
-    state.y = y;
-    state.time = trajectory.time.last().copied().unwrap_or(t0);
+    // the state of the last accepted step: time and coordinates of one instant, also after a failure
+    if !last_accepted.is_nan() {
+        state.time = last_accepted;
+        state.y = tracking.accepted_state;
+    }
     diagnostics.impacts = state.contacts.iter().map(|c| c.impacts).collect();
+    let extrema = summarize(model, &tracking.tracker, &tracking.channels, &diagnostics.impacts);
     let error = result.err().map(|e| name_likely_cause(model, e, &ws));
-    SimulationOutcome { trajectory, statistics, diagnostics, error }
+    SimulationOutcome { trajectory, statistics, diagnostics, extrema, error }
+}
+
+/// The tracker of the channels with a unit in [`super::PEAK_UNITS`], of the
+/// acceleration of every named point of a moving body and of every clearance joint.
+fn new_tracking(model: &Model, len: usize) -> Tracking {
+    let channels: Vec<usize> = (0..model.channels.len()).filter(|&c| is_peak_unit(model.channels[c].info.unit)).collect();
+    let points: Vec<(BodyIndex, Vec2)> = model.points.iter().filter(|p| p.1.coordinate().is_some()).map(|p| (p.1, p.2)).collect();
+    Tracking {
+        tracker: ExtremaTracker::new(channels.len() + points.len(), model.clearance_joints.len()),
+        channels,
+        points,
+        state: vec![0.0; len],
+        accepted_state: vec![0.0; len],
+    }
+}
+
+/// The tracked summary with the names of its channels and joints.
+fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], impacts: &[usize]) -> Extrema {
+    let points = model.points.iter().filter(|p| p.1.coordinate().is_some()).map(|p| (p.0.clone(), "m/s^2"));
+    let names: Vec<(String, &'static str)> =
+        channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).chain(points).collect();
+    let joints: Vec<(String, usize, bool, f64)> = (0..model.clearance_joints.len())
+        .map(|k| {
+            let joint = &model.clearance_joints[k];
+            (model.clearance_names[k].clone(), impacts[k], joint.lubrication.is_some(), joint.clearance)
+        })
+        .collect();
+    let mut extrema = tracker.summary(&names, channels.len(), &joints);
+    for joint in extrema.clearance_joints.iter_mut().filter(|j| j.min_film.is_some()) {
+        let pressure = format!("{}.peak_pressure", joint.name);
+        joint.peak_film_pressure = extrema.channels.iter().find(|c| c.name == pressure).map(|c| (c.peak, c.time));
+    }
+    extrema
 }
 
 /// A step-size underflow names the clearance joint with the deepest relative penetration, if any is in contact.
@@ -107,3 +153,7 @@ fn name_likely_cause(model: &Model, error: SimulationError, ws: &Workspace) -> S
         other => other,
     }
 }
+
+#[cfg(test)]
+#[path = "simulate_tests.rs"]
+mod tests;

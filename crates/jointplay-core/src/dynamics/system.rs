@@ -2,15 +2,17 @@
 //! contact-onset events, latching of the onset velocity, drift projection
 //! after each accepted step, and recording of the channels.
 
-use super::channels::Trajectory;
+use super::channels::{update_constraint_forces, value, Trajectory};
+use super::extrema::{ExtremaTracker, StepProbe};
 use super::equations::{accelerations, update_frames, Stabilization};
-use super::frame::Frame;
+use super::frame::{perp, BodyIndex, Frame, Vec2};
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::state::ContactMemory;
 use super::{Model, Progress, Workspace};
 use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
+use crate::joint::Lubrication;
 
 /// Newton iterations allowed when projecting after a step: the drift of one
 /// step is at the level of the integration tolerance, so one or two suffice.
@@ -33,6 +35,22 @@ pub(crate) struct MechanismSystem<'a> {
     /// What the workspace holds: the state of the last successful `rhs()`
     /// and of the last `project()`; a step-end sample reuses them.
     pub step_end: StepEndCache,
+    /// Summary quantities tracked at every accepted step.
+    pub tracking: &'a mut Tracking,
+}
+
+/// The tracker of summary quantities with what it reads.
+pub(crate) struct Tracking {
+    /// Peaks, gaps and contact time.
+    pub tracker: ExtremaTracker,
+    /// Indices into `Model::channels` of the tracked channels.
+    pub channels: Vec<usize>,
+    /// Named body points whose acceleration magnitude is tracked after the channels: body and body-frame point [m].
+    pub points: Vec<(BodyIndex, Vec2)>,
+    /// State from the dense output at a time inside a step.
+    pub state: Vec<f64>,
+    /// State after the last accepted step (`[q, q_dot]`), at `MechanismSystem::last_accepted`.
+    pub accepted_state: Vec<f64>,
 }
 
 /// The last evaluated and the last projected state, so that the sample at a
@@ -43,6 +61,8 @@ pub(crate) struct StepEndCache {
     evaluated_at: Option<f64>,
     /// State of that evaluation.
     evaluated_state: Vec<f64>,
+    /// Whether that evaluation computed the outputs only samples need (`Workspace::detailed`).
+    evaluated_detailed: bool,
     /// Time [s] of the last state `project()` returned.
     projected_at: Option<f64>,
     /// That state.
@@ -52,13 +72,14 @@ pub(crate) struct StepEndCache {
 impl StepEndCache {
     /// Empty cache for a state of `len` components.
     pub(crate) fn new(len: usize) -> Self {
-        Self { evaluated_at: None, evaluated_state: vec![0.0; len], projected_at: None, projected_state: vec![0.0; len] }
+        Self { evaluated_at: None, evaluated_state: vec![0.0; len], evaluated_detailed: false, projected_at: None, projected_state: vec![0.0; len] }
     }
 
-    /// The workspace holds the evaluation at (t, y).
-    fn remember_evaluation(&mut self, t: f64, y: &[f64]) {
+    /// The workspace holds the evaluation at (t, y), `detailed` or not.
+    fn remember_evaluation(&mut self, t: f64, y: &[f64], detailed: bool) {
         self.evaluated_state.copy_from_slice(y);
         self.evaluated_at = Some(t);
+        self.evaluated_detailed = detailed;
     }
 
     /// Whether the workspace holds the evaluation at exactly (t, y).
@@ -156,7 +177,9 @@ impl OdeSystem for MechanismSystem<'_> {
         }
         dydt[..n].copy_from_slice(&y[n..]);
         dydt[n..].copy_from_slice(&self.ws.accelerations);
-        self.step_end.remember_evaluation(t, y);
+        if self.step_end.evaluated_at.is_none() {
+            self.step_end.remember_evaluation(t, y, false);
+        }
         Ok(())
     }
 
@@ -216,6 +239,7 @@ impl OdeSystem for MechanismSystem<'_> {
             self.step_end.evaluated_at = None;
         }
         self.last_accepted = t;
+        self.tracking.accepted_state.copy_from_slice(y);
         Ok(false)
     }
 
@@ -234,11 +258,26 @@ impl OdeSystem for MechanismSystem<'_> {
         }
         Ok(())
     }
+
+    fn observe_step(&mut self, t_old: f64, t_new: f64, y: &[f64], dense: &mut dyn FnMut(f64, &mut [f64])) -> Result<(), SimulationError> {
+        self.track_step(t_old, t_new, y, dense)
+    }
 }
 
 impl MechanismSystem<'_> {
     /// Evaluates the sample at (t, y) with the outputs only samples need and records it.
     fn evaluate_and_push(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        self.evaluate_sample(t, y)?;
+        let sample = std::mem::take(&mut self.ws.sample);
+        self.trajectory.push(self.model, t, &sample, self.ws);
+        self.ws.sample = sample;
+        Ok(())
+    }
+
+    /// Evaluates (t, y) with the outputs only samples need; the workspace then
+    /// holds the evaluation and `ws.sample` the state it was made at.
+    fn evaluate_sample(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        self.step_end.evaluated_at = None;
         let n = self.model.n_coordinates();
         // samples between steps come from dense output: project them like the steps
         // (a sample at the step just accepted was projected by accept())
@@ -254,10 +293,115 @@ impl MechanismSystem<'_> {
             self.ws.detailed = false;
         }
         if evaluated.is_ok() {
-            self.trajectory.push(self.model, t, &sample, self.ws);
-            self.step_end.remember_evaluation(t, &sample);
+            self.step_end.remember_evaluation(t, &sample, true);
         }
         self.ws.sample = sample;
         evaluated
     }
+
+    /// Completes the evaluation the workspace holds with the film outputs only
+    /// samples need (the peak pressure), re-evaluating just the films.
+    fn detail_films(&mut self, t: f64) -> Result<(), SimulationError> {
+        let ws = &mut *self.ws;
+        for (k, joint) in self.model.clearance_joints.iter().enumerate() {
+            let Some(lubrication) = &joint.lubrication else { continue };
+            let (fi, fj) = (&ws.frames[joint.bearing.body.0], &ws.frames[joint.journal.body.0]);
+            let kinematics = Lubrication::kinematics(fi, fj, fi.point(joint.bearing.local), fj.point(joint.journal.local));
+            let film = lubrication.evaluate(&kinematics, ws.film_solvers[k].as_mut(), true);
+            ws.films[k] = film.map_err(|cause| SimulationError::FilmModel { time: t, element: self.model.clearance_names[k].clone(), cause })?;
+        }
+        self.step_end.evaluated_detailed = true;
+        Ok(())
+    }
+
+    /// Tracked channel values, then point acceleration magnitudes [m/s^2], from
+    /// the evaluation the workspace holds at `state`.
+    fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
+        update_constraint_forces(self.model, self.ws);
+        let ws = &*self.ws;
+        let (channels, points) = values.split_at_mut(self.tracking.channels.len());
+        for (v, &c) in channels.iter_mut().zip(&self.tracking.channels) {
+            // (tracked channels read forces and accelerations, never the energy)
+            *v = value(self.model, self.model.channels[c].source, state, ws, [f64::NAN; 2]);
+        }
+        for (v, &(body, local)) in points.iter_mut().zip(&self.tracking.points) {
+            *v = point_acceleration(ws, body, local);
+        }
+    }
+}
+
+/// The system seen by the extrema tracker during one accepted step.
+struct SystemProbe<'s, 'a, 'd> {
+    system: &'s mut MechanismSystem<'a>,
+    /// End of the step [s].
+    t_new: f64,
+    /// Accepted state at its end.
+    y_new: &'s [f64],
+    /// The step's dense output.
+    dense: &'d mut dyn FnMut(f64, &mut [f64]),
+}
+
+impl StepProbe for SystemProbe<'_, '_, '_> {
+    fn channels_at(&mut self, t: f64, values: &mut [f64]) -> Result<(), SimulationError> {
+        let system = &mut *self.system;
+        if t == self.t_new {
+            // the step end: reuse its evaluation when the workspace holds it with the needed outputs
+            if !system.step_end.holds_evaluation(t, self.y_new) {
+                system.evaluate_sample(t, self.y_new)?;
+            } else if system.model.has_lubricated_joints() && !system.step_end.evaluated_detailed {
+                system.detail_films(t)?;
+            }
+            system.tracked_values(self.y_new, values);
+        } else {
+            let mut state = std::mem::take(&mut system.tracking.state);
+            (self.dense)(t, &mut state);
+            let evaluated = system.evaluate_sample(t, &state);
+            system.tracking.state = state;
+            evaluated?;
+            let sample = std::mem::take(&mut system.ws.sample);
+            system.tracked_values(&sample, values);
+            system.ws.sample = sample;
+        }
+        Ok(())
+    }
+
+    fn gaps_at(&mut self, t: f64, gaps: &mut [f64]) {
+        let system = &mut *self.system;
+        if t == self.t_new {
+            system.event_functions(t, self.y_new, gaps);
+        } else {
+            let mut state = std::mem::take(&mut system.tracking.state);
+            (self.dense)(t, &mut state);
+            system.event_functions(t, &state, gaps);
+            system.tracking.state = state;
+        }
+    }
+}
+
+impl MechanismSystem<'_> {
+    /// Observes an accepted step for the summary (see [`OdeSystem::observe_step`]).
+    fn track_step(&mut self, t_old: f64, t_new: f64, y: &[f64], dense: &mut dyn FnMut(f64, &mut [f64])) -> Result<(), SimulationError> {
+        let mut tracker = std::mem::take(&mut self.tracking.tracker);
+        let mut probe = SystemProbe { system: self, t_new, y_new: y, dense };
+        let mut observed = Ok(());
+        if tracker.t_start.is_nan() {
+            observed = tracker.begin(&mut probe, t_old);
+        }
+        if observed.is_ok() {
+            observed = tracker.observe(&mut probe, t_old, t_new);
+        }
+        self.tracking.tracker = tracker;
+        observed
+    }
+}
+
+/// Acceleration magnitude [m/s^2] of the point `local` [m] (body frame) of a
+/// moving body from an evaluated workspace: `|a_G + alpha perp(r) - omega^2 r|`.
+fn point_acceleration(ws: &Workspace, body: BodyIndex, local: Vec2) -> f64 {
+    let Some(c) = body.coordinate() else { return 0.0 };
+    let frame = &ws.frames[body.0];
+    let r = frame.rotate(local);
+    let a = ws.accelerations.as_slice();
+    let omega = frame.angular_velocity;
+    (Vec2::new(a[c], a[c + 1]) + perp(r) * a[c + 2] - r * (omega * omega)).norm()
 }

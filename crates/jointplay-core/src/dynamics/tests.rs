@@ -339,7 +339,7 @@ fn compile_reports_every_problem_with_its_location() {
 
 /// The Flores slider-crank with the dry clearance joint between rod and
 /// slider (Lankarani-Nikravesh, Ambrosio friction), crank at 5000 rpm.
-fn clearance_slider_crank() -> Model {
+pub(super) fn clearance_slider_crank() -> Model {
     let mut spec = slider_crank_spec_json();
     spec["gravity"] = serde_json::json!([0.0, -9.81]);
     spec["joints"][2] = serde_json::json!({

@@ -97,6 +97,12 @@ fn finish_step<S: OdeSystem, P: Stepper>(
     restart |= system.accept(t_stop, y)?;
     check_state(t_stop, y)?;
     grid.record_at_stop(system, t_stop, y)?;
+    // the step as a whole, for quantities tracked at every step
+    let mut dense = |t: f64, out: &mut [f64]| {
+        stepper.prepare_dense();
+        stepper.dense(t, out);
+    };
+    system.observe_step(t_old, t_stop, y, &mut dense)?;
     if event_time.is_none() && !events.g_old.is_empty() && y == stepper.y_new() {
         // the scan ended at this very state: its values start the next step
         events.carry_step_end_over();

@@ -100,6 +100,17 @@ pub trait OdeSystem {
     /// Records an output sample at time t (state from dense output or step end).
     /// Err aborts the run (e.g. Interrupted).
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError>;
+
+    /// Called once per accepted step, after `accept()` and the samples of the
+    /// step, with the step's interval [t_old, t_new] [s], the accepted state y at
+    /// t_new and the step's continuous extension: `dense(t, out)` writes the
+    /// state at any t in [t_old, t_new] into `out` (length `len()`).
+    ///
+    /// Lets the system track quantities at every step whatever the output
+    /// sampling (peaks, time in contact). The default does nothing.
+    fn observe_step(&mut self, _t_old: f64, _t_new: f64, _y: &[f64], _dense: &mut dyn FnMut(f64, &mut [f64])) -> Result<(), SimulationError> {
+        Ok(())
+    }
 }
 
 /// One method's step, as the shared driver sees it.

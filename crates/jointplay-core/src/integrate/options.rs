@@ -32,7 +32,9 @@ pub struct IntegratorOptions {
     /// Smallest step the controller may ask for before the run stops with
     /// `StepSizeUnderflow` [s].
     pub min_step: f64,
-    /// Largest number of attempted (accepted + rejected) steps.
+    /// Largest number of attempted (accepted + rejected) steps; the default
+    /// 10 000 000 stops a run whose steps have collapsed within minutes
+    /// instead of letting it run for hours.
     pub max_steps: usize,
     /// Spacing of output samples taken from the dense output [s]; `None`
     /// records every accepted step.

@@ -38,6 +38,15 @@ fn too_many_steps_reports_limit_and_time_reached() {
     }
 }
 
+#[test]
+fn too_many_steps_message_names_the_option_to_raise() {
+    let error = SimulationError::TooManySteps { time: 0.25, max_steps: 10_000_000 };
+    assert_eq!(
+        error.to_string(),
+        "the run exceeded max_steps = 10000000 attempted steps at t = 2.500000e-1 s; raise simulation.max_steps (or look for why the steps are so small)"
+    );
+}
+
 /// y' = -y whose rhs fails after t = 0.5 s.
 struct FailsLate {
     samples: usize,

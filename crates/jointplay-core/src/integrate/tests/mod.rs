@@ -4,6 +4,7 @@
 mod accuracy;
 mod errors;
 mod events;
+mod observe;
 mod outputs;
 mod projection;
 mod stiff;

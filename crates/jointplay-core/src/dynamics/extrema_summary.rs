@@ -1,0 +1,115 @@
+//! The summary a run returns: peaks of the force, moment, acceleration and
+//! pressure channels with their times, and the contact statistics of each
+//! clearance joint, as tracked at every accepted step by
+//! [`super::extrema::ExtremaTracker`].
+
+use super::extrema::ExtremaTracker;
+
+/// Units of the channels whose peak is tracked: forces, moments and
+/// torques, linear and angular accelerations, pressures.
+pub const PEAK_UNITS: [&str; 5] = ["N", "N m", "m/s^2", "rad/s^2", "Pa"];
+
+/// Whether a channel of this unit has its peak tracked.
+pub(crate) fn is_peak_unit(unit: &str) -> bool {
+    PEAK_UNITS.contains(&unit)
+}
+
+/// Peak |value| of one channel over a run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ChannelPeak {
+    /// Channel name `"<element>.<quantity>"`.
+    pub name: String,
+    /// SI unit of the channel.
+    pub unit: &'static str,
+    /// Largest |value| [unit].
+    pub peak: f64,
+    /// The signed value there [unit].
+    pub value: f64,
+    /// When it occurred [s].
+    pub time: f64,
+}
+
+/// Contact statistics of one clearance joint over a run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JointExtrema {
+    /// Name of the clearance joint.
+    pub name: String,
+    /// Contact onsets.
+    pub impacts: usize,
+    /// Time in contact (penetration > 0) [s].
+    pub contact_time: f64,
+    /// Time in contact over the time simulated [-].
+    pub contact_fraction: f64,
+    /// Deepest penetration [m] (0 when never in contact).
+    pub max_penetration: f64,
+    /// When it occurred [s] (NaN when never in contact).
+    pub max_penetration_time: f64,
+    /// Largest eccentricity ratio |e| / c [-], at the time of the largest gap.
+    pub max_eccentricity_ratio: f64,
+    /// Thinnest film c - |e| [m] (0 in contact); lubricated joints only.
+    pub min_film: Option<f64>,
+    /// When it occurred [s]; lubricated joints only.
+    pub min_film_time: Option<f64>,
+    /// Largest film pressure (gauge) [Pa] and when it occurred [s]; lubricated joints only.
+    pub peak_film_pressure: Option<(f64, f64)>,
+}
+
+/// Summary quantities of a run, from every accepted step and refined inside
+/// the steps on the dense output, whatever the output sampling.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Extrema {
+    /// Accepted steps observed.
+    pub steps: usize,
+    /// Start of the run [s].
+    pub t_start: f64,
+    /// End of the last accepted step [s].
+    pub t_end: f64,
+    /// Peaks of the channels with a unit in [`PEAK_UNITS`], in channel order.
+    pub channels: Vec<ChannelPeak>,
+    /// Peak acceleration magnitude of each named body point `"<body>.<point>"` [m/s^2]
+    /// (`value` is the magnitude too).
+    pub point_accelerations: Vec<ChannelPeak>,
+    /// Statistics of each clearance joint, in model order.
+    pub clearance_joints: Vec<JointExtrema>,
+}
+
+impl ExtremaTracker {
+    /// The summary: `names` and `units` of the tracked quantities (the first
+    /// `n_channels` channels, then point accelerations), then for each clearance
+    /// joint its name, impacts, whether it is lubricated and its clearance [m].
+    pub(crate) fn summary(&self, names: &[(String, &'static str)], n_channels: usize, joints: &[(String, usize, bool, f64)]) -> Extrema {
+        let duration = self.t_last - self.t_start;
+        let peaks = |range: std::ops::Range<usize>| -> Vec<ChannelPeak> {
+            names[range.clone()]
+                .iter()
+                .zip(&self.channels.peaks[range])
+                .filter(|(_, p)| !p.time.is_nan())
+                .map(|((name, unit), p)| ChannelPeak { name: name.clone(), unit, peak: p.score, value: p.value, time: p.time })
+                .collect()
+        };
+        let channels = peaks(0..n_channels);
+        let point_accelerations = peaks(n_channels..names.len());
+        let clearance_joints = joints
+            .iter()
+            .zip(self.gaps.peaks.iter().zip(&self.contact_time))
+            .map(|((name, impacts, lubricated, clearance), (gap, &contact_time))| {
+                // (a joint observed at no step at all has no extrema: NaN)
+                let observed = !gap.time.is_nan();
+                let touched = gap.score > 0.0;
+                JointExtrema {
+                    name: name.clone(),
+                    impacts: *impacts,
+                    contact_time,
+                    contact_fraction: if duration > 0.0 { contact_time / duration } else { 0.0 },
+                    max_penetration: if touched { gap.score } else { 0.0 },
+                    max_penetration_time: if touched { gap.time } else { f64::NAN },
+                    max_eccentricity_ratio: if observed { 1.0 + gap.score / clearance } else { f64::NAN },
+                    min_film: lubricated.then_some(if observed { (-gap.score).max(0.0) } else { f64::NAN }),
+                    min_film_time: lubricated.then_some(gap.time),
+                    peak_film_pressure: None,
+                }
+            })
+            .collect();
+        Extrema { steps: self.steps, t_start: self.t_start, t_end: self.t_last, channels, point_accelerations, clearance_joints }
+    }
+}
