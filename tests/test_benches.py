@@ -30,7 +30,8 @@ def test_dry_benchmark_runs_engine_baseline_and_practical_limit(capsys):
     assert "| jointplay dopri5 |" in out
     if with_limit:
         assert all(r["vs_limit_cpu"].n == 1 for r in rows)
-        assert f"| {bench.LIMIT_NAME} |" in out and "goal (issue 10), dopri5 at most 2.5x the practical limit, CPU" in out
+        assert f"| {bench.LIMIT_NAME} |" in out
+        assert "goal (issue 10), dopri5 at most 2.5x the practical limit, CPU" in out
     else:
         assert all(r["vs_limit_cpu"] is None for r in rows)
         assert f"{bench.LIMIT_NAME}: skipped, numba is not installed (pip install numba)" in out
