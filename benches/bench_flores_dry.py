@@ -116,6 +116,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
         print("\n| integrator | CPU time [ms] | wall time [ms] | steps | rhs evaluations | CPU time / evaluation [us] "
               "| impacts | speed-up vs baseline, CPU | speed-up, wall | time vs practical limit, CPU |")
         print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    width = max(len(r["name"]) for r in rows)
     for r in rows:
         per_eval = 1e6 * r["cpu"].median / r["rhs"]
         vs_limit = "-" if r["vs_limit_cpu"] is None else f"{r['vs_limit_cpu'].text(digits=3)}x"
@@ -125,7 +126,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
         if args.markdown:
             print("| " + " | ".join(cells) + " |")
         else:
-            print(f"{cells[0]:<34} CPU {cells[1]:>22} ms  wall {cells[2]:>22} ms {cells[3]:>6} steps {cells[4]:>7} rhs "
+            print(f"{cells[0]:<{width}} CPU {cells[1]:>22} ms  wall {cells[2]:>22} ms {cells[3]:>6} steps {cells[4]:>7} rhs "
                   f"{cells[5]:>6} us/rhs {cells[6]:>3} impacts  speed-up CPU {cells[7]}, wall {cells[8]}; "
                   f"vs limit CPU {cells[9]}")
     engine = rows[0]
