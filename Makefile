@@ -24,5 +24,7 @@ test: setup
 	cargo test --release --quiet
 	$(PY) -m pytest -q
 
+# numba (the `bench` extra) runs the practical-limit baseline; the benchmark skips it without numba.
 bench: setup
+	$(VENV)/bin/pip install --quiet "numba>=0.59"
 	$(PY) benches/bench_flores_dry.py

@@ -3,6 +3,7 @@ what docs/performance.md quotes. Timing is never asserted; only the structure
 and the step counts, which do not depend on the machine."""
 
 import importlib.util
+import sys
 from pathlib import Path
 
 import pytest
@@ -17,11 +18,36 @@ def load(name: str):
     return module
 
 
-def test_dry_benchmark_runs_engine_and_baseline(capsys):
-    rows = load("bench_flores_dry").main(["--repeats", "1", "--markdown"])
-    assert [r["name"] for r in rows] == ["jointplay dopri5", "jointplay adams", "SciPy solve_ivp RK45 (baseline)"]
+def test_dry_benchmark_runs_engine_baseline_and_practical_limit(capsys):
+    bench = load("bench_flores_dry")
+    rows = bench.main(["--repeats", "1", "--markdown"])
+    with_limit = importlib.util.find_spec("numba") is not None
+    assert [r["name"] for r in rows] == ["jointplay dopri5", "jointplay adams",
+                                         *([bench.LIMIT_NAME] if with_limit else []),
+                                         "SciPy solve_ivp RK45 (baseline)"]
     assert all(r["steps"] > 100 and r["rhs"] > r["steps"] and r["impacts"] > 0 for r in rows)
-    assert "| jointplay dopri5 |" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "| jointplay dopri5 |" in out
+    if with_limit:
+        assert all(r["vs_limit_cpu"].n == 1 for r in rows)
+        assert f"| {bench.LIMIT_NAME} |" in out
+        assert "goal (issue 10), dopri5 at most 2.5x the practical limit, CPU" in out
+    else:
+        assert all(r["vs_limit_cpu"] is None for r in rows)
+        assert f"{bench.LIMIT_NAME}: skipped, numba is not installed (pip install numba)" in out
+
+
+def test_dry_benchmark_runs_without_numba(capsys, monkeypatch):
+    # numba is optional: without it the limit row is skipped and the rest still runs
+    monkeypatch.setitem(sys.modules, "numba", None)  # import numba now raises ImportError
+    monkeypatch.delitem(sys.modules, "limit_slider_crank", raising=False)
+    bench = load("bench_flores_dry")
+    assert bench.limit is None
+    rows = bench.main(["--repeats", "1"])
+    assert [r["name"] for r in rows] == ["jointplay dopri5", "jointplay adams", "SciPy solve_ivp RK45 (baseline)"]
+    out = capsys.readouterr().out
+    assert f"{bench.LIMIT_NAME}: skipped, numba is not installed (pip install numba)" in out
+    assert "goal (issue 10), dopri5 at most 2.5x the practical limit: not measured" in out
 
 
 def test_lubricated_benchmark_reports_rows_errors_and_targets(capsys):
