@@ -95,3 +95,20 @@ fn cubic_declines_what_it_cannot_bracket_and_the_fallback_answers() {
     let far = film_end(&state(0.4, 1e300, 1e-300));
     assert!((far - PI).abs() < 1e-12, "huge squeeze over wedge: {far}");
 }
+
+#[test]
+fn newton_converges_in_a_few_iterations_over_25_decades() {
+    // the point of the cubic: a handful of polynomial evaluations, not 60 trigonometric ones
+    let mut worst = 0;
+    for eps in EPS {
+        for decade in -12..=12 {
+            for mantissa in [1.0, 2.0, 5.0] {
+                let x = mantissa * 10f64.powi(decade);
+                let (u, iterations) = root_in_bracket(eps, x).expect("bracket holds");
+                assert!(u >= 0.5 * x && u <= x, "eps {eps}, t {x}: u {u}");
+                worst = worst.max(iterations);
+            }
+        }
+    }
+    assert!(worst <= 8, "worst case {worst} Newton iterations");
+}
