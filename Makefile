@@ -7,6 +7,11 @@ PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 OUT ?= out/flores_dry
+# `maturin develop` installs into the active environment (VIRTUAL_ENV, or
+# CONDA_PREFIX of a conda environment), whatever it is: run it as if .venv
+# were the active one and no conda environment were, so that the extension
+# lands where $(PY) imports it.
+IN_VENV := env -u CONDA_PREFIX -u CONDA_DEFAULT_ENV VIRTUAL_ENV="$(abspath $(VENV))" PATH="$(abspath $(VENV))/bin:$$PATH"
 
 .PHONY: demo test setup bench
 
@@ -15,7 +20,7 @@ $(VENV)/bin/maturin:
 	$(PY) -m pip install --quiet --upgrade pip "maturin>=1.5,<2"
 
 setup: $(VENV)/bin/maturin
-	$(VENV)/bin/maturin develop --release --extras test --quiet
+	$(IN_VENV) $(VENV)/bin/maturin develop --release --extras test --quiet
 
 demo: setup
 	$(PY) examples/flores_slider_crank_dry.py --out $(OUT)

@@ -14,8 +14,26 @@ from . import functions, laws
 from ._core import __version__
 from .errors import ConvergenceError, JointplayError, JointplayWarning, ModelError, Problem, SimulationError
 from .model import Model
-from .modelfile import load, loads
-from .results import Results, open_results
+from .results import Results
+
+# Reading model files needs the unit registry and the schemas (pint, pydantic),
+# and results files need xarray: those load on first use, so that
+# `import jointplay` and `jointplay --help` stay fast.
+_LAZY = {"load": "modelfile", "loads": "modelfile", "open_results": "results"}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        from importlib import import_module
+
+        value = getattr(import_module(f".{_LAZY[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
 
 __all__ = [
     "ConvergenceError", "JointplayError", "JointplayWarning", "Model", "ModelError", "Problem", "Results",

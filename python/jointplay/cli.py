@@ -15,12 +15,10 @@ from typing import Annotated
 
 import typer
 from rich.console import Console
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from . import __version__
 from .errors import JointplayWarning, ModelError, SimulationError
-from .units import UnitError, to_si
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 
@@ -84,6 +82,8 @@ def _load(model: Path, overrides: list[str]):
 def _open(path: Path):
     from .results import open_results
 
+    if path.is_dir():
+        raise _bad_input(f"{path}: is a folder, not a results file", [])
     if not path.is_file():
         raise _bad_input(f"{path}: no such results file", [])
     try:
@@ -92,9 +92,36 @@ def _open(path: Path):
         raise _bad_input(f"{path}: not a jointplay results file ({type(exc).__name__}: {exc})", []) from None
 
 
+def _figure_folder(option: str, folder: Path) -> Path:
+    """``folder`` created if needed; exit 2 when it is a file or cannot be created or written."""
+    import os
+
+    if folder.exists() and not folder.is_dir():
+        raise _bad_input(f"{option} {folder}: is a file, not a folder (figures are written into a folder)", [])
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise _bad_input(f"{option} {folder}: cannot create the folder ({exc.strerror or exc})", []) from None
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise _bad_input(f"{option} {folder}: cannot write into the folder (permission denied)", [])
+    return folder
+
+
+def _crank_check(crank: str | None, runs: list, paths: list[Path]) -> None:
+    """Exit 2 unless every run recorded the angle of body ``crank``."""
+    if crank is None:
+        return
+    for run, path in zip(runs, paths):
+        if f"{crank}.angle" not in run:
+            bodies = sorted(n[: -len(".angle")] for n in run.channels if n.endswith(".angle"))
+            raise _bad_input(f"--crank: no body {crank!r} in {path} (bodies: {', '.join(bodies) or 'none'})", [])
+
+
 def _time_option(text: str | None, option: str) -> float | None:
     if text is None:
         return None
+    from .units import UnitError, to_si
+
     try:
         value = to_si(text, "time")
     except UnitError as exc:
@@ -250,6 +277,8 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
     output = output or Path(f"{model.stem}.nc")
     if not output.parent.is_dir():
         raise _bad_input(f"-o {output}: no folder {output.parent}", [])
+    if output.is_dir():
+        raise _bad_input(f"-o {output}: is a folder, not a results file (give a file name such as run.nc)", [])
     try:
         with _printed_warnings():
             results = _simulate(m, end, options, quiet)
@@ -284,6 +313,8 @@ def _save(results, output: Path) -> None:
 def _simulate(m, end: float, options: dict, quiet: bool):
     if quiet:
         return m.simulate(end, **options)
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
     t0 = options.get("t0", 0.0)
     columns = [TextColumn("simulating"), BarColumn(), TextColumn("t = {task.fields[t]} / {task.fields[end]} ms"),
                TimeElapsedColumn()]
@@ -382,13 +413,14 @@ def plot(results: Annotated[Path, typer.Argument(help="Results file written by `
 
     fmt = _check_format(fmt)
     r = _open(results)
-    output = output or results.with_name(f"{results.stem}_figures")
-    if crank is not None and f"{crank}.angle" not in r:
-        raise _bad_input(f"--crank: no body {crank!r} in {results}", [])
+    _crank_check(crank, [r], [results])
+    output = _figure_folder("-o", output or results.with_name(f"{results.stem}_figures"))
     try:
         paths = standard_figures(r, output, crank=crank, fmt=fmt, channels=channel or None)
     except KeyError as exc:
         raise _bad_input(f"--channel: {exc.args[0]}", []) from None
+    except OSError as exc:
+        raise _bad_input(f"-o {output}: cannot write the figures ({exc.strerror or exc})", []) from None
     for path in paths:
         out.print(f"wrote {path}")
     if not paths:
@@ -417,11 +449,21 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
     if label and len(label) != len(results):
         raise _bad_input(f"--label: give one label per results file ({len(results)}), got {len(label)}", [])
     labels = label or [p.stem for p in results]
+    _crank_check(crank, runs, results)
     names = channel or default_compare_channels(runs)
+    for name in names:
+        if not any(name in run for run in runs):
+            try:
+                runs[0][name]
+            except KeyError as exc:  # with a did-you-mean hint
+                raise _bad_input(f"--channel: {exc.args[0]}", []) from None
+    output = _figure_folder("-o", output)
     try:
         paths = compare_figures(runs, labels, output, channels=names, fmt=fmt, crank=crank)
     except KeyError as exc:
         raise _bad_input(f"--channel: {exc.args[0]}", []) from None
+    except OSError as exc:
+        raise _bad_input(f"-o {output}: cannot write the figures ({exc.strerror or exc})", []) from None
     table = Table("channel", "unit", *labels, title="peak |value|")
     for row in peak_table(runs, names):
         table.add_row(*row)

@@ -11,6 +11,7 @@ docs/theory/steady-bearing.md). Options with units are read by
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated
@@ -19,8 +20,8 @@ import typer
 from rich.table import Table
 
 from . import bearing as _bearing
+from ._core import MAX_REYNOLDS_GRID_NODES
 from .cli import EXIT_BAD_INPUT, app, err, out
-from .units import UnitError, to_si
 
 HELP = """Steady operating point of a full (360 degree) journal bearing, and its design chart.
 
@@ -73,6 +74,8 @@ def _quantity(option: str, text: str | None, kind: str, problems: list[str]) -> 
     """``text`` in SI units, or None; a problem is recorded for a bad or non-positive value."""
     if text is None:
         return None
+    from .units import UnitError, to_si
+
     try:
         value = to_si(text, kind)
     except UnitError as exc:
@@ -109,6 +112,11 @@ def _grid(text: str, problems: list[str]) -> tuple[int, int]:
         problems.append(f"--grid: must be N_CIRCUMFERENTIAL x N_AXIAL with N_CIRCUMFERENTIAL >= 8 and N_AXIAL even "
                         f">= 2, e.g. 120x16, got {text!r}")
         return 120, 16
+    nodes = n_t * (n_a // 2 + 1)
+    if nodes > MAX_REYNOLDS_GRID_NODES:
+        problems.append(f"--grid: {n_t}x{n_a} has {nodes} nodes on the half length, more than the limit of "
+                        f"{MAX_REYNOLDS_GRID_NODES} (N_CIRCUMFERENTIAL x (N_AXIAL/2 + 1)), got {text!r}")
+        return 120, 16
     return n_t, n_a
 
 
@@ -119,6 +127,10 @@ def _figure(option: str, path: Path | None, problems: list[str]) -> None:
         problems.append(f"{option}: the file name must end in {', '.join(_FIGURE_SUFFIXES)}, got {str(path)!r}")
     elif not path.parent.is_dir():
         problems.append(f"{option}: no folder {path.parent}")
+    elif path.is_dir():
+        problems.append(f"{option}: {path} is a folder, not a figure file")
+    elif not os.access(path.parent, os.W_OK | os.X_OK):
+        problems.append(f"{option}: cannot write into the folder {path.parent} (permission denied)")
 
 
 def _read(l_over_d, eccentricity, load, radius, diameter, clearance, viscosity, speed, grid, chart,

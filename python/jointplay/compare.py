@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .plots import FORMATS, _figure, _save, clearance_joints, crank_angle_deg, default_channels
+from .plots import FORMATS, _figure, _save, clearance_joints, crank_angle_deg, default_channels, figure_folder
 from .results import PEAK_UNITS, Results
 
 
@@ -37,7 +37,7 @@ def overlay(runs: Sequence[Results], labels: Sequence[str], channel: str, path: 
         if channel not in run:
             continue
         unit = run.unit(channel)
-        x = crank_angle_deg(run, crank) if crank and f"{crank}.angle" in run else run.time * 1e3
+        x = crank_angle_deg(run, crank) if crank else run.time * 1e3
         ax.plot(x, run[channel], lw=0.8, label=label)
     ax.set_xlabel(f"crank angle ({crank}.angle) [deg]" if crank else "time [ms]")
     ax.set_ylabel(f"{channel} [{unit}]")
@@ -56,8 +56,11 @@ def compare_figures(runs: Sequence[Results], labels: Sequence[str], out_dir, cha
     for name in names:
         if not any(name in run for run in runs):
             runs[0][name]  # KeyError with a did-you-mean hint
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    if crank is not None:
+        for k, run in enumerate(runs):
+            if f"{crank}.angle" not in run:
+                raise ValueError(f"crank: run {k} ({labels[k]}) has no body {crank!r} (no channel {crank}.angle)")
+    out = figure_folder(out_dir)
     return [overlay(runs, labels, name, out / f"compare_{name.replace('.', '_')}.{fmt}", crank) for name in names]
 
 

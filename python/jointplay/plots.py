@@ -36,6 +36,15 @@ def _save(fig: Figure, path: Path) -> Path:
     return path
 
 
+def figure_folder(out_dir) -> Path:
+    """``out_dir`` as a folder, created if needed; ``NotADirectoryError`` when it is a file."""
+    out = Path(out_dir)
+    if out.exists() and not out.is_dir():
+        raise NotADirectoryError(f"{out} is a file; figures are written into a folder")
+    out.mkdir(parents=True, exist_ok=True)
+    return out
+
+
 def clearance_joints(results: Results) -> list[str]:
     """Names of the clearance joints recorded in ``results``."""
     return [n.rsplit(".", 1)[0] for n in results.channels if n.endswith(".contact")]
@@ -143,8 +152,7 @@ def standard_figures(results: Results, out_dir, crank: str | None = None, fmt: s
     """
     if fmt not in FORMATS:
         raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    out = figure_folder(out_dir)
     if results.time.size == 0:
         return []
     names = list(channels) if channels else default_channels(results)

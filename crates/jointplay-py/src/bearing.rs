@@ -2,7 +2,7 @@
 //! outputs) and the steady Raimondi-Boyd analysis. Arguments are plain SI
 //! numbers; errors come back as `ValueError` with the core's message.
 
-use jointplay_core::lubrication::reynolds::{Cavitation, Groove, ReynoldsOptions, ReynoldsSolver};
+use jointplay_core::lubrication::reynolds::{Cavitation, Groove, ReynoldsOptions, ReynoldsSolver, MAX_GRID_NODES, MAX_TABLE_NODES};
 use jointplay_core::lubrication::steady::{self, SteadyBearing};
 use jointplay_core::lubrication::{BearingGeometry, FilmKinematics};
 use numpy::PyArray1;
@@ -11,6 +11,14 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::guarded;
+
+/// Module constants: the size bounds of the core, so that Python checks its
+/// options against the same numbers.
+pub fn add_constants(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("MAX_REYNOLDS_GRID_NODES", MAX_GRID_NODES)?;
+    m.add("MAX_FORCE_TABLE_NODES", MAX_TABLE_NODES)?;
+    Ok(())
+}
 
 /// Solver options from the Python arguments.
 fn options(n_circumferential: usize, n_axial: usize, cavitation: &str, tolerance: f64, max_iterations: usize) -> PyResult<ReynoldsOptions> {

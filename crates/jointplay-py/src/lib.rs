@@ -152,6 +152,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(compile_model, m)?)?;
     m.add_function(wrap_pyfunction!(bearing::reynolds_solve, m)?)?;
     m.add_function(wrap_pyfunction!(bearing::steady_bearing, m)?)?;
+    bearing::add_constants(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

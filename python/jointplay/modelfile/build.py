@@ -14,6 +14,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from .._core import MAX_REYNOLDS_GRID_NODES
 from ..errors import ModelError, Problem
 from ..units import DECLARABLE, UnitError, declare_unit, model_file_units
 from . import schema as s
@@ -297,6 +298,9 @@ class Builder:
             return (None, None)
         if (isinstance(raw, list) and len(raw) == 2 and all(isinstance(n, int) and not isinstance(n, bool) and n >= 4
                                                             for n in raw)):
+            if max(raw) > MAX_REYNOLDS_GRID_NODES:  # the core checks the node count; this keeps the counts in range
+                self.problem(where, f"a grid has at most {MAX_REYNOLDS_GRID_NODES} nodes, got {raw!r}")
+                return False
             return (raw[0], raw[1])
         self.problem(where, f"must be [cells around, cells along the axis], whole numbers >= 4, got {raw!r}")
         return False

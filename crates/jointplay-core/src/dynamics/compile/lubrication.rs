@@ -92,6 +92,11 @@ fn reynolds_options(spec: &ReynoldsSpec, loc: &str, errors: &mut ModelErrors) ->
         );
         return None;
     }
+    // the grid first, at its key in the model file, before a solver allocates it
+    if let Err(message) = options.validate_grid() {
+        errors.push(format!("{loc}.grid"), message);
+        return None;
+    }
     match options.validate() {
         Ok(()) => Some(options),
         Err(message) => {

@@ -16,10 +16,10 @@ pub mod solver;
 pub mod sweep;
 pub mod table;
 
-pub use options::{Cavitation, Groove, ReynoldsOptions};
+pub use options::{Cavitation, Groove, ReynoldsOptions, MAX_GRID_NODES};
 pub use outputs::FilmSolution;
 pub use solver::ReynoldsSolver;
-pub use table::{ForceTable, ForceTableOptions};
+pub use table::{ForceTable, ForceTableOptions, MAX_TABLE_NODES};
 
 #[cfg(test)]
 mod tests;

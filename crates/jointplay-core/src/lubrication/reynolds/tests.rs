@@ -176,3 +176,33 @@ fn force_table_matches_the_exact_solver() {
     assert!(worst < 0.005, "largest relative force error {worst}");
 }
 
+
+/// A grid past [`MAX_GRID_NODES`] is refused with its size before anything is
+/// allocated (100 000 x 100 000 would need 120 GB and abort the process).
+#[test]
+fn oversized_grid_is_refused_before_allocating() {
+    let o = ReynoldsOptions { n_circumferential: 100_000, n_axial: 100_000, ..Default::default() };
+    let message = ReynoldsSolver::new(geometry(1.0), o).unwrap_err();
+    assert_eq!(
+        message,
+        "grid 100000 x 100000 has 5000100000 nodes on the half length, more than the limit of 1000000 \
+         (n_circumferential x (n_axial/2 + 1); solver memory and time grow with it)"
+    );
+    // the product saturates instead of overflowing
+    let huge = ReynoldsOptions { n_circumferential: usize::MAX, n_axial: usize::MAX - 1, ..Default::default() };
+    assert!(huge.validate_grid().unwrap_err().contains(&format!("{} nodes", usize::MAX)));
+    // the bound itself is accepted: 2000 x (998/2 + 1) = 1 000 000 nodes
+    let at_bound = ReynoldsOptions { n_circumferential: 2000, n_axial: 998, ..Default::default() };
+    assert_eq!(at_bound.validate_grid(), Ok(()));
+    let past = ReynoldsOptions { n_axial: 1000, ..at_bound };
+    assert!(past.validate_grid().is_err());
+}
+
+#[test]
+fn oversized_force_table_is_refused_before_solving() {
+    let o = ForceTableOptions { n_eccentricity: 1000, n_angle: 1000, ..Default::default() };
+    let message = ForceTable::build(1.0, &o).unwrap_err();
+    assert_eq!(message, "force table 1000 x 1000 has 1000000 nodes, more than the limit of 65536 (one Reynolds solve each)");
+    let grid = ForceTableOptions { solver: ReynoldsOptions { n_circumferential: 1 << 20, ..Default::default() }, ..Default::default() };
+    assert!(ForceTable::build(1.0, &grid).unwrap_err().starts_with("grid 1048576 x 16 has"));
+}
