@@ -123,6 +123,9 @@ def test_ctrl_c_stops_a_run_and_keeps_what_was_computed():
 
     model = flores.build_model()
     t_end = flores.revolutions_to_time(2000.0)  # minutes if it were not interrupted
+    # a process started with SIGINT ignored (a background job) would not see the signal: install
+    # Python's own handler, as an interactive session has it, for the duration of the test
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
     timer.start()
     try:
@@ -130,6 +133,7 @@ def test_ctrl_c_stops_a_run_and_keeps_what_was_computed():
             model.simulate(t_end)
     finally:
         timer.cancel()
+        signal.signal(signal.SIGINT, previous)
     error = caught.value
     assert error.kind == "Interrupted"
     assert 0.0 < error.time < t_end
