@@ -2,7 +2,7 @@
 //! contact-onset events, latching of the onset velocity, drift projection
 //! after each accepted step, and recording of the channels.
 
-use super::channels::Trajectory;
+use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
 use super::frame::Frame;
 use super::projection::{project_positions, project_velocities};
@@ -222,7 +222,7 @@ impl OdeSystem for MechanismSystem<'_> {
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         if self.step_end.holds_evaluation(t, y) && !self.model.has_lubricated_joints() {
             // the step end the integrator just evaluated (and projected): record its evaluation
-            self.trajectory.push(self.model, t, y, self.ws);
+            self.trajectory.push(self.model, t, y, self.ws)?;
         } else {
             self.evaluate_and_push(t, y)?;
         }
@@ -254,7 +254,7 @@ impl MechanismSystem<'_> {
             self.ws.detailed = false;
         }
         if evaluated.is_ok() {
-            self.trajectory.push(self.model, t, &sample, self.ws);
+            evaluated = self.trajectory.push(self.model, t, &sample, self.ws);
             self.step_end.remember_evaluation(t, &sample);
         }
         self.ws.sample = sample;
