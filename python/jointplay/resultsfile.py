@@ -36,6 +36,9 @@ DEFAULT_MAX_MEMORY_BYTES = 1024**3
 LAYOUT = "jointplay-netcdf4-v2"
 #: Samples per HDF5 chunk of a channel (32 KiB of float64).
 CHUNK_SAMPLES = 4096
+#: HDF5 chunk cache of each channel while writing [bytes]: two chunks, so that the memory of a streamed
+#: run stays bounded (the default cache of 1 MiB per dataset ends up holding the whole file until closed).
+_CHUNK_CACHE_BYTES = 2 * CHUNK_SAMPLES * 8
 #: Scratch dataset holding the times while a run streams (``time`` is written at the end).
 _STREAMED_TIME = "_streamed_time"
 
@@ -105,7 +108,8 @@ class ResultsWriter:
         self.names = list(names)
         self.temporary = temporary_path(self.path)
         self.samples = 0
-        self._file = h5py.File(self.temporary, "w", track_order=True, libver=("earliest", "latest"))
+        self._file = h5py.File(self.temporary, "w", track_order=True, libver=("earliest", "latest"),
+                               rdcc_nbytes=_CHUNK_CACHE_BYTES)
         self._time = self._resizable(_STREAMED_TIME)
         self._channels = []
         for name, unit, description in zip(self.names, units, descriptions):

@@ -222,9 +222,12 @@ mod tests {
     use super::*;
     use std::sync::{Arc, Mutex};
 
-    /// Records every chunk it receives: (times, rows).
+    /// One chunk as a sink received it: (times, rows).
+    type Chunk = (Vec<f64>, Vec<f64>);
+
+    /// Records every chunk it receives.
     #[derive(Clone, Default)]
-    struct Recorder(Arc<Mutex<Vec<(Vec<f64>, Vec<f64>)>>>);
+    struct Recorder(Arc<Mutex<Vec<Chunk>>>);
 
     impl SampleSink for Recorder {
         fn write_chunk(&mut self, times: &[f64], rows: &[f64]) -> Result<(), String> {

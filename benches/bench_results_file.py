@@ -1,0 +1,116 @@
+"""Benchmark: writing and reading results files, and the memory of a long run.
+
+1. Writing a synthetic results set of N channels x S samples with
+   ``Results.save`` (h5py, NetCDF-4 layout, dimension lists written once)
+   against the writer it replaced (``to_xarray().to_netcdf(engine="h5netcdf")``),
+   interleaved, for several channel counts: the old writer grows roughly with
+   the square of the channel count, the new one linearly. Reading back with
+   ``open_results`` (channels on access) is timed too.
+2. Peak memory (max RSS) of the dry Flores slider-crank sampled every 1 us,
+   kept in memory against streamed to a file, each in a fresh process.
+
+Prints medians of the repeats with the spread (min-max). Absolute times drift on
+shared machines; the ratio is what is reported.
+
+Run: python benches/bench_results_file.py [--repeats N] [--samples S] [--channels 250,500,1000]
+     [--baseline-max 500] [--t-end 0.2]
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from jointplay.results import Results, open_results
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def synthetic(n_channels: int, n_samples: int) -> Results:
+    rng = np.random.default_rng(1)
+    names = [f"body{k}.x" for k in range(n_channels)]
+    return Results(np.linspace(0, 1, n_samples), names, ["m"] * n_channels, ["position x"] * n_channels,
+                   rng.standard_normal((n_channels, n_samples)), {"accepted_steps": 1}, {"impacts": []},
+                   spec={"name": "synthetic"})
+
+
+def timed(f) -> float:
+    started = time.perf_counter()
+    f()
+    return time.perf_counter() - started
+
+
+def write_times(n_channels: int, n_samples: int, repeats: int, baseline: bool, folder: Path) -> dict[str, list[float]]:
+    """Interleaved wall times [s] of the new writer, the old one (if asked) and reading back."""
+    results = synthetic(n_channels, n_samples)
+    times: dict[str, list[float]] = {"save": [], "open_results + read all": []}
+    if baseline:
+        times["xarray to_netcdf (before)"] = []
+    for k in range(repeats):
+        path = folder / f"new{n_channels}-{k}.nc"
+        times["save"].append(timed(lambda: results.save(path)))
+
+        def read_all():
+            r = open_results(path)
+            for name in r.channels:
+                r[name]
+
+        times["open_results + read all"].append(timed(read_all))
+        if baseline:
+            old = folder / f"old{n_channels}-{k}.nc"
+            times["xarray to_netcdf (before)"].append(timed(lambda: results.to_xarray().to_netcdf(old, engine="h5netcdf")))
+    return times
+
+
+PEAK = """
+import resource, sys, jointplay as jp
+m = jp.load(sys.argv[1])
+out = sys.argv[3] if len(sys.argv) > 3 else None
+r = m.simulate(float(sys.argv[2]), output_step=1e-6, output_file=out)
+print(len(r), resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)
+"""
+
+
+def peak_memory(t_end: float, folder: Path) -> list[tuple[str, int, float]]:
+    """(case, samples, max RSS [MiB]) of the dry example at 1 us, in memory and streamed."""
+    model = str(ROOT / "examples" / "flores_slider_crank_dry.toml")
+    rows = []
+    for case, extra in (("in memory", []), ("streamed to .nc", [str(folder / "long.nc")])):
+        printed = subprocess.run([sys.executable, "-c", PEAK, model, str(t_end), *extra], check=True,
+                                 capture_output=True, text=True).stdout.split()
+        rows.append((case, int(printed[0]), float(printed[1])))
+    return rows
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--samples", type=int, default=3000)
+    parser.add_argument("--channels", default="250,500,1000")
+    parser.add_argument("--baseline-max", type=int, default=500, help="largest channel count for the old writer")
+    parser.add_argument("--t-end", type=float, default=0.2, help="simulated time of the memory case [s]")
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as folder:
+        print(f"write/read, {args.samples} samples, median [min-max] of {args.repeats} interleaved repeats")
+        print(f"{'channels':>8}  {'writer':<28} {'median s':>9}  spread")
+        for n in (int(c) for c in args.channels.split(",")):
+            times = write_times(n, args.samples, args.repeats, n <= args.baseline_max, Path(folder))
+            for name, values in times.items():
+                print(f"{n:>8}  {name:<28} {statistics.median(values):>9.3f}  [{min(values):.3f}-{max(values):.3f}]")
+            if len(times) == 3:
+                ratio = statistics.median(times["xarray to_netcdf (before)"]) / statistics.median(times["save"])
+                print(f"{'':>8}  {'speed-up of save':<28} {ratio:>9.1f}")
+        print(f"\npeak memory, dry slider-crank sampled every 1 us for {args.t_end} s")
+        for case, samples, rss in peak_memory(args.t_end, Path(folder)):
+            print(f"  {case:<16} {samples:>9} samples  max RSS {rss:8.1f} MiB")
+
+
+if __name__ == "__main__":
+    main()
