@@ -135,6 +135,27 @@ def test_streamed_run_equals_the_run_in_memory_over_several_chunks(tmp_path, dry
     assert leftovers(tmp_path) == []
 
 
+MEMORY = """
+import resource, sys, jointplay as jp
+m = jp.load(sys.argv[1])
+m.simulate(1e-3)
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+r = m.simulate(0.25, output_step=1e-6, output_file=sys.argv[2])
+print(len(r), (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - before) / 1024)
+"""
+
+
+def test_streamed_run_keeps_its_memory_bounded(tmp_path):
+    # 250001 samples x 53 channels = 106 MB of samples: a streamed run holds a few chunks of them
+    import subprocess
+    import sys
+
+    printed = subprocess.run([sys.executable, "-c", MEMORY, str(DRY), str(tmp_path / "long.nc")], check=True,
+                             capture_output=True, text=True).stdout.split()
+    assert int(printed[0]) == 250001
+    assert float(printed[1]) < 40, f"peak memory grew by {printed[1]} MiB"
+
+
 def test_sink_receives_chunks_bounded_by_the_core(dry_model):
     chunks = []
     core = dry_model.compile()
