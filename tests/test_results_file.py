@@ -62,6 +62,18 @@ def test_thousand_channels_round_trip_through_xarray_and_open_results(tmp_path):
     assert back.diagnostics == {"impacts": []}
 
 
+def test_a_slash_in_a_channel_name_is_escaped_in_the_file(tmp_path):
+    results = synthetic(2, 5)
+    results._names = ["arm/left.x", "arm/left.y"]
+    results._index = {"arm/left.x": 0, "arm/left.y": 1}
+    path = results.save(tmp_path / "slash.nc")
+    with h5py.File(path) as f:
+        assert sorted(f) == ["arm%2Fleft.x", "arm%2Fleft.y", "time"]
+    back = open_results(path)
+    assert back.channels == ["arm/left.x", "arm/left.y"]
+    np.testing.assert_array_equal(back["arm/left.y"], results["arm/left.y"])
+
+
 def test_channels_are_compressed_in_chunks(tmp_path):
     path = synthetic(3, 20000).save(tmp_path / "c.nc")
     with h5py.File(path) as f:

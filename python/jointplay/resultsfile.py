@@ -113,7 +113,9 @@ class ResultsWriter:
         self._time = self._resizable(_STREAMED_TIME)
         self._channels = []
         for name, unit, description in zip(self.names, units, descriptions):
-            dataset = self._resizable(name)
+            dataset = self._resizable(variable_name(name))
+            if variable_name(name) != name:
+                dataset.attrs["channel"] = name
             dataset.attrs["units"] = unit
             dataset.attrs["long_name"] = description or name
             dataset.attrs["description"] = description
@@ -194,6 +196,12 @@ class ResultsWriter:
             self._time.attrs.create("REFERENCE_LIST", references)
 
 
+def variable_name(channel: str) -> str:
+    """The file's name of a channel: ``/`` (a group separator in HDF5) becomes ``%2F``; the channel's
+    own name is then kept in the variable's ``channel`` attribute."""
+    return channel.replace("/", "%2F")
+
+
 def _attribute(value: Any):
     """A value HDF5 stores as a NetCDF attribute (lists as arrays, an empty list as an empty int array)."""
     if isinstance(value, (list, tuple, np.ndarray)):
@@ -214,14 +222,15 @@ class FileChannels:
         import h5py
 
         with h5py.File(self.path, "r") as f:
-            return np.asarray(f[self.names[k]][()], dtype=float)
+            return np.asarray(f[variable_name(self.names[k])][()], dtype=float)
 
     def block(self, start: int, stop: int) -> np.ndarray:
         """Values of every channel for samples ``start:stop``, shape (channels, samples)."""
         import h5py
 
         with h5py.File(self.path, "r") as f:
-            return np.array([f[name][start:stop] for name in self.names], dtype=float).reshape(len(self.names), -1)
+            return np.array([f[variable_name(name)][start:stop] for name in self.names],
+                            dtype=float).reshape(len(self.names), -1)
 
 
 def is_streamed_layout(path: str | os.PathLike) -> bool:
@@ -239,9 +248,10 @@ def read_file(path: str | os.PathLike) -> tuple[np.ndarray, list[str], list[str]
 
     with h5py.File(path, "r") as f:
         time = np.asarray(f["time"][()], dtype=float)
-        names = [name for name in f if name != "time"]
-        units = [_text(f[name].attrs.get("units", "")) for name in names]
-        descriptions = [_text(f[name].attrs.get("description", "")) for name in names]
+        variables = [name for name in f if name != "time"]
+        names = [_text(f[name].attrs.get("channel", name)) for name in variables]
+        units = [_text(f[name].attrs.get("units", "")) for name in variables]
+        descriptions = [_text(f[name].attrs.get("description", "")) for name in variables]
         attrs = {key: _plain(value) for key, value in f.attrs.items()}
     return time, names, units, descriptions, attrs
 
