@@ -6,7 +6,7 @@
    interleaved, for several channel counts: the old writer grows roughly with
    the square of the channel count, the new one linearly. Reading back with
    ``open_results`` (channels on access) is timed too.
-2. Peak memory (max RSS) of the dry Flores slider-crank sampled every 1 us,
+2. Peak memory (VmHWM, Linux) of the dry Flores slider-crank sampled every 1 us,
    kept in memory against streamed to a file, each in a fresh process.
 
 Prints medians of the repeats with the spread (min-max). Absolute times drift on
@@ -69,12 +69,14 @@ def write_times(n_channels: int, n_samples: int, repeats: int, baseline: bool, f
     return times
 
 
+# VmHWM (peak resident memory of this process image [kB]); ru_maxrss would carry the parent's over exec
 PEAK = """
-import resource, sys, jointplay as jp
+import sys, jointplay as jp
 m = jp.load(sys.argv[1])
 out = sys.argv[3] if len(sys.argv) > 3 else None
 r = m.simulate(float(sys.argv[2]), output_step=1e-6, output_file=out)
-print(len(r), resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)
+peak = next(line for line in open("/proc/self/status") if line.startswith("VmHWM"))
+print(len(r), int(peak.split()[1]) / 1024)
 """
 
 
