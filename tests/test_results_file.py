@@ -248,6 +248,15 @@ def test_two_writers_of_one_path_leave_one_complete_result(tmp_path):
     assert leftovers(tmp_path) == []
 
 
+def test_run_stopped_before_its_first_sample_gives_an_empty_partial_file(tmp_path):
+    writer = ResultsWriter(tmp_path / "out.nc", ["a.x"], ["m"], ["x"])
+    path = writer.finish({"completed": 0, "jointplay_layout": resultsfile.LAYOUT}, complete=False)
+    assert path == tmp_path / "out.partial.nc"
+    assert len(open_results(path)) == 0 and open_results(path)["a.x"].size == 0
+    with xr.open_dataset(path, engine="h5netcdf") as ds:
+        assert ds.sizes["time"] == 0 and ds["a.x"].dims == ("time",)
+
+
 def test_aborted_writer_removes_its_temporary_only(tmp_path):
     path, before = good_file(tmp_path)
     writer = ResultsWriter(path, ["a.x"], ["m"], ["x"])

@@ -167,8 +167,9 @@ class ResultsWriter:
     def _write_time(self) -> None:
         """The coordinate ``time`` as a fixed-size dimension (an unlimited one makes readers slow)."""
         n = self.samples
-        time = self._file.create_dataset("time", shape=(n,), dtype="f8", chunks=(min(max(n, 1), CHUNK_SAMPLES),),
-                                         compression="gzip", compression_opts=1, shuffle=True)
+        packed = {"chunks": (min(n, CHUNK_SAMPLES),), "compression": "gzip", "compression_opts": 1,
+                  "shuffle": True} if n else {}  # (no chunks in an empty dataset)
+        time = self._file.create_dataset("time", shape=(n,), dtype="f8", **packed)
         for start in range(0, n, 16 * CHUNK_SAMPLES):
             stop = min(n, start + 16 * CHUNK_SAMPLES)
             time[start:stop] = self._time[start:stop]
