@@ -6,14 +6,16 @@
    interleaved, for several channel counts: the old writer grows roughly with
    the square of the channel count, the new one linearly. Reading back with
    ``open_results`` (channels on access) is timed too.
-2. Peak memory (VmHWM, Linux) of the dry Flores slider-crank sampled every 1 us,
+2. A hanging chain of B bodies (9 channels per body, 4 per joint): a run of
+   a few samples streamed to a file, and the same results saved again.
+3. Peak memory (VmHWM, Linux) of the dry Flores slider-crank sampled every 1 us,
    kept in memory against streamed to a file, each in a fresh process.
 
 Prints medians of the repeats with the spread (min-max). Absolute times drift on
 shared machines; the ratio is what is reported.
 
 Run: python benches/bench_results_file.py [--repeats N] [--samples S] [--channels 250,500,1000]
-     [--baseline-max 500] [--t-end 0.2]
+     [--baseline-max 500] [--t-end 0.2] [--bodies 1000]
 """
 
 from __future__ import annotations
@@ -39,6 +41,33 @@ def synthetic(n_channels: int, n_samples: int) -> Results:
     return Results(np.linspace(0, 1, n_samples), names, ["m"] * n_channels, ["position x"] * n_channels,
                    rng.standard_normal((n_channels, n_samples)), {"accepted_steps": 1}, {"impacts": []},
                    spec={"name": "synthetic"})
+
+
+def chain(n_bodies: int):
+    """A chain of bars 0.1 m long hanging from a pin, each pinned to the next."""
+    import jointplay as jp
+
+    m = jp.Model("chain", gravity=(0.0, -9.81))
+    m.add_ground_point("O", (0.0, 0.0))
+    previous = "ground.O"
+    for k in range(n_bodies):
+        m.add_body(f"bar{k}", 0.1, 1e-4, position=(0.1 * k + 0.05, 0.0), points={"a": (-0.05, 0.0), "b": (0.05, 0.0)})
+        m.add_revolute(f"pin{k}", previous, f"bar{k}.a")
+        previous = f"bar{k}.b"
+    return m
+
+
+def chain_times(n_bodies: int, repeats: int, folder: Path) -> tuple[int, int, list[float], list[float]]:
+    """(channels, samples, wall times of a streamed run, of saving its results again) [s]."""
+    model = chain(n_bodies)
+    model.compile()
+    runs, saves, results = [], [], None
+    for k in range(repeats):
+        started = time.perf_counter()
+        results = model.simulate(1e-3, output_step=1e-4, output_file=folder / f"chain-{k}.nc")
+        runs.append(time.perf_counter() - started)
+        saves.append(timed(lambda: results.save(folder / f"chain-copy-{k}.nc")))
+    return len(results.channels), len(results), runs, saves
 
 
 def timed(f) -> float:
@@ -98,6 +127,7 @@ def main() -> None:
     parser.add_argument("--channels", default="250,500,1000")
     parser.add_argument("--baseline-max", type=int, default=500, help="largest channel count for the old writer")
     parser.add_argument("--t-end", type=float, default=0.2, help="simulated time of the memory case [s]")
+    parser.add_argument("--bodies", type=int, default=1000, help="bodies of the chain")
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
         print(f"write/read, {args.samples} samples, median [min-max] of {args.repeats} interleaved repeats")
@@ -109,6 +139,10 @@ def main() -> None:
             if len(times) == 3:
                 ratio = statistics.median(times["xarray to_netcdf (before)"]) / statistics.median(times["save"])
                 print(f"{'':>8}  {'speed-up of save':<28} {ratio:>9.1f}")
+        channels, samples, runs, saves = chain_times(args.bodies, args.repeats, Path(folder))
+        print(f"\nchain of {args.bodies} bodies: {channels} channels, {samples} samples")
+        for name, values in (("run streamed to .nc", runs), ("save again", saves)):
+            print(f"  {name:<28} {statistics.median(values):>9.3f}  [{min(values):.3f}-{max(values):.3f}]")
         print(f"\npeak memory, dry slider-crank sampled every 1 us for {args.t_end} s")
         for case, samples, rss in peak_memory(args.t_end, Path(folder)):
             print(f"  {case:<16} {samples:>9} samples  max RSS {rss:8.1f} MiB")
