@@ -62,6 +62,16 @@ def test_thousand_channels_round_trip_through_xarray_and_open_results(tmp_path):
     assert back.diagnostics == {"impacts": []}
 
 
+def test_more_channels_than_an_attribute_of_64_kib_can_reference(tmp_path):
+    # the time dimension's REFERENCE_LIST holds 12 bytes per channel: 5600 channels need 67 kB,
+    # more than an HDF5 object header holds (a chain of 1000 bodies has 12003 channels)
+    path = synthetic(5600, 2).save(tmp_path / "many.nc")
+    with h5py.File(path) as f:
+        assert len(f["time"].attrs["REFERENCE_LIST"]) == 5600
+        assert f[f["body5599.x"].attrs["DIMENSION_LIST"][0][0]].name == "/time"
+    assert open_results(path)["body5599.x"].tolist() == [5599.0, 5599.5]
+
+
 def test_a_slash_in_a_channel_name_is_escaped_in_the_file(tmp_path):
     results = synthetic(2, 5)
     results._names = ["arm/left.x", "arm/left.y"]

@@ -108,7 +108,7 @@ class ResultsWriter:
         self.names = list(names)
         self.temporary = temporary_path(self.path)
         self.samples = 0
-        self._file = h5py.File(self.temporary, "w", track_order=True, libver=("earliest", "latest"),
+        self._file = h5py.File(self.temporary, "w", track_order=True, libver=("v108", "latest"),
                                rdcc_nbytes=_CHUNK_CACHE_BYTES)
         self._time = self._resizable(_STREAMED_TIME)
         self._channels = []
