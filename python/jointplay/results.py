@@ -114,7 +114,8 @@ class Results:
 
     def to_xarray(self):
         """An ``xarray.Dataset``: time coordinate, one variable per channel with ``units``, ``long_name``
-        and ``description`` attributes; the model (JSON), options and statistics as attributes."""
+        and ``description`` attributes; the model (JSON), options and statistics as attributes. (For results
+        read from a file, this reads every channel into memory.)"""
         import xarray as xr
 
         data_vars = {
@@ -170,13 +171,13 @@ class Results:
         :func:`open_results`), CSV for ``.csv`` (``time`` and one column per channel, header
         ``name [unit]``); ValueError for any other suffix. The file is written under a temporary
         name and renamed into place when complete, so a good file at ``path`` is never left broken."""
-        from .resultsfile import ResultsWriter, output_kind, write_csv
+        from .resultsfile import ResultsWriter, output_kind, rows_per_block, write_csv
 
         if output_kind(path) == "csv":
             return write_csv(self, path)
         writer = ResultsWriter(path, self._names, self._units, self._descriptions)
         try:
-            block = 65536
+            block = rows_per_block(len(self._names))
             for start in range(0, self.time.size, block):
                 stop = min(self.time.size, start + block)
                 writer.append(self.time[start:stop], self.channel_block(start, stop).T)

@@ -319,13 +319,19 @@ def check_budget(t0: float, t_end: float, output_step: float | None, n_channels:
             "or a shorter t_end")
 
 
-def write_csv(results, path: str | os.PathLike, block: int = 65536) -> Path:
+def rows_per_block(n_channels: int) -> int:
+    """Samples read at once when copying results: at most 65536, and at most :data:`_BUFFER_BYTES` of values."""
+    return max(1, min(65536, _BUFFER_BYTES // (8 * (n_channels + 1))))
+
+
+def write_csv(results, path: str | os.PathLike) -> Path:
     """Writes ``time`` and one column per channel to a CSV file, header ``name [unit]``, block after
     block (a file-backed ``results`` is never read whole); temporary name, then renamed into place."""
     path = Path(path)
     temporary = temporary_path(path)
     names = results.channels
     header = ",".join(["time [s]", *(f"{name} [{results.unit(name)}]" for name in names)])
+    block = rows_per_block(len(names))
     try:
         with open(temporary, "w", encoding="utf-8", newline="") as f:
             f.write(header + "\n")
