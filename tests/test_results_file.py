@@ -182,6 +182,12 @@ def test_streamed_run_keeps_its_memory_bounded(tmp_path):
     assert float(printed[1]) < 40, f"peak memory grew by {printed[1]} MiB"
 
 
+def test_progress_reports_the_end_of_a_streamed_run(tmp_path, dry_model):
+    seen = []
+    dry_model.simulate(2e-3, output_file=tmp_path / "p.nc", progress=seen.append)
+    assert seen[-1] == pytest.approx(2e-3, rel=1e-12)
+
+
 def test_sink_receives_chunks_bounded_by_the_core(dry_model):
     chunks = []
     core = dry_model.compile()

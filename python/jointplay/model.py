@@ -373,7 +373,15 @@ def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float
     ``progress`` and lets pending signals run: on Ctrl-C the run stops at the next sample and what
     was computed is kept (the error says it was interrupted). With ``sink`` the samples go to
     ``sink(times, values)`` in chunks instead of being returned."""
-    raw = core.simulate(t0, t_end, options, progress, sink)
-    if progress is not None and len(raw["time"]):
-        progress(float(raw["time"][-1]))
+    last: list[float] = []  # time of the last sample recorded [s], once there is one
+
+    def forward(times: np.ndarray, values: np.ndarray) -> None:
+        sink(times, values)
+        last[:] = [float(times[-1])]
+
+    raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward)
+    if len(raw["time"]):
+        last[:] = [float(raw["time"][-1])]
+    if progress is not None and last:
+        progress(last[0])
     return raw
