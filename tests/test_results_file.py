@@ -273,6 +273,12 @@ def test_run_stopped_before_its_first_sample_gives_an_empty_partial_file(tmp_pat
         assert ds.sizes["time"] == 0 and ds["a.x"].dims == ("time",)
 
 
+def test_writer_that_cannot_start_leaves_no_temporary(tmp_path):
+    with pytest.raises(ValueError):
+        ResultsWriter(tmp_path / "out.nc", ["a.x", "a.x"], ["m", "m"], ["x", "x"])  # a name twice
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_aborted_writer_removes_its_temporary_only(tmp_path):
     path, before = good_file(tmp_path)
     writer = ResultsWriter(path, ["a.x"], ["m"], ["x"])

@@ -120,16 +120,24 @@ class ResultsWriter:
         self._buffer = np.empty((len(self.names) + 1, self._capacity))  # row 0: time; then the channels
         self._file = h5py.File(self.temporary, "w", track_order=True, libver=("v108", "latest"),
                                rdcc_nbytes=_CHUNK_CACHE_BYTES)
-        self._time = self._resizable(_STREAMED_TIME)
         self._channels: list = []
-        for name, unit, description in zip(self.names, units, descriptions):
-            dataset = self._resizable(variable_name(name))
-            if variable_name(name) != name:
-                dataset.attrs["channel"] = name
-            dataset.attrs["units"] = unit
-            dataset.attrs["long_name"] = description or name
-            dataset.attrs["description"] = description
-            self._channels.append(dataset)
+        try:
+            self._time = self._resizable(_STREAMED_TIME)
+            for name, unit, description in zip(self.names, units, descriptions):
+                self._channels.append(self._channel(name, unit, description))
+        except BaseException:
+            self.abort()
+            raise
+
+    def _channel(self, name: str, unit: str, description: str):
+        """The variable of one channel, with its attributes."""
+        dataset = self._resizable(variable_name(name))
+        if variable_name(name) != name:
+            dataset.attrs["channel"] = name
+        dataset.attrs["units"] = unit
+        dataset.attrs["long_name"] = description or name
+        dataset.attrs["description"] = description
+        return dataset
 
     def _resizable(self, name: str):
         return self._file.create_dataset(name, shape=(0,), maxshape=(None,), dtype="f8", chunks=(CHUNK_SAMPLES,),
