@@ -92,8 +92,10 @@ def test_simulation_failure_exits_1_and_keeps_what_was_computed(tmp_path):
     assert result.exit_code == 1
     assert "simulation failed (ExcessivePenetration) at t = " in result.stderr
     assert " in B: penetration " in result.stderr
-    assert f"saved to {out}" in result.stderr
-    with xr.open_dataset(out, engine="h5netcdf") as ds:
+    partial = tmp_path / "failed.partial.nc"  # a failed run never takes the name of a complete one
+    assert f"saved to {partial}" in result.stderr
+    assert not out.exists()
+    with xr.open_dataset(partial, engine="h5netcdf") as ds:
         assert ds.attrs["completed"] == 0
         assert ds.sizes["time"] > 1
         assert "exceeds the bound" in ds.attrs["error"]

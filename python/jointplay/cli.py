@@ -246,7 +246,8 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
 
 @app.command()
 def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_default=False)],
-        output: Annotated[Path | None, typer.Option("-o", "--output", help="NetCDF results file "
+        output: Annotated[Path | None, typer.Option("-o", "--output", help="Results file: NetCDF-4 for .nc, .nc4, "
+                                                     ".h5 (written while the run goes on), CSV for .csv "
                                                      "[default: MODEL name with .nc, in the current folder].")] = None,
         t_end: Annotated[str | None, typer.Option("--t-end", help='End time, e.g. "24 ms" or 0.024 (seconds); '
                                                   "overrides simulation.t_end.")] = None,
@@ -255,6 +256,9 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
                                                         "Default: a sample at every accepted step. The summary's "
                                                         "peaks and extrema come from every step either way.")] = None,
         set_: SetOption = [],  # noqa: B006
+        max_output: Annotated[str | None, typer.Option("--max-output", help='Budget of the output, samples x '
+                                                       'channels x 8 bytes, e.g. "500 MB" or "4 GiB"; overrides '
+                                                       "simulation.max_output_bytes [default: 2 GiB].")] = None,
         quiet: Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar and no summary.")] = False) -> None:
     """Simulate a model file, save the results (NetCDF) and print a summary.
 
@@ -262,8 +266,10 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
     and contact forces with their times, impacts, time in contact and deepest
     penetration (thinnest film when lubricated) of each clearance joint, all
     tracked at every accepted step whatever the output step; integrator
-    statistics and wall time. If the simulation stops early, what was
-    computed is saved and the exit code is 1.
+    statistics and wall time. The file appears only once the run is complete
+    (an existing file stays as it was until then); if the simulation stops
+    early, what was computed is saved to OUT.partial.nc (or .partial.csv) and
+    the exit code is 1.
     """
     m = _load(model, set_)
     options = dict(m.simulation)
@@ -274,11 +280,10 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
     if end is None:
         raise _bad_input(f"{model}: no end time", ["simulation.t_end: missing; set it in the [simulation] table "
                                                    "or give --t-end"])
-    output = output or Path(f"{model.stem}.nc")
-    if not output.parent.is_dir():
-        raise _bad_input(f"-o {output}: no folder {output.parent}", [])
-    if output.is_dir():
-        raise _bad_input(f"-o {output}: is a folder, not a results file (give a file name such as run.nc)", [])
+    output = _output_path(output or Path(f"{model.stem}.nc"))
+    if max_output is not None:
+        options["max_output_bytes"] = _size_option(max_output, "--max-output")
+    options["output_file"] = output
     try:
         with _printed_warnings():
             results = _simulate(m, end, options, quiet)
@@ -287,27 +292,46 @@ def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_de
     except RuntimeError as exc:  # a panic in the core, caught at the binding
         err.print(f"[bold red]internal error[/] (please report it with the model file): {exc}")
         raise typer.Exit(EXIT_FAILED) from None
+    except OSError as exc:
+        raise _bad_input(f"-o {output}: cannot write the results ({exc})", []) from None
     except SimulationError as exc:
-        if exc.results is not None:
-            _save(exc.results, output)
         where = f" in {exc.element}" if exc.element else ""
         kind = f" ({exc.kind})" if exc.kind else ""
         err.print(f"[bold red]simulation failed[/]{kind} at t = {exc.time:.6g} s{where}: ", end="")
         err.print(exc.cause, markup=False)
         if exc.results is not None:
-            err.print(f"results up to t = {exc.time:.6g} s saved to {output}")
+            from .resultsfile import partial_path
+
+            err.print(f"results up to t = {exc.time:.6g} s saved to {partial_path(output)}"
+                      + (f" ({output} left as it was)" if output.exists() else ""))
         raise typer.Exit(EXIT_FAILED) from None
-    _save(results, output)
     if not quiet:
         print_summary(results)
     out.print(f"wrote {output}")
 
 
-def _save(results, output: Path) -> None:
+def _size_option(text: str, option: str) -> int:
+    from .resultsfile import parse_size
+
     try:
-        results.save(output)
-    except OSError as exc:
-        raise _bad_input(f"-o {output}: cannot write the results ({exc})", []) from None
+        return parse_size(text)
+    except ValueError as exc:
+        raise _bad_input(f"{option}: {exc}", []) from None
+
+
+def _output_path(output: Path) -> Path:
+    """``-o``: a folder that exists and a suffix of a known format."""
+    from .resultsfile import output_kind
+
+    if not output.parent.is_dir():
+        raise _bad_input(f"-o {output}: no folder {output.parent}", [])
+    if output.is_dir():
+        raise _bad_input(f"-o {output}: is a folder, not a results file (give a file name such as run.nc)", [])
+    try:
+        output_kind(output)
+    except ValueError as exc:
+        raise _bad_input(f"-o {output}: {exc}", []) from None
+    return output
 
 
 def _simulate(m, end: float, options: dict, quiet: bool):

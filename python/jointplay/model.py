@@ -18,13 +18,14 @@ from __future__ import annotations
 import copy
 import json
 import math
+import os
 import time as _time
 from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
 
-from . import _core
+from . import _core, resultsfile
 from .errors import ModelError, SimulationError
 from .functions import as_function
 from .laws import STEEL, hertz_cylinder, frictionless
@@ -284,7 +285,8 @@ class Model:
                  max_step: float | None = None, output_step: float | None = None,
                  initial_step: float | None = None, min_step: float | None = None, max_steps: int | None = None,
                  stabilization: str = "projection", t0: float = 0.0,
-                 progress: Callable[[float], None] | None = None) -> Results:
+                 progress: Callable[[float], None] | None = None, output_file: str | os.PathLike | None = None,
+                 max_output_bytes: int | str | None = None) -> Results:
         """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
 
         ``method``: ``"dopri5"`` (adaptive Dormand-Prince 5(4), contact onsets located by dense
@@ -300,6 +302,15 @@ class Model:
         1e4 times the others; :func:`jointplay.modelfile.plausibility`) are issued first as
         :class:`~jointplay.errors.JointplayWarning` warnings; they do not stop the run.
 
+        ``output_file`` (``.nc``, ``.nc4``, ``.h5``): the samples are written to this NetCDF-4 file while
+        the run goes on, chunk by chunk, and the returned results read their channels from it on access,
+        so memory stays bounded; the file appears (by rename) only once complete, and a run that stops
+        early goes to ``NAME.partial.nc`` instead (``results.path`` says which). ``.csv``: the run is kept
+        in memory and written as CSV at the end. ``max_output_bytes`` (bytes, or ``"2 GiB"``): budget of
+        samples x channels x 8 bytes, by default 2 GiB with a NetCDF file and 1 GiB in memory; a run on an
+        ``output_step`` grid that cannot fit is refused before it starts (ModelError), any other run stops
+        with a SimulationError when it reaches the budget.
+
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
         """
@@ -308,11 +319,31 @@ class Model:
         warn(self._spec)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization)
+        kind = resultsfile.output_kind(output_file) if output_file is not None else None
+        options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
+        channels = core.describe()
+        too_large = resultsfile.check_budget(t0, t_end, options["output_step"], len(channels["names"]),
+                                             options["max_output_bytes"])
+        if too_large:
+            raise ModelError([("simulation.max_output_bytes", too_large)])
         started = _time.perf_counter()
-        raw = _run(core, t0, float(t_end), options, progress)
-        wall_time = _time.perf_counter() - started
-        results = Results.from_core(raw, spec=self.to_spec(), options=options, wall_time=wall_time)
+
+        def make_results(raw: dict) -> Results:
+            results = Results.from_core(raw, spec=self.to_spec(), options=options,
+                                        wall_time=_time.perf_counter() - started)
+            results.description = getattr(self, "description", "")
+            results.model_file = getattr(self, "source_file", "")
+            return results
+
+        if kind == "netcdf":
+            results, raw = resultsfile.stream_run(
+                output_file, channels, lambda sink: _run(core, t0, float(t_end), options, progress, sink), make_results)
+        else:
+            raw = _run(core, t0, float(t_end), options, progress)
+            results = make_results(raw)
+            if kind == "csv":
+                results.save(output_file if raw["error"] is None else resultsfile.partial_path(output_file))
         if raw["error"] is not None:
             raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
         return results
@@ -388,11 +419,21 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
     return options
 
 
-def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None) -> dict:
+def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None,
+         sink: Callable[[np.ndarray, np.ndarray], None] | None = None) -> dict:
     """Runs the core in this thread with the GIL released. About ten times a second the core calls
     ``progress`` and lets pending signals run: on Ctrl-C the run stops at the next sample and what
-    was computed is kept (the error says it was interrupted)."""
-    raw = core.simulate(t0, t_end, options, progress)
-    if progress is not None and len(raw["time"]):
-        progress(float(raw["time"][-1]))
+    was computed is kept (the error says it was interrupted). With ``sink`` the samples go to
+    ``sink(times, values)`` in chunks instead of being returned."""
+    last: list[float] = []  # time of the last sample recorded [s], once there is one
+
+    def forward(times: np.ndarray, values: np.ndarray) -> None:
+        sink(times, values)
+        last[:] = [float(times[-1])]
+
+    raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward)
+    if len(raw["time"]):
+        last[:] = [float(raw["time"][-1])]
+    if progress is not None and last:
+        progress(last[0])
     return raw

@@ -3,13 +3,19 @@
 ``results["slider.ax"]`` is a numpy array; ``results.to_xarray()`` is a
 Dataset with time as coordinate, one variable per channel, units and
 descriptions as attributes, and the model and integrator statistics as
-Dataset attributes. ``results.save(path)`` writes it to NetCDF.
+Dataset attributes. ``results.save(path)`` writes it to NetCDF-4 (or CSV);
+results of a run streamed to a file read their channels from it on access
+(see :mod:`jointplay.resultsfile`).
 """
 
 from __future__ import annotations
 
 import difflib
 import json
+import shlex
+import sys
+from datetime import datetime, timezone
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -51,7 +57,9 @@ class Results:
         self._index = {n: k for k, n in enumerate(self._names)}
         self._units = list(units)
         self._descriptions = list(descriptions)
-        self._values = np.asarray(values, dtype=float).reshape(len(self._names), self.time.size)
+        # channels x samples in memory, or a store reading them from a file (``FileChannels``)
+        self._values = values if hasattr(values, "block") else np.asarray(values, dtype=float).reshape(
+            len(self._names), self.time.size)
         self.statistics = dict(statistics)
         self.diagnostics = dict(diagnostics)
         self.spec = spec
@@ -59,6 +67,12 @@ class Results:
         self.wall_time = wall_time
         self.error = error
         self.extrema = extrema
+        #: ``[model] description`` of the model file, its path, and the file's ``history`` line(s).
+        self.description = ""
+        self.model_file = ""
+        self.history = ""
+        #: The results file the channels are read from, or None when they are in memory.
+        self.path: Path | None = None
 
     @classmethod
     def from_core(cls, raw: dict, spec: dict | None, options: dict | None, wall_time: float) -> Results:
@@ -88,6 +102,20 @@ class Results:
             hint = f"; did you mean {', '.join(close)}?" if close else ""
             raise KeyError(f"no channel {name!r}{hint}") from None
 
+    def channel_block(self, start: int, stop: int) -> np.ndarray:
+        """Values of every channel for samples ``start:stop``, shape (channels, samples)."""
+        if hasattr(self._values, "block"):
+            return self._values.block(start, stop)
+        return self._values[:, start:stop]
+
+    def read_from(self, path) -> None:
+        """Reads the channels from the results file ``path`` on access from now on (its time and
+        channels are those of these results)."""
+        from .resultsfile import FileChannels
+
+        self._values = FileChannels(path, self._names)
+        self.path = Path(path)
+
     def get(self, name: str, default=None):
         """The channel's values, or ``default`` when the results have no such channel."""
         return self[name] if name in self._index else default
@@ -111,16 +139,41 @@ class Results:
     # export ----------------------------------------------------------------
 
     def to_xarray(self):
-        """An ``xarray.Dataset``: time coordinate, one variable per channel with ``units`` and
-        ``description`` attributes; the model (JSON), options and statistics as attributes."""
+        """An ``xarray.Dataset``: time coordinate, one variable per channel with ``units``, ``long_name``
+        and ``description`` attributes; the model (JSON), options and statistics as attributes. (For results
+        read from a file, this reads every channel into memory.)"""
         import xarray as xr
 
         data_vars = {
-            name: ("time", self._values[k], {"units": self._units[k], "description": self._descriptions[k]})
+            name: ("time", self._values[k], {"units": self._units[k], "long_name": self._descriptions[k] or name,
+                                             "description": self._descriptions[k]})
             for k, name in enumerate(self._names)
         }
+        attrs = {key: value for key, value in self.file_attributes().items() if key != "jointplay_layout"}
+        coords = {"time": ("time", self.time, {"units": "s", "long_name": "time", "description": "time"})}
+        return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+    def file_attributes(self) -> dict[str, Any]:
+        """Global attributes of a results file: CF-style ``Conventions``, ``title``, ``history``,
+        ``source``, ``date_created``; the model (JSON and TOML), its file and description, the options,
+        statistics, diagnostics, ``completed``/``error`` and ``extrema_json``."""
+        from . import __version__
+        from .resultsfile import LAYOUT
+
+        name = self.spec.get("name", "") if self.spec else ""
+        created = datetime.now(timezone.utc).isoformat(timespec="seconds").replace("+00:00", "Z")
+        line = f"{created} {shlex.join([Path(sys.argv[0]).name, *sys.argv[1:]])}"
+        history = f"{self.history}\n{line}" if self.history else line  # CF: one line per program that wrote it
         attrs: dict[str, Any] = {
-            "title": f"jointplay results: {self.spec.get('name', '') if self.spec else ''}".strip(),
+            "Conventions": "CF-1.10",
+            "title": f"jointplay results: {name}".strip(),
+            "history": history,
+            "source": f"jointplay {__version__}",
+            "jointplay_version": __version__,
+            "jointplay_layout": LAYOUT,
+            "date_created": created,
+            "model_file": self.model_file,
+            "description": self.description,
             "model_json": json.dumps(self.spec) if self.spec is not None else "",
             "model_toml": self.model_toml(),
             "options_json": json.dumps(self.options),
@@ -136,12 +189,27 @@ class Results:
             attrs[f"statistics_{key}"] = value
         for key, value in self.diagnostics.items():
             attrs[f"diagnostics_{key}"] = np.asarray(value) if isinstance(value, list) else value
-        coords = {"time": ("time", self.time, {"units": "s", "description": "time"})}
-        return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+        return attrs
 
-    def save(self, path) -> None:
-        """Writes the Dataset to a NetCDF file (h5netcdf engine); :func:`open_results` reads it back."""
-        self.to_xarray().to_netcdf(path, engine="h5netcdf")
+    def save(self, path) -> Path:
+        """Writes the results to ``path``: NetCDF-4 for ``.nc``, ``.nc4``, ``.h5`` (read back by
+        :func:`open_results`), CSV for ``.csv`` (``time`` and one column per channel, header
+        ``name [unit]``); ValueError for any other suffix. The file is written under a temporary
+        name and renamed into place when complete, so a good file at ``path`` is never left broken."""
+        from .resultsfile import ResultsWriter, output_kind, rows_per_block, write_csv
+
+        if output_kind(path) == "csv":
+            return write_csv(self, path)
+        writer = ResultsWriter(path, self._names, self._units, self._descriptions)
+        try:
+            block = rows_per_block(len(self._names))
+            for start in range(0, self.time.size, block):
+                stop = min(self.time.size, start + block)
+                writer.append(self.time[start:stop], self.channel_block(start, stop).T)
+        except BaseException:
+            writer.abort()
+            raise
+        return writer.finish(self.file_attributes())
 
     def model_toml(self) -> str:
         """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table."""
@@ -275,7 +343,7 @@ def _with_simulation(spec: dict, simulation: dict) -> str:
     from .modelfile.writer import to_toml
 
     keep = ("t_end", "t0", "method", "rtol", "atol", "max_step", "output_step", "initial_step", "min_step",
-            "max_steps", "stabilization")
+            "max_steps", "stabilization", "max_output_bytes")
     return to_toml(spec, {k: simulation[k] for k in keep if k in simulation})
 
 
@@ -292,17 +360,36 @@ def _attr_dict(attrs: dict, prefix: str) -> dict:
 
 
 def open_results(path) -> Results:
-    """Results from a NetCDF file written by :meth:`Results.save` (or ``jointplay run``)."""
+    """Results from a file written by :meth:`Results.save`, ``Model.simulate(output_file=...)`` or
+    ``jointplay run``; the channels of a file in the current layout are read on access. Files written
+    by earlier versions (through xarray) are read whole."""
+    from .resultsfile import FileChannels, is_streamed_layout, read_file
+
+    if not is_streamed_layout(path):
+        return _open_legacy(path)
+    time, names, units, descriptions, attrs = read_file(path)
+    results = _from_attributes(time, names, units, descriptions, FileChannels(path, names), attrs)
+    results.path = Path(path)
+    return results
+
+
+def _open_legacy(path) -> Results:
+    """Results from a NetCDF file written through xarray/h5netcdf (before the streamed layout)."""
     import xarray as xr
 
     with xr.open_dataset(path, engine="h5netcdf") as ds:
         ds.load()
         names = [str(n) for n in ds.data_vars]
-        attrs = dict(ds.attrs)
+        attrs = {key: (value.tolist() if isinstance(value, np.ndarray) else value) for key, value in ds.attrs.items()}
         time = np.asarray(ds["time"].values, dtype=float)
         values = np.array([np.asarray(ds[n].values, dtype=float) for n in names]).reshape(len(names), time.size)
         units = [str(ds[n].attrs.get("units", "")) for n in names]
         descriptions = [str(ds[n].attrs.get("description", "")) for n in names]
+    return _from_attributes(time, names, units, descriptions, values, attrs)
+
+
+def _from_attributes(time, names, units, descriptions, values, attrs: dict) -> Results:
+    """Results from channels and the global attributes of a results file."""
     spec = json.loads(attrs["model_json"]) if attrs.get("model_json") else None
     options = json.loads(attrs.get("options_json", "{}") or "{}")
     diagnostics = _attr_dict(attrs, "diagnostics_")
@@ -312,6 +399,10 @@ def open_results(path) -> Results:
     if not int(attrs.get("completed", 1)):
         error = json.loads(attrs["error_json"]) if attrs.get("error_json") else {"message": attrs.get("error", "")}
     extrema = json.loads(attrs["extrema_json"]) if attrs.get("extrema_json") else None
-    return Results(time, names, units, descriptions, values, _attr_dict(attrs, "statistics_"), diagnostics,
-                   spec=spec, options=options, wall_time=float(attrs.get("wall_time_s", float("nan"))), error=error,
-                   extrema=extrema)
+    results = Results(time, names, units, descriptions, values, _attr_dict(attrs, "statistics_"), diagnostics,
+                      spec=spec, options=options, wall_time=float(attrs.get("wall_time_s", float("nan"))), error=error,
+                      extrema=extrema)
+    results.description = str(attrs.get("description", ""))
+    results.model_file = str(attrs.get("model_file", ""))
+    results.history = str(attrs.get("history", ""))
+    return results

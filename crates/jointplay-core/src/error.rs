@@ -135,6 +135,26 @@ pub enum SimulationError {
         /// What is wrong.
         message: String,
     },
+    /// One more sample would make the output larger than its budget.
+    #[error("output budget max_output_bytes = {budget} bytes reached at t = {time:.6e} s ({samples} samples x {channels} channels x 8 bytes); raise max_output_bytes, set a coarser output_step or a shorter t_end")]
+    OutputBudgetExceeded {
+        /// Time of the sample that did not fit [s].
+        time: f64,
+        /// Samples recorded (all within the budget).
+        samples: usize,
+        /// Channels per sample.
+        channels: usize,
+        /// The budget [bytes].
+        budget: u64,
+    },
+    /// The sink receiving the samples (a results file) failed.
+    #[error("writing the results failed at t = {time:.6e} s: {message}")]
+    OutputSink {
+        /// Time of the last sample handed over [s].
+        time: f64,
+        /// What the sink reported.
+        message: String,
+    },
     /// The run was interrupted from outside (for example Ctrl-C).
     #[error("interrupted at t = {time:.6e} s")]
     Interrupted {
@@ -162,6 +182,8 @@ impl SimulationError {
             | Self::ExcessivePenetration { time, .. }
             | Self::InvalidInput { time, .. }
             | Self::FilmModel { time, .. }
+            | Self::OutputBudgetExceeded { time, .. }
+            | Self::OutputSink { time, .. }
             | Self::Interrupted { time } => *time,
         }
     }
@@ -175,7 +197,11 @@ impl SimulationError {
             | Self::ConstraintViolation { element, .. }
             | Self::ExcessivePenetration { element, .. }
             | Self::FilmModel { element, .. } => Some(element),
-            Self::TooManySteps { .. } | Self::InvalidInput { .. } | Self::Interrupted { .. } => None,
+            Self::TooManySteps { .. }
+            | Self::InvalidInput { .. }
+            | Self::OutputBudgetExceeded { .. }
+            | Self::OutputSink { .. }
+            | Self::Interrupted { .. } => None,
         }
     }
 }

@@ -37,6 +37,9 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
     if let Some(v) = d.get_item("max_steps")?.filter(|v| !v.is_none()) {
         o.integrator.max_steps = v.extract()?;
     }
+    if let Some(v) = d.get_item("max_output_bytes")?.filter(|v| !v.is_none()) {
+        o.max_output_bytes = Some(v.extract()?);
+    }
     if let Some(v) = get("position_tolerance")? {
         o.position_tolerance = v;
     }
@@ -73,6 +76,7 @@ pub fn channel_infos(py: Python<'_>, out: &Bound<'_, PyDict>, infos: &[ChannelIn
 
 /// A simulation outcome into `out` (its recorded values handed over without a copy).
 pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome) -> PyResult<()> {
+    // (with a sink, only the samples not handed over: none at the end of a run)
     let shape = [o.trajectory.len(), o.trajectory.channels.len()];
     let (time, samples) = o.trajectory.take();
     out.set_item("time", PyArray1::from_vec(py, time))?;

@@ -9,9 +9,9 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
-use jointplay_core::dynamics::{self, Model, Progress, Workspace};
+use jointplay_core::dynamics::{self, Model, Progress, SampleSink, Workspace};
 use jointplay_core::spec::ModelSpec;
-use numpy::{PyArray1, PyArray2};
+use numpy::{PyArray1, PyArray2, PyArrayMethods};
 use pyo3::exceptions::{PyKeyboardInterrupt, PyRuntimeError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -52,6 +52,32 @@ fn poll(py: Python<'_>, progress: Option<&Py<PyAny>>, t: f64, raised: &Mutex<Opt
             }
             false
         }
+    }
+}
+
+/// A Python callable `sink(times, values)` receiving the samples chunk by chunk (GIL taken
+/// back for each call): `times` of shape (n,), `values` of shape (n, channels). An exception
+/// it raises is kept in `raised` (to be raised once the run has stopped) and stops the run.
+struct PythonSink {
+    callable: Py<PyAny>,
+    channels: usize,
+    raised: Arc<Mutex<Option<PyErr>>>,
+}
+
+impl SampleSink for PythonSink {
+    fn write_chunk(&mut self, times: &[f64], rows: &[f64]) -> Result<(), String> {
+        Python::attach(|py| {
+            let called = PyArray1::from_slice(py, rows)
+                .reshape([times.len(), self.channels])
+                .and_then(|values| self.callable.call1(py, (PyArray1::from_slice(py, times), values)));
+            called.map(drop).map_err(|error| {
+                let message = error.to_string();
+                if let Ok(mut slot) = self.raised.lock() {
+                    slot.get_or_insert(error);
+                }
+                message
+            })
+        })
     }
 }
 
@@ -101,8 +127,10 @@ impl CoreModel {
     /// About every [`WATCH_INTERVAL`] the core takes the GIL back for a moment: it calls
     /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run at
     /// the next sample with what was computed kept. An exception raised by `progress` also
-    /// stops the run and is raised here.
-    #[pyo3(signature = (t0, t_end, options, progress=None))]
+    /// stops the run and is raised here. With `sink`, the samples go to `sink(times, values)`
+    /// in chunks of about 4 MiB while the run goes on (see [`PythonSink`]) and the returned
+    /// `time` and `values` are empty; an exception in `sink` stops the run and is raised here.
+    #[pyo3(signature = (t0, t_end, options, progress=None, sink=None))]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
@@ -110,6 +138,7 @@ impl CoreModel {
         t_end: f64,
         options: &Bound<'py, PyDict>,
         progress: Option<Py<PyAny>>,
+        sink: Option<Py<PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let options = conv::simulation_options(options)?;
         let model = Arc::clone(&self.model);
@@ -118,14 +147,16 @@ impl CoreModel {
             let raised = Arc::clone(&raised);
             Progress::watched(WATCH_INTERVAL, move |t| Python::attach(|py| poll(py, progress.as_ref(), t, &raised)))
         };
+        let channels = self.model.channel_infos().len();
+        let sink = sink.map(|callable| Box::new(PythonSink { callable, channels, raised: Arc::clone(&raised) }) as Box<dyn SampleSink>);
         let run = py.detach(|| {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
                 let mut state = dynamics::assemble(&model, t0, &mut ws).map_err(|e| e)?;
-                Ok(dynamics::simulate(&model, &mut state, t_end, &options, Some(&watched)))
+                Ok(dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&watched), sink))
             })
         })?;
-        if let Some(error) = raised.lock().map_err(|_| PyRuntimeError::new_err("progress callback state poisoned"))?.take() {
+        if let Some(error) = raised.lock().map_err(|_| PyRuntimeError::new_err("callback state poisoned"))?.take() {
             return Err(error);
         }
         let out = PyDict::new(py);

@@ -70,7 +70,9 @@ def load(path: str | Path, overrides: list[str] | dict[str, Any] | None = None, 
     or ``{"joints.B.clearance": "0.1 mm"}``) applied first. With ``check`` the initial configuration is
     assembled too, so an impossible geometry is reported here. Raises ModelError."""
     doc = read_document(path)
-    return from_document(doc, overrides, name=Path(path).stem, check=check)
+    model = from_document(doc, overrides, name=Path(path).stem, check=check)
+    model.source_file = str(path)  # for the results file's model_file attribute
+    return model
 
 
 def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, name: str = "mechanism",
@@ -89,6 +91,8 @@ def from_document(doc: dict, overrides=None, *, name: str = "mechanism", check: 
     spec, simulation = builder.result()
     model = Model.from_spec(spec)
     model.simulation = simulation
+    description = doc.get("model", {}).get("description") if isinstance(doc.get("model"), dict) else None
+    model.description = description if isinstance(description, str) else ""
     try:
         model.compile()
     except ModelError as exc:

@@ -7,11 +7,11 @@ friction) or ``kind`` (functions of time) are dispatched by
 their reason where they have one; docs/model-files.md lists every key.
 """
 
-from typing import Any
+from typing import Annotated, Any
 
-from pydantic import Field
+from pydantic import Field, PlainValidator
 
-from .fields import Count, Flag, Q, Strict, choice, quantity, text, vector
+from .fields import Count, Flag, Q, Strict, choice, fail, quantity, text, vector
 
 Length = quantity("length")
 PositiveLength = quantity("length", gt=0)
@@ -263,6 +263,15 @@ FORCES: dict[str, type[Strict]] = {
 
 # simulation ----------------------------------------------------------------
 
+def _output_bytes(raw: Any) -> int:
+    from ..resultsfile import parse_size
+
+    try:
+        return parse_size(raw)
+    except ValueError as exc:
+        raise fail(str(exc)) from None
+
+
 class SimulationTable(Strict):
     """``[simulation]``: default options of ``jointplay run`` and ``Model.simulate``."""
 
@@ -278,6 +287,7 @@ class SimulationTable(Strict):
     min_step: quantity("time", gt=0) = None
     max_steps: Count = None
     stabilization: choice("projection", "baumgarte", "none") = None
+    max_output_bytes: Annotated[int, PlainValidator(_output_bytes)] = None
 
 
 TOP_LEVEL = ("model", "units", "ground", "bodies", "joints", "drivers", "forces", "simulation")

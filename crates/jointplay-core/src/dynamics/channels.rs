@@ -1,5 +1,5 @@
-//! Output channels `"<element>.<quantity>"` in SI units, and the
-//! trajectory they fill.
+//! Output channels `"<element>.<quantity>"` in SI units and their values
+//! at a sample (the [`super::Trajectory`] records them).
 
 use super::frame::cross;
 use super::model::ElementKind;
@@ -47,68 +47,14 @@ pub(crate) struct Channel {
     pub source: Source,
 }
 
-/// Recorded channels over time.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Trajectory {
-    /// Sample times [s].
-    pub time: Vec<f64>,
-    /// Channel descriptions.
-    pub channels: Vec<ChannelInfo>,
-    /// Sample after sample, each the values of all channels in the order of
-    /// `channels` (one contiguous append per sample).
-    samples: Vec<f64>,
-}
-
-impl Trajectory {
-    /// Empty trajectory with the model's channels.
-    pub fn new(model: &Model) -> Self {
-        Self { time: Vec::new(), channels: model.channel_infos(), samples: Vec::new() }
-    }
-
-    /// Number of recorded samples.
-    pub fn len(&self) -> usize {
-        self.time.len()
-    }
-
-    /// True before the first sample.
-    pub fn is_empty(&self) -> bool {
-        self.time.is_empty()
-    }
-
-    /// Channel `c` at sample `k`.
-    pub fn value(&self, c: usize, k: usize) -> f64 {
-        self.samples[k * self.channels.len() + c]
-    }
-
-    /// Values of channel `c` over time.
-    pub fn column(&self, c: usize) -> Vec<f64> {
-        (0..self.len()).map(|k| self.value(c, k)).collect()
-    }
-
-    /// Values of the channel named `name` over time, if present.
-    pub fn channel(&self, name: &str) -> Option<Vec<f64>> {
-        self.channels.iter().position(|c| c.name == name).map(|c| self.column(c))
-    }
-
-    /// All values sample after sample (`len()` rows of `channels.len()` values), row-major.
-    pub fn samples(&self) -> &[f64] {
-        &self.samples
-    }
-
-    /// Takes the times and the [`Trajectory::samples`] out, leaving the trajectory empty.
-    pub fn take(&mut self) -> (Vec<f64>, Vec<f64>) {
-        (std::mem::take(&mut self.time), std::mem::take(&mut self.samples))
-    }
-
-    /// Appends one sample from an evaluated workspace (whose
-    /// `constraint_forces` it fills first, once for all reaction channels).
-    pub(crate) fn push(&mut self, model: &Model, t: f64, y: &[f64], ws: &mut Workspace) {
-        update_constraint_forces(model, ws);
-        let ws = &*ws;
-        let energy = kinetic_and_potential_energy(model, y, ws);
-        self.time.push(t);
-        self.samples.extend(model.channels.iter().map(|channel| value(model, channel.source, y, ws, energy)));
-    }
+/// Appends the values of all channels at one sample (in the order of
+/// `model.channels`) to `out`, after filling the workspace's
+/// `constraint_forces` once for all reaction channels.
+pub(crate) fn append_sample(model: &Model, y: &[f64], ws: &mut Workspace, out: &mut Vec<f64>) {
+    update_constraint_forces(model, ws);
+    let ws = &*ws;
+    let energy = kinetic_and_potential_energy(model, y, ws);
+    out.extend(model.channels.iter().map(|channel| value(model, channel.source, y, ws, energy)));
 }
 
 /// The value of one channel; `energy` is `[kinetic, potential]` [J] of the sample.

@@ -18,17 +18,19 @@ mod projection;
 mod simulate;
 mod state;
 mod system;
+mod trajectory;
 mod workspace;
 
 pub use assembly::assemble;
-pub use channels::{ChannelInfo, Trajectory};
+pub use channels::ChannelInfo;
 pub use compile::compile;
 pub use extrema_summary::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
 pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm};
 pub use progress::Progress;
-pub use simulate::{simulate, Diagnostics, SimulationOptions, SimulationOutcome};
+pub use simulate::{simulate, simulate_with_sink, Diagnostics, SimulationOptions, SimulationOutcome};
 pub use state::{ContactMemory, State};
+pub use trajectory::{SampleSink, Trajectory, CHUNK_BYTES};
 pub use workspace::Workspace;
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! Running a simulation: options, diagnostics, and the outcome that keeps
 //! whatever was computed even when the run fails.
 
-use super::channels::Trajectory;
+use super::trajectory::{SampleSink, Trajectory};
 use super::equations::Stabilization;
 use super::extrema::ExtremaTracker;
 use super::frame::{BodyIndex, Vec2};
@@ -21,13 +21,21 @@ pub struct SimulationOptions {
     /// Largest constraint residual left by the projection [m or rad], and of
     /// the velocity constraints [m/s or rad/s].
     pub position_tolerance: f64,
+    /// Largest output allowed, samples x channels x 8 [bytes]; `None`: no limit.
+    /// The run stops with [`SimulationError::OutputBudgetExceeded`] before exceeding it.
+    pub max_output_bytes: Option<u64>,
 }
 
 impl Default for SimulationOptions {
     /// Dormand-Prince at rtol 1e-6, atol 1e-9; projection to 1e-10, far
     /// below clearances of 1 um and above the round-off of coordinates of order 1 m.
     fn default() -> Self {
-        Self { integrator: IntegratorOptions::default(), stabilization: Stabilization::Projection, position_tolerance: 1e-10 }
+        Self {
+            integrator: IntegratorOptions::default(),
+            stabilization: Stabilization::Projection,
+            position_tolerance: 1e-10,
+            max_output_bytes: None,
+        }
     }
 }
 
@@ -61,6 +69,7 @@ pub struct SimulationOutcome {
 }
 
 /// Integrates `model` from `state` to `t_end` [s]; `state` is advanced in place.
+/// Every sample is kept in the returned trajectory.
 pub fn simulate(
     model: &Model,
     state: &mut State,
@@ -68,8 +77,27 @@ pub fn simulate(
     options: &SimulationOptions,
     progress: Option<&Progress>,
 ) -> SimulationOutcome {
+    simulate_with_sink(model, state, t_end, options, progress, None)
+}
+
+/// As [`simulate`], handing the samples to `sink` (when given) in chunks of
+/// about [`super::CHUNK_BYTES`] while the run goes on, and at its end (also
+/// when it fails); the returned trajectory then holds no samples. A sink
+/// error stops the run with [`SimulationError::OutputSink`].
+pub fn simulate_with_sink(
+    model: &Model,
+    state: &mut State,
+    t_end: f64,
+    options: &SimulationOptions,
+    progress: Option<&Progress>,
+    sink: Option<Box<dyn SampleSink>>,
+) -> SimulationOutcome {
     let mut ws = Workspace::new(model);
     let mut trajectory = Trajectory::new(model);
+    trajectory.set_max_bytes(options.max_output_bytes);
+    if let Some(sink) = sink {
+        trajectory.set_sink(sink);
+    }
     let mut diagnostics = Diagnostics::default();
     let t0 = state.time;
     let mut y = state.y.clone();
@@ -93,6 +121,8 @@ pub fn simulate(
         };
         (statistics, result, system.last_accepted)
     };
+    // what was computed goes to the sink, also after a failure
+    let result = result.and(trajectory.finish());
     // the state of the last accepted step: time and coordinates of one instant, also after a failure
     if !last_accepted.is_nan() {
         state.time = last_accepted;

@@ -2,8 +2,9 @@
 //! contact-onset events, latching of the onset velocity, drift projection
 //! after each accepted step, and recording of the channels.
 
-use super::channels::{update_constraint_forces, value, Trajectory};
+use super::channels::{update_constraint_forces, value};
 use super::extrema::{ExtremaTracker, StepProbe};
+use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
 use super::frame::{perp, BodyIndex, Frame, Vec2};
 use super::projection::{project_positions, project_velocities};
@@ -246,7 +247,7 @@ impl OdeSystem for MechanismSystem<'_> {
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         if self.step_end.holds_evaluation(t, y) && !self.model.has_lubricated_joints() {
             // the step end the integrator just evaluated (and projected): record its evaluation
-            self.trajectory.push(self.model, t, y, self.ws);
+            self.trajectory.push(self.model, t, y, self.ws)?;
         } else {
             self.evaluate_and_push(t, y)?;
         }
@@ -269,9 +270,9 @@ impl MechanismSystem<'_> {
     fn evaluate_and_push(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         self.evaluate_sample(t, y)?;
         let sample = std::mem::take(&mut self.ws.sample);
-        self.trajectory.push(self.model, t, &sample, self.ws);
+        let pushed = self.trajectory.push(self.model, t, &sample, self.ws);
         self.ws.sample = sample;
-        Ok(())
+        pushed
     }
 
     /// Evaluates (t, y) with the outputs only samples need; the workspace then

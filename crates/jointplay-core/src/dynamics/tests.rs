@@ -385,7 +385,7 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
         let memory = vec![ContactMemory::default(); model.clearance_joints.len()];
         accelerations(&model, &memory, t, &y[..n], &y[n..], Stabilization::Projection, &mut fresh_ws).unwrap();
         let mut fresh = Trajectory::new(&model);
-        fresh.push(&model, t, &y, &mut fresh_ws);
+        fresh.push(&model, t, &y, &mut fresh_ws).unwrap();
         for (c, info) in trajectory.channels.iter().enumerate() {
             let (recorded, expected) = (trajectory.value(c, k), fresh.value(c, 0));
             assert!(

@@ -1,0 +1,386 @@
+"""Results files: NetCDF-4 (HDF5) written with h5py, streamed while a run goes on, and CSV.
+
+The NetCDF file holds a ``time`` dimension and coordinate and one variable per
+channel on it (``units``, ``long_name``, ``description``), compressed (gzip with
+shuffle) in chunks, and CF-style global attributes. It is written under a
+temporary name in the target folder and renamed into place only when it is
+complete, so that a good file is never replaced by a broken one; a run that
+stopped early goes to ``OUT.partial.nc`` instead (see :func:`partial_path`).
+
+Why h5py and not ``xarray.to_netcdf``: attaching the ``time`` dimension to each
+variable one by one and, on reading, an unlimited ``time`` dimension cost time
+quadratic in the number of variables in h5netcdf. Here the dimension lists are
+written once at the end and ``time`` is a fixed-size dimension, so 1000
+channels write in about a second (``benches/bench_results_file.py``).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import secrets
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+#: Suffixes written as NetCDF-4 and as CSV.
+NETCDF_SUFFIXES = (".nc", ".nc4", ".h5")
+CSV_SUFFIX = ".csv"
+#: Largest output of a run with a results file, samples x channels x 8 [bytes] (uncompressed).
+DEFAULT_MAX_FILE_BYTES = 2 * 1024**3
+#: Largest output of a run kept in memory (no results file) [bytes].
+DEFAULT_MAX_MEMORY_BYTES = 1024**3
+#: Marks files written by this module (``open_results`` reads older files with xarray).
+LAYOUT = "jointplay-netcdf4-v2"
+#: Samples per HDF5 chunk of a channel (32 KiB of float64).
+CHUNK_SAMPLES = 4096
+#: HDF5 chunk cache of each channel while writing [bytes]: two chunks, so that the memory of a streamed
+#: run stays bounded (the default cache of 1 MiB per dataset ends up holding the whole file until closed).
+_CHUNK_CACHE_BYTES = 2 * CHUNK_SAMPLES * 8
+#: Largest buffer of samples a writer gathers before writing them [bytes].
+_BUFFER_BYTES = 64 * 2**20
+#: Scratch dataset holding the times while a run streams (``time`` is written at the end).
+_STREAMED_TIME = "_streamed_time"
+
+_SIZE = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*([kKMGT]i?B|B)?\s*$")
+_FACTORS = {None: 1, "B": 1, "kB": 10**3, "MB": 10**6, "GB": 10**9, "TB": 10**12,
+            "kiB": 2**10, "KiB": 2**10, "MiB": 2**20, "GiB": 2**30, "TiB": 2**40}
+
+
+def parse_size(raw: Any) -> int:
+    """A number of bytes from a whole number or a string such as ``"500 MB"`` or ``"2 GiB"``;
+    raises ValueError naming the value."""
+    if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
+        raise ValueError(f'must be a size in bytes, e.g. 2147483648 or "2 GiB", got {raw!r}')
+    if isinstance(raw, (int, float)):
+        if not (np.isfinite(raw) and raw > 0):
+            raise ValueError(f"must be a size > 0 bytes, got {raw!r}")
+        return int(raw)
+    match = _SIZE.match(raw) if len(raw) < 40 else None
+    if match is None or match.group(2) not in _FACTORS:
+        raise ValueError(f'must be a size such as "500 MB" or "2 GiB" (units B, kB, MB, GB, TB, KiB, MiB, GiB, '
+                         f"TiB), got {raw!r}")
+    value = int(float(match.group(1)) * _FACTORS[match.group(2)])
+    if value <= 0:
+        raise ValueError(f"must be a size > 0 bytes, got {raw!r}")
+    return value
+
+
+def format_size(n: float) -> str:
+    """``2147483648`` -> ``"2 GiB"``; ``4.2e9`` -> ``"3.91 GiB"``."""
+    for unit, factor in (("TiB", 2**40), ("GiB", 2**30), ("MiB", 2**20), ("KiB", 2**10)):
+        if n >= factor:
+            return f"{n / factor:.3g} {unit}"
+    return f"{int(n)} B"
+
+
+def partial_path(path: str | os.PathLike) -> Path:
+    """Where the results of a run that stopped early go: ``out.nc`` -> ``out.partial.nc``."""
+    path = Path(path)
+    return path.with_name(f"{path.stem}.partial{path.suffix}")
+
+
+def temporary_path(path: str | os.PathLike) -> Path:
+    """A fresh hidden name in the folder of ``path``, unique to this writer."""
+    path = Path(path)
+    return path.with_name(f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp")
+
+
+def output_kind(path: str | os.PathLike) -> str:
+    """``"netcdf"`` or ``"csv"`` from the suffix; ValueError for any other suffix."""
+    suffix = Path(path).suffix.lower()
+    if suffix in NETCDF_SUFFIXES:
+        return "netcdf"
+    if suffix == CSV_SUFFIX:
+        return "csv"
+    raise ValueError(f"unknown results format {suffix or '(no suffix)'!r}: use .nc, .nc4 or .h5 for NetCDF-4, "
+                     ".csv for CSV")
+
+
+class ResultsWriter:
+    """Streams channels into a NetCDF-4 file: :meth:`append` chunk after chunk, then :meth:`finish`
+    with the global attributes (renames into place) or :meth:`abort` (removes the temporary file).
+
+    Appends are gathered in a buffer of one HDF5 chunk (4096 samples) or at most
+    :data:`_BUFFER_BYTES` before they go to the file: each write to a variable costs about 60 us
+    whatever its length, which adds up over thousands of channels written a few samples at a time."""
+
+    def __init__(self, path: str | os.PathLike, names: list[str], units: list[str], descriptions: list[str]):
+        import h5py
+
+        self.path = Path(path)
+        self.names = list(names)
+        self.temporary = temporary_path(self.path)
+        #: Samples appended (written or buffered).
+        self.samples = 0
+        self._written = 0
+        self._capacity = max(1, min(CHUNK_SAMPLES, _BUFFER_BYTES // (8 * (len(self.names) + 1))))
+        self._buffer = np.empty((len(self.names) + 1, self._capacity))  # row 0: time; then the channels
+        self._file = h5py.File(self.temporary, "w", track_order=True, libver=("v108", "latest"),
+                               rdcc_nbytes=_CHUNK_CACHE_BYTES)
+        self._channels: list = []
+        try:
+            self._time = self._resizable(_STREAMED_TIME)
+            for name, unit, description in zip(self.names, units, descriptions):
+                self._channels.append(self._channel(name, unit, description))
+        except BaseException:
+            self.abort()
+            raise
+
+    def _channel(self, name: str, unit: str, description: str):
+        """The variable of one channel, with its attributes."""
+        dataset = self._resizable(variable_name(name))
+        if variable_name(name) != name:
+            dataset.attrs["channel"] = name
+        dataset.attrs["units"] = unit
+        dataset.attrs["long_name"] = description or name
+        dataset.attrs["description"] = description
+        return dataset
+
+    def _resizable(self, name: str):
+        return self._file.create_dataset(name, shape=(0,), maxshape=(None,), dtype="f8", chunks=(CHUNK_SAMPLES,),
+                                         compression="gzip", compression_opts=1, shuffle=True)
+
+    def append(self, times: np.ndarray, values: np.ndarray) -> None:
+        """Appends ``len(times)`` samples; ``values`` has shape (samples, channels)."""
+        times = np.asarray(times, dtype=float)
+        n = times.size
+        values = np.asarray(values, dtype=float).reshape(n, len(self.names))
+        done = 0
+        while done < n:
+            held = self.samples - self._written
+            take = min(n - done, self._capacity - held)
+            self._buffer[0, held:held + take] = times[done:done + take]
+            self._buffer[1:, held:held + take] = values[done:done + take].T
+            self.samples += take
+            done += take
+            if self.samples - self._written == self._capacity:
+                self._flush()
+
+    def _flush(self) -> None:
+        """Writes the buffered samples to the end of every variable (low-level calls: the high-level
+        ones cost several times more per variable)."""
+        import h5py
+
+        n = self.samples - self._written
+        if n == 0:
+            return
+        memory = h5py.h5s.create_simple((n,))
+        for row, dataset in enumerate([self._time, *self._channels]):
+            dataset.id.set_extent((self.samples,))
+            space = dataset.id.get_space()
+            space.select_hyperslab((self._written,), (n,))
+            dataset.id.write(memory, space, np.ascontiguousarray(self._buffer[row, :n]))
+        self._written = self.samples
+
+    def times(self) -> np.ndarray:
+        """The times appended so far [s]."""
+        self._flush()
+        return np.asarray(self._time[()], dtype=float)
+
+    def finish(self, attrs: dict[str, Any], *, complete: bool = True) -> Path:
+        """Writes ``time`` and the dimension lists and attributes, closes the file and renames it to
+        the target path (complete) or to :func:`partial_path` (a run that stopped early). Returns the path."""
+        try:
+            self._flush()
+            self._write_time()
+            self._attach_dimension()
+            for key, value in attrs.items():
+                if value is not None:
+                    self._file.attrs[key] = _attribute(value)
+            self._file.close()
+        except BaseException:
+            self.abort()
+            raise
+        target = self.path if complete else partial_path(self.path)
+        os.replace(self.temporary, target)
+        return target
+
+    def abort(self) -> None:
+        """Closes and removes the temporary file (a good file at the target path stays as it was)."""
+        try:
+            self._file.close()
+        finally:
+            self.temporary.unlink(missing_ok=True)
+
+    def _write_time(self) -> None:
+        """The coordinate ``time`` as a fixed-size dimension (an unlimited one makes readers slow)."""
+        n = self.samples
+        packed = {"chunks": (min(n, CHUNK_SAMPLES),), "compression": "gzip", "compression_opts": 1,
+                  "shuffle": True} if n else {}  # (no chunks in an empty dataset)
+        time = self._file.create_dataset("time", shape=(n,), dtype="f8", **packed)
+        for start in range(0, n, 16 * CHUNK_SAMPLES):
+            stop = min(n, start + 16 * CHUNK_SAMPLES)
+            time[start:stop] = self._time[start:stop]
+        del self._file[_STREAMED_TIME]
+        time.attrs.update({"units": "s", "long_name": "time", "standard_name": "time", "axis": "T",
+                           "description": "time"})
+        time.make_scale("time")
+        time.attrs["_Netcdf4Dimid"] = np.int32(0)
+        self._time = time
+
+    def _attach_dimension(self) -> None:
+        """``DIMENSION_LIST`` of every variable and the ``REFERENCE_LIST`` of ``time``, each written
+        once (``attach_scale`` rewrites the reference list at every call)."""
+        import h5py
+
+        reference = h5py.ref_dtype
+        dimension_list = np.empty((1,), dtype=object)
+        dimension_list[0] = np.array([self._time.ref], dtype=reference)
+        for dataset in self._channels:
+            dataset.attrs.create("DIMENSION_LIST", dimension_list, dtype=h5py.vlen_dtype(reference))
+        if self._channels:
+            references = np.empty(len(self._channels), dtype=[("dataset", reference), ("dimension", np.int32)])
+            references["dataset"] = [d.ref for d in self._channels]
+            references["dimension"] = 0
+            self._time.attrs.create("REFERENCE_LIST", references)
+
+
+def variable_name(channel: str) -> str:
+    """The file's name of a channel: ``/`` (a group separator in HDF5) becomes ``%2F``; the channel's
+    own name is then kept in the variable's ``channel`` attribute."""
+    return channel.replace("/", "%2F")
+
+
+def _attribute(value: Any):
+    """A value HDF5 stores as a NetCDF attribute (lists as arrays, an empty list as an empty int array)."""
+    if isinstance(value, (list, tuple, np.ndarray)):
+        return np.asarray(value) if len(value) else np.zeros(0, dtype=np.int64)
+    if isinstance(value, bool):
+        return int(value)
+    return value
+
+
+class FileChannels:
+    """Channel values read from a results file on access (nothing kept in memory)."""
+
+    def __init__(self, path: str | os.PathLike, names: list[str]):
+        self.path = Path(path)
+        self.names = list(names)
+
+    def __getitem__(self, k: int) -> np.ndarray:
+        import h5py
+
+        with h5py.File(self.path, "r") as f:
+            return np.asarray(f[variable_name(self.names[k])][()], dtype=float)
+
+    def block(self, start: int, stop: int) -> np.ndarray:
+        """Values of every channel for samples ``start:stop``, shape (channels, samples)."""
+        import h5py
+
+        with h5py.File(self.path, "r") as f:
+            return np.array([f[variable_name(name)][start:stop] for name in self.names],
+                            dtype=float).reshape(len(self.names), -1)
+
+
+def is_streamed_layout(path: str | os.PathLike) -> bool:
+    """Whether ``path`` was written by :class:`ResultsWriter` (rather than by xarray before it)."""
+    import h5py
+
+    with h5py.File(path, "r") as f:
+        layout = f.attrs.get("jointplay_layout", "")
+    return (layout.decode() if isinstance(layout, bytes) else str(layout)) == LAYOUT
+
+
+def read_file(path: str | os.PathLike) -> tuple[np.ndarray, list[str], list[str], list[str], dict[str, Any]]:
+    """``(time, names, units, descriptions, global attributes)`` of a file written by :class:`ResultsWriter`."""
+    import h5py
+
+    with h5py.File(path, "r") as f:
+        time = np.asarray(f["time"][()], dtype=float)
+        variables = [name for name in f if name != "time"]
+        names = [_text(f[name].attrs.get("channel", name)) for name in variables]
+        units = [_text(f[name].attrs.get("units", "")) for name in variables]
+        descriptions = [_text(f[name].attrs.get("description", "")) for name in variables]
+        attrs = {key: _plain(value) for key, value in f.attrs.items()}
+    return time, names, units, descriptions, attrs
+
+
+def _text(value: Any) -> str:
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def _plain(value: Any) -> Any:
+    if isinstance(value, bytes):
+        return value.decode()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def check_budget(t0: float, t_end: float, output_step: float | None, n_channels: int, budget: int) -> str | None:
+    """A message when a run on the regular grid ``output_step`` would write more than ``budget`` bytes
+    (``(t_end - t0) / output_step + 1`` samples x channels x 8 bytes); None when it fits or the sample
+    count is not known before the run (output at every step: checked while it goes)."""
+    if output_step is None:
+        return None
+    samples = math.ceil((t_end - t0) / output_step) + 1  # the grid points before t_end, and t_end
+    size = samples * n_channels * 8
+    if size <= budget:
+        return None
+    return (f"the run would write {samples} samples x {n_channels} channels x 8 bytes = {format_size(size)}, "
+            f"above max_output_bytes = {format_size(budget)}; raise max_output_bytes, set a coarser output_step "
+            "or a shorter t_end")
+
+
+def rows_per_block(n_channels: int) -> int:
+    """Samples read at once when copying results: at most 65536, and at most :data:`_BUFFER_BYTES` of values."""
+    return max(1, min(65536, _BUFFER_BYTES // (8 * (n_channels + 1))))
+
+
+def write_csv(results, path: str | os.PathLike) -> Path:
+    """Writes ``time`` and one column per channel to a CSV file, header ``name [unit]``, block after
+    block (a file-backed ``results`` is never read whole); temporary name, then renamed into place."""
+    path = Path(path)
+    temporary = temporary_path(path)
+    names = results.channels
+    header = ",".join(["time [s]", *(f"{name} [{results.unit(name)}]" for name in names)])
+    block = rows_per_block(len(names))
+    try:
+        with open(temporary, "w", encoding="utf-8", newline="") as f:
+            f.write(header + "\n")
+            for start in range(0, len(results), block):
+                stop = min(len(results), start + block)
+                rows = np.vstack([results.time[start:stop], results.channel_block(start, stop)]).T
+                np.savetxt(f, rows, delimiter=",", fmt="%.17g")
+        os.replace(temporary, path)
+    except BaseException:
+        temporary.unlink(missing_ok=True)
+        raise
+    return path
+
+
+def budget_option(raw: Any, to_file: bool) -> int:
+    """``max_output_bytes`` in bytes: ``raw`` (a number or ``"2 GiB"``) or the default for a run with a
+    results file (:data:`DEFAULT_MAX_FILE_BYTES`) or in memory (:data:`DEFAULT_MAX_MEMORY_BYTES`);
+    raises ModelError at ``simulation.max_output_bytes``."""
+    from .errors import ModelError
+
+    if raw is None:
+        return DEFAULT_MAX_FILE_BYTES if to_file else DEFAULT_MAX_MEMORY_BYTES
+    try:
+        return parse_size(raw)
+    except ValueError as exc:
+        raise ModelError([("simulation.max_output_bytes", str(exc))]) from None
+
+
+def stream_run(path: str | os.PathLike, channels: dict, run, make_results):
+    """Runs ``run(sink)`` with a :class:`ResultsWriter` on ``path`` as its sink and returns
+    ``(results, raw)``: ``make_results(raw)`` with its channels read from the finished file (``path``,
+    or :func:`partial_path` when the run stopped early). Any exception (from the run, the sink or an
+    interrupt) removes the temporary file and leaves ``path`` as it was."""
+    writer = ResultsWriter(path, channels["names"], channels["units"], channels["descriptions"])
+    try:
+        raw = run(writer.append)
+        results = make_results(raw)
+        results.time = writer.times()
+        target = writer.finish(results.file_attributes(), complete=raw["error"] is None)
+    except BaseException:
+        writer.abort()
+        raise
+    results.read_from(target)
+    return results, raw
