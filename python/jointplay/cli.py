@@ -400,6 +400,9 @@ def print_summary(results) -> None:
     for key in ("smallest_step", "largest_step"):
         if key in st:
             t.add_row(key.replace("_", " "), _fmt(st[key], "s"))
+    inner = (results.extrema or {}).get("inner_evaluations")
+    if inner is not None:  # the cost of finding the peaks between steps
+        t.add_row("evaluations for peaks inside steps", str(inner))
     t.add_row("wall time", _fmt(s["wall_time"], "s"))
     out.print(t)
 

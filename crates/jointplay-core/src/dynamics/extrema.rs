@@ -106,6 +106,8 @@ pub(crate) struct PeakGroup {
     improved: Vec<bool>,
     /// Evaluations made in the current step.
     points: StepPoints,
+    /// Evaluations inside steps (probes and searches) over the run.
+    pub inner_evaluations: usize,
 }
 
 /// The times and values of the evaluations made in one step.
@@ -170,6 +172,7 @@ impl PeakGroup {
             search: vec![false; n],
             improved: vec![false; n],
             points: StepPoints::new(n),
+            inner_evaluations: 0,
         }
     }
 
@@ -235,6 +238,7 @@ impl PeakGroup {
     /// one in the next step (pending). True when some search is due.
     fn probe_slope<P: StepProbe>(&mut self, probe: &mut P, t_old: f64, t_new: f64) -> bool {
         let t_probe = t_new - PROBE_FRACTION * (t_new - t_old);
+        self.inner_evaluations += 1;
         if self.kind.evaluate(probe, t_probe, &mut self.scratch).is_err() {
             return false;
         }
@@ -264,7 +268,9 @@ impl PeakGroup {
             return;
         }
         let (kind, peaks, scratch, points) = (self.kind, &mut self.peaks, &mut self.scratch, &mut self.points);
+        let evaluations = &mut self.inner_evaluations;
         let mut score = |t: f64| -> Option<f64> {
+            *evaluations += 1;
             kind.evaluate(probe, t, scratch).ok()?;
             Self::offer(peaks, kind, scratch, t);
             points.push(t, scratch);

@@ -60,6 +60,10 @@ pub struct JointExtrema {
 pub struct Extrema {
     /// Accepted steps observed.
     pub steps: usize,
+    /// Evaluations of the mechanism the tracker made inside steps (a probe
+    /// before a step end that set a new peak, and the searches of peaks inside
+    /// steps), on top of the integrator's; the cost of finding peaks between steps.
+    pub inner_evaluations: usize,
     /// Start of the run [s].
     pub t_start: f64,
     /// End of the last accepted step [s].
@@ -110,6 +114,14 @@ impl ExtremaTracker {
                 }
             })
             .collect();
-        Extrema { steps: self.steps, t_start: self.t_start, t_end: self.t_last, channels, point_accelerations, clearance_joints }
+        Extrema {
+            steps: self.steps,
+            inner_evaluations: self.channels.inner_evaluations,
+            t_start: self.t_start,
+            t_end: self.t_last,
+            channels,
+            point_accelerations,
+            clearance_joints,
+        }
     }
 }

@@ -145,3 +145,18 @@ fn channels_that_peak_together_share_one_search() {
     assert!((first.score - 1.0).abs() < 1e-8 && (second.score - 3.0).abs() < 3e-8, "{first:?} {second:?}");
     assert_eq!(second.value.signum(), -1.0);
 }
+
+#[test]
+fn inner_evaluations_count_the_probe_and_the_search() {
+    // a peak strictly inside the second step: the first step end sets a record
+    // (one probe), the second one is searched; every evaluation inside a step is counted
+    let pulse = |t: f64| (-((t - 0.35) / 0.2).powi(2)).exp();
+    let mut probe = Known { channel: pulse, gap: |_| -1.0, evaluations: 0 };
+    let mut tracker = ExtremaTracker::new(1, 1);
+    tracker.begin(&mut probe, 0.0).unwrap();
+    let at_steps = 1 + 2; // the start and the two step ends
+    tracker.observe(&mut probe, 0.0, 0.3).unwrap();
+    tracker.observe(&mut probe, 0.3, 0.6).unwrap();
+    assert!(tracker.channels.inner_evaluations > 1, "a probe and a search");
+    assert_eq!(tracker.channels.inner_evaluations, probe.evaluations - at_steps);
+}
