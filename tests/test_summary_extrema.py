@@ -133,7 +133,7 @@ def test_older_results_files_fall_back_to_the_samples_and_say_so(dry_runs, tmp_p
     assert s["peaks"]["B.fn"] == pytest.approx(float(np.max(np.abs(old["B.fn"]))))
     rows = {row[0]: row[2:] for row in peak_table([dry_runs[1e-3], old], ["B.fn", "slider.x"])}
     assert not rows["B.fn"][0].endswith("(samples)") and rows["B.fn"][1].endswith("(samples)")
-    assert rows["slider.x"][0] == rows["slider.x"][1]
+    assert rows["slider.x"][0] == rows["slider.x"][1] and rows["slider.x"][0].endswith("(samples)")
 
 
 def test_compare_peak_table_reports_the_tracked_peaks(dry_runs):

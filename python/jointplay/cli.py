@@ -491,7 +491,8 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
         raise _bad_input(f"--channel: {exc.args[0]}", []) from None
     except OSError as exc:
         raise _bad_input(f"-o {output}: cannot write the figures ({exc.strerror or exc})", []) from None
-    table = Table("channel", "unit", *labels, title="peak |value|")
+    table = Table("channel", "unit", *labels,
+                  title="peak |value| over every accepted step ((samples): over the saved samples only)")
     for row in peak_table(runs, names):
         table.add_row(*row)
     out.print(table)

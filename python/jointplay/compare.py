@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from .plots import FORMATS, _figure, _save, clearance_joints, crank_angle_deg, default_channels, figure_folder
-from .results import PEAK_UNITS, Results
+from .results import Results
 
 
 def default_compare_channels(runs: Sequence[Results]) -> list[str]:
@@ -67,10 +67,11 @@ def compare_figures(runs: Sequence[Results], labels: Sequence[str], out_dir, cha
 def peak_table(runs: Sequence[Results], channels: Sequence[str]) -> list[list[str]]:
     """Rows ``[channel, unit, peak |value| of each run]`` (``-`` where a run lacks the channel).
 
-    Peaks of force, moment, acceleration and pressure channels and the penetration of clearance
-    joints come from :attr:`Results.extrema`, tracked at every accepted step whatever the output
-    step. Other channels (positions, velocities) and results files written before the extrema were
-    tracked use the saved samples; a peak of the latter kind is marked ``(samples)``.
+    Peaks of force, moment, acceleration and pressure channels and the penetration and eccentricity
+    ratio of clearance joints come from :attr:`Results.extrema`, tracked at every accepted step
+    whatever the output step. Other channels (positions, velocities) and results files written before
+    the extrema were tracked use the saved samples, and such a peak is marked ``(samples)``: it may
+    miss what happens between two samples.
     """
     rows = []
     for name in channels:
@@ -86,8 +87,7 @@ def _peak_cell(run: Results, name: str) -> str:
     tracked = tracked_peak(run, name)
     if tracked is not None:
         return f"{tracked:.4g}"
-    sampled = f"{np.max(np.abs(run[name])):.4g}"
-    return f"{sampled} (samples)" if run.extrema is None and run.unit(name) in PEAK_UNITS else sampled
+    return f"{np.max(np.abs(run[name])):.4g} (samples)"
 
 
 def tracked_peak(run: Results, name: str) -> float | None:
