@@ -153,3 +153,10 @@ def test_function_helper_with_a_wrong_unit_is_reported_at_the_driver():
     m._spec["drivers"].clear()
     with pytest.raises(jp.ModelError, match=r"drivers.motor.function.rate: must be an angular velocity"):
         m.add_driver("motor", "O", fn.constant_speed("5 m/s"))
+
+
+def test_reynolds_only_arguments_of_a_closed_form_film_are_an_error():
+    with pytest.raises(jp.ModelError, match=r"lubrication.cavitation: applies only to the Reynolds models "
+                                            r"\(reynolds_exact, reynolds_table\), not to hamrock_short"):
+        laws.lubrication("hamrock_short", "400 cP", cavitation="gumbel")
+    assert laws.lubrication("reynolds_table", "400 cP")["reynolds"]["cavitation"] == "swift_stieber"

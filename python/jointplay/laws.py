@@ -127,22 +127,35 @@ def centipoise(value: float) -> float:
     return float(value) * 1e-3
 
 
-def lubrication(model: str, viscosity: float, transition: dict | None = None, *, cavitation: str = "swift_stieber",
-                n_circumferential: int | None = None, n_axial: int | None = None, ambient_pressure: float = 0.0,
-                groove_supply_pressure: float | None = None) -> dict:
+def lubrication(model: str, viscosity: float, transition: dict | None = None, *, cavitation: str | None = None,
+                n_circumferential: int | None = None, n_axial: int | None = None, ambient_pressure: Any = None,
+                groove_supply_pressure: Any = None) -> dict:
     """A lubricant film for a clearance joint: ``model`` one of :data:`FILM_MODELS`, ``viscosity`` [Pa s]
-    (a number, or ``"400 cP"``; see :func:`centipoise`), ``transition`` from :func:`wang_transition` (default), :func:`flores_transition`
-    or :func:`switch_transition`. The Reynolds models take the cavitation condition (``gumbel``,
-    ``swift_stieber``, ``elrod_adams``), the grid, the ambient pressure at the ends [Pa] and the supply
-    pressure of a circumferential groove at mid-length [Pa]."""
+    (a number, or ``"400 cP"``; see :func:`centipoise`), ``transition`` from :func:`wang_transition`
+    (default), :func:`flores_transition` or :func:`switch_transition`. Only the Reynolds models
+    (``reynolds_exact``, ``reynolds_table``) take the cavitation condition (``gumbel``,
+    ``swift_stieber`` by default, ``elrod_adams``), the grid, the ambient pressure at the ends [Pa]
+    (0 by default) and the supply pressure of a circumferential groove at mid-length [Pa]; giving one
+    of them to a closed-form model is a ModelError, as in a model file."""
+    from .errors import ModelError, Problem
+
     if model not in FILM_MODELS:
         raise ValueError(f"unknown film model {model!r}; choose one of {', '.join(FILM_MODELS)}")
-    spec = {"model": model, "viscosity": _si(viscosity, "viscosity", "lubrication.viscosity"), "transition": transition or wang_transition()}
-    if model.startswith("reynolds"):
-        spec["reynolds"] = {"cavitation": cavitation, "n_circumferential": n_circumferential, "n_axial": n_axial,
-                            "ambient_pressure": _si(ambient_pressure, "pressure", "lubrication.ambient_pressure"),
-                            "groove_supply_pressure": None if groove_supply_pressure is None else
-                            _si(groove_supply_pressure, "pressure", "lubrication.groove_supply_pressure")}
+    spec = {"model": model, "viscosity": _si(viscosity, "viscosity", "lubrication.viscosity"),
+            "transition": transition or wang_transition()}
+    reynolds_only = {"cavitation": cavitation, "n_circumferential": n_circumferential, "n_axial": n_axial,
+                     "ambient_pressure": ambient_pressure, "groove_supply_pressure": groove_supply_pressure}
+    if not model.startswith("reynolds"):
+        given = [key for key, value in reynolds_only.items() if value is not None]
+        if given:
+            raise ModelError([Problem(f"lubrication.{key}", f"applies only to the Reynolds models (reynolds_exact, "
+                                                            f"reynolds_table), not to {model}") for key in given])
+        return spec
+    spec["reynolds"] = {"cavitation": cavitation or "swift_stieber", "n_circumferential": n_circumferential,
+                        "n_axial": n_axial,
+                        "ambient_pressure": _si(ambient_pressure or 0.0, "pressure", "lubrication.ambient_pressure"),
+                        "groove_supply_pressure": None if groove_supply_pressure is None else
+                        _si(groove_supply_pressure, "pressure", "lubrication.groove_supply_pressure")}
     return spec
 
 
