@@ -1,6 +1,6 @@
 //! All conversions between Python objects and core types live here.
 
-use jointplay_core::dynamics::{ChannelInfo, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
+use jointplay_core::dynamics::{ChannelInfo, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::integrate::Method;
 use jointplay_core::SimulationError;
 use numpy::{PyArray1, PyArrayMethods};
@@ -126,25 +126,8 @@ pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>
     d.set_item("inner_evaluations", e.inner_evaluations)?;
     d.set_item("t_start", finite(e.t_start))?;
     d.set_item("t_end", finite(e.t_end))?;
-    let channels = PyDict::new(py);
-    for c in &e.channels {
-        let entry = PyDict::new(py);
-        entry.set_item("peak", c.peak)?;
-        entry.set_item("value", c.value)?;
-        entry.set_item("time", c.time)?;
-        entry.set_item("unit", c.unit)?;
-        channels.set_item(&c.name, entry)?;
-    }
-    d.set_item("channels", channels)?;
-    let points = PyDict::new(py);
-    for c in &e.point_accelerations {
-        let entry = PyDict::new(py);
-        entry.set_item("peak", c.peak)?;
-        entry.set_item("time", c.time)?;
-        entry.set_item("unit", c.unit)?;
-        points.set_item(&c.name, entry)?;
-    }
-    d.set_item("point_accelerations", points)?;
+    d.set_item("channels", peaks(py, &e.channels, true)?)?;
+    d.set_item("point_accelerations", peaks(py, &e.point_accelerations, false)?)?;
     let joints = PyDict::new(py);
     for j in &e.clearance_joints {
         let entry = PyDict::new(py);
@@ -166,6 +149,22 @@ pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>
     }
     d.set_item("clearance_joints", joints)?;
     Ok(d)
+}
+
+/// Peaks by name: `{name: {"peak", "time", "unit"}}`, with the signed `"value"` when `with_value`.
+fn peaks<'py>(py: Python<'py>, peaks: &[ChannelPeak], with_value: bool) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    for c in peaks {
+        let entry = PyDict::new(py);
+        entry.set_item("peak", c.peak)?;
+        if with_value {
+            entry.set_item("value", c.value)?;
+        }
+        entry.set_item("time", c.time)?;
+        entry.set_item("unit", c.unit)?;
+        out.set_item(&c.name, entry)?;
+    }
+    Ok(out)
 }
 
 /// Summary of a compiled model.
