@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 import re
 import secrets
 from pathlib import Path
@@ -105,7 +106,11 @@ class ResultsWriter:
 
     Appends are gathered in a buffer of one HDF5 chunk (4096 samples) or at most
     :data:`_BUFFER_BYTES` before they go to the file: each write to a variable costs about 60 us
-    whatever its length, which adds up over thousands of channels written a few samples at a time."""
+    whatever its length, which adds up over thousands of channels written a few samples at a time.
+    Each append is written (and compressed) by a background thread while the caller goes on: the
+    simulation, which runs with the GIL released, computes the next chunk meanwhile. One append is
+    in flight at a time (its copy is the only extra memory), and an error of a background write is
+    raised by the next call."""
 
     def __init__(self, path: str | os.PathLike, names: list[str], units: list[str], descriptions: list[str]):
         import h5py
@@ -118,6 +123,11 @@ class ResultsWriter:
         self._written = 0
         self._capacity = max(1, min(CHUNK_SAMPLES, _BUFFER_BYTES // (8 * (len(self.names) + 1))))
         self._buffer = np.empty((len(self.names) + 1, self._capacity))  # row 0: time; then the channels
+        self._writing: threading.Thread | None = None
+        self._write_error: BaseException | None = None
+        #: The times appended, kept in memory as well: the results hold them anyway, and reading them
+        #: back from the file at the end would decompress them again.
+        self._time_parts: list[np.ndarray] = []
         self._file = h5py.File(self.temporary, "w", track_order=True, libver=("v108", "latest"),
                                rdcc_nbytes=_CHUNK_CACHE_BYTES)
         self._channels: list = []
@@ -144,10 +154,34 @@ class ResultsWriter:
                                          compression="gzip", compression_opts=1, shuffle=True)
 
     def append(self, times: np.ndarray, values: np.ndarray) -> None:
-        """Appends ``len(times)`` samples; ``values`` has shape (samples, channels)."""
-        times = np.asarray(times, dtype=float)
+        """Appends ``len(times)`` samples; ``values`` has shape (samples, channels). Returns once a
+        copy is handed to the background writer (after the previous append is written)."""
+        times = np.array(times, dtype=float)  # copies: the caller may reuse its buffers
+        values = np.array(values, dtype=float).reshape(times.size, len(self.names))
+        self._wait()
+        self._time_parts.append(times)
+        self._writing = threading.Thread(target=self._append_in_background, args=(times, values),
+                                         name="jointplay results writer", daemon=True)
+        self._writing.start()
+
+    def _append_in_background(self, times: np.ndarray, values: np.ndarray) -> None:
+        try:
+            self._append(times, values)
+        except BaseException as exc:  # raised by the next call, in the appending thread
+            self._write_error = exc
+
+    def _wait(self) -> None:
+        """Waits for the append in flight, and raises its error if it failed."""
+        if self._writing is not None:
+            self._writing.join()
+            self._writing = None
+        if self._write_error is not None:
+            error, self._write_error = self._write_error, None
+            raise error
+
+    def _append(self, times: np.ndarray, values: np.ndarray) -> None:
+        """Buffers the samples and writes every full buffer."""
         n = times.size
-        values = np.asarray(values, dtype=float).reshape(n, len(self.names))
         done = 0
         while done < n:
             held = self.samples - self._written
@@ -177,13 +211,16 @@ class ResultsWriter:
 
     def times(self) -> np.ndarray:
         """The times appended so far [s]."""
-        self._flush()
-        return np.asarray(self._time[()], dtype=float)
+        self._wait()
+        if len(self._time_parts) != 1:
+            self._time_parts = [np.concatenate(self._time_parts) if self._time_parts else np.empty(0)]
+        return self._time_parts[0]
 
     def finish(self, attrs: dict[str, Any], *, complete: bool = True) -> Path:
         """Writes ``time`` and the dimension lists and attributes, closes the file and renames it to
         the target path (complete) or to :func:`partial_path` (a run that stopped early). Returns the path."""
         try:
+            self._wait()
             self._flush()
             self._write_time()
             self._attach_dimension()
@@ -201,6 +238,10 @@ class ResultsWriter:
     def abort(self) -> None:
         """Closes and removes the temporary file (a good file at the target path stays as it was)."""
         try:
+            try:
+                self._wait()
+            except BaseException:  # the file is removed anyway
+                pass
             self._file.close()
         finally:
             self.temporary.unlink(missing_ok=True)
@@ -211,9 +252,8 @@ class ResultsWriter:
         packed = {"chunks": (min(n, CHUNK_SAMPLES),), "compression": "gzip", "compression_opts": 1,
                   "shuffle": True} if n else {}  # (no chunks in an empty dataset)
         time = self._file.create_dataset("time", shape=(n,), dtype="f8", **packed)
-        for start in range(0, n, 16 * CHUNK_SAMPLES):
-            stop = min(n, start + 16 * CHUNK_SAMPLES)
-            time[start:stop] = self._time[start:stop]
+        if n:
+            time[:] = self.times()
         del self._file[_STREAMED_TIME]
         time.attrs.update({"units": "s", "long_name": "time", "standard_name": "time", "axis": "T",
                            "description": "time"})
