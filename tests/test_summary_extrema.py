@@ -186,3 +186,17 @@ def test_cli_run_rejects_a_bad_output_step_with_exit_2(tmp_path):
     result = invoke("run", str(DRY), "--output-step", "1 kg", "-o", str(tmp_path / "dry.nc"))
     assert result.exit_code == 2
     assert "--output-step:" in result.output and "Traceback" not in result.output
+
+
+def test_figures_mark_the_tracked_peaks_that_coarse_samples_miss(dry_runs):
+    from jointplay.plots import sampling_note, tracked_peak_point
+
+    coarse = dry_runs[1e-3]
+    at, value = tracked_peak_point(coarse, "B.fn")
+    assert value == pytest.approx(coarse.extrema["channels"]["B.fn"]["peak"])
+    assert value > 3 * np.max(np.abs(coarse["B.fn"])), "the samples every 1 ms miss the first impact"
+    at_gap, ratio = tracked_peak_point(coarse, "B.eccentricity_ratio")
+    assert ratio > 1 and at_gap == pytest.approx(coarse.extrema["clearance_joints"]["B"]["max_penetration_time"])
+    assert tracked_peak_point(coarse, "slider.x") is None
+    assert sampling_note(coarse) == f"{len(coarse)} samples saved every 1 ms"
+    assert sampling_note(dry_runs[None]).endswith("samples, one per accepted step")

@@ -12,7 +12,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .plots import FORMATS, _figure, _save, clearance_joints, crank_angle_deg, default_channels, figure_folder
+from .plots import (FORMATS, _figure, _save, clearance_joints, crank_angle_deg, default_channels, figure_folder,
+                    sampling_note, tracked_peak_point)
 from .results import Results
 
 
@@ -29,21 +30,27 @@ def default_compare_channels(runs: Sequence[Results]) -> list[str]:
 
 def overlay(runs: Sequence[Results], labels: Sequence[str], channel: str, path: Path,
             crank: str | None = None) -> Path:
-    """One channel of every run that has it, against time [ms] or the crank angle [deg]."""
+    """One channel of every run that has it, against time [ms] or the crank angle [deg]: the saved
+    samples, and a dot in the run's colour at its extremum tracked over every accepted step."""
     fig = _figure(7.5, 3.6)
     ax = fig.subplots()
-    unit = ""
+    unit, marked = "", False
     for run, label in zip(runs, labels):
         if channel not in run:
             continue
         unit = run.unit(channel)
         x = crank_angle_deg(run, crank) if crank else run.time * 1e3
-        ax.plot(x, run[channel], lw=0.8, label=label)
+        line, = ax.plot(x, run[channel], lw=0.8, label=f"{label} ({sampling_note(run)})")
+        peak = tracked_peak_point(run, channel)
+        if peak is not None and run.time.size > 1:
+            at = np.interp(peak[0], run.time, x) if crank else peak[0] * 1e3
+            ax.plot(at, peak[1], "o", ms=4, color=line.get_color())
+            marked = True
     ax.set_xlabel(f"crank angle ({crank}.angle) [deg]" if crank else "time [ms]")
     ax.set_ylabel(f"{channel} [{unit}]")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7)
     ax.grid(alpha=0.3)
-    ax.set_title(channel, fontsize=10)
+    ax.set_title(channel + ("; dots: extrema over every accepted step" if marked else ""), fontsize=10)
     return _save(fig, path)
 
 

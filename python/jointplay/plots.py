@@ -92,17 +92,50 @@ def crank_angle_deg(results: Results, crank: str) -> np.ndarray:
 
 
 def time_histories(results: Results, channels: Sequence[str], path: Path, label: str | None = None) -> Path:
-    """One panel per channel against time [ms]."""
+    """One panel per channel against time [ms]: the saved samples, and a dot at the peak tracked over
+    every accepted step (:attr:`Results.extrema`), which coarse samples can miss."""
     fig = _figure(7.5, 1.9 * len(channels) + 0.8)
     axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
     t_ms = results.time * 1e3
+    marked = False
     for ax, name in zip(axes, channels):
         ax.plot(t_ms, results[name], lw=0.9)
+        peak = tracked_peak_point(results, name)
+        if peak is not None:
+            ax.plot(peak[0] * 1e3, peak[1], "o", ms=4, color="tab:red")
+            marked = True
         ax.set_ylabel(f"{name}\n[{results.unit(name)}]", fontsize=8)
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel("time [ms]")
-    fig.suptitle(label or _title(results), fontsize=10)
+    note = sampling_note(results) + ("; dots: peaks over every accepted step" if marked else "")
+    fig.suptitle(f"{label or _title(results)}\n{note}", fontsize=9)
     return _save(fig, path)
+
+
+def tracked_peak_point(results: Results, name: str) -> tuple[float, float] | None:
+    """Time [s] and signed value of the extremum of channel ``name`` tracked at every accepted step, if
+    the results have it: the peak of a force, moment, acceleration or pressure channel; the deepest
+    penetration, largest eccentricity ratio or thinnest film of a clearance joint."""
+    extrema = results.extrema or {}
+    channel = extrema.get("channels", {}).get(name)
+    if channel is not None:
+        return None if channel.get("time") is None else (float(channel["time"]), float(channel["value"]))
+    element, _, quantity = name.rpartition(".")
+    joint = extrema.get("clearance_joints", {}).get(element)
+    if joint is None:
+        return None
+    # the largest gap |e| - c: deepest penetration when the journal touched, else thinnest film
+    at = joint.get("max_penetration_time") if joint.get("max_penetration_time") is not None else joint.get("min_film_time")
+    value = {"penetration": joint.get("max_penetration"), "eccentricity_ratio": joint.get("max_eccentricity_ratio"),
+             "film_min": joint.get("min_film")}.get(quantity)
+    return None if at is None or value is None else (float(at), float(value))
+
+
+def sampling_note(results: Results) -> str:
+    """What the curves are: ``"1 001 samples saved every 1 ms"`` or ``"a sample at each of 1 832 accepted steps"``."""
+    n = f"{len(results):,}".replace(",", " ")
+    step = (results.options or {}).get("output_step")
+    return f"{n} samples saved every {step * 1e3:.4g} ms" if step else f"{n} samples, one per accepted step"
 
 
 def orbit(results: Results, joint: str, path: Path) -> Path:
@@ -135,8 +168,15 @@ def force_vs_crank(results: Results, joint: str, crank: str, path: Path) -> Path
     """Contact force of a clearance joint against the crank angle [deg]."""
     fig = _figure(7.0, 3.6)
     ax = fig.subplots()
-    ax.plot(crank_angle_deg(results, crank), results[f"{joint}.fn"], lw=0.8)
-    ax.set_xlabel(f"crank angle ({crank}.angle) [deg]")
+    angle = crank_angle_deg(results, crank)
+    ax.plot(angle, results[f"{joint}.fn"], lw=0.8)
+    peak = tracked_peak_point(results, f"{joint}.fn")
+    if peak is not None and results.time.size > 1:
+        # the crank angle at the peak's time, interpolated between the samples around it
+        ax.plot(np.interp(peak[0], results.time, angle), peak[1], "o", ms=4, color="tab:red",
+                label="peak over every accepted step")
+        ax.legend(fontsize=7, loc="upper right")
+    ax.set_xlabel(f"crank angle ({crank}.angle) [deg]; {sampling_note(results)}")
     ax.set_ylabel(f"{joint}.fn [{results.unit(f'{joint}.fn')}]")
     ax.grid(alpha=0.3)
     ax.set_title(f"{_title(results)}: contact force in {joint}", fontsize=9)
