@@ -4,6 +4,7 @@ attributes, the output budget, CSV, and the rules that keep a good file from bei
 from __future__ import annotations
 
 import json
+import sys
 from datetime import datetime
 from pathlib import Path
 
@@ -197,7 +198,8 @@ def test_progress_reports_the_end_of_a_streamed_run(tmp_path, dry_model):
 def test_sink_receives_chunks_bounded_by_the_core(dry_model):
     chunks = []
     core = dry_model.compile()
-    raw = core.simulate(0.0, 0.024, {"output_step": 1e-6}, None, lambda t, v: chunks.append((t.copy(), v.shape)))
+    raw = core.simulate(0.0, 0.024, {"output_step": 1e-6}, None,
+                        lambda t, v, start: chunks.append((t.copy(), v.shape)))
     assert raw["error"] is None and raw["time"].size == 0
     rows = (4 << 20) // (8 * 53)
     assert [shape for _, shape in chunks] == [(rows, 53), (rows, 53), (24001 - 2 * rows, 53)]
@@ -207,7 +209,7 @@ def test_sink_receives_chunks_bounded_by_the_core(dry_model):
 def test_exception_in_the_sink_stops_the_run_and_is_raised(dry_model):
     calls = []
 
-    def sink(times, values):
+    def sink(times, values, start):
         calls.append(times.size)
         raise OSError("No space left on device")
 
@@ -239,19 +241,45 @@ def test_failed_run_goes_to_partial_name_and_leaves_a_good_file(tmp_path, dry_mo
 
 
 def test_interrupted_run_leaves_a_good_file_and_no_temporary(tmp_path, dry_model, monkeypatch):
+    # Ctrl-C inside the hand-over of the second chunk: the chunk is handed over again, the run stops as
+    # interrupted, and what was computed goes to the partial file; the good file stays as it was
+    path, before = good_file(tmp_path)
+    append = ResultsWriter.append
+    interrupts = []
+
+    def interrupted_once_on_second_chunk(self, times, values, start=None):
+        if start and not interrupts:
+            interrupts.append(start)
+            raise KeyboardInterrupt
+        append(self, times, values, start)
+
+    monkeypatch.setattr(ResultsWriter, "append", interrupted_once_on_second_chunk)
+    with pytest.raises(jp.SimulationError) as caught:
+        dry_model.simulate(0.024, output_file=path, output_step=1e-6)
+    assert caught.value.kind == "Interrupted" and interrupts
+    assert path.read_bytes() == before
+    partial = open_results(partial_path(path))
+    assert len(partial) > interrupts[0] and np.all(np.diff(partial.time) > 0), "the retried chunk is there once"
+    np.testing.assert_allclose(partial.time, np.arange(len(partial)) * 1e-6, atol=1e-15)
+    assert leftovers(tmp_path) == []
+
+
+def test_ctrl_c_pressed_again_and_again_stops_the_run_with_what_was_written(tmp_path, dry_model, monkeypatch):
     path, before = good_file(tmp_path)
     append = ResultsWriter.append
 
-    def interrupted_on_second_chunk(self, times, values):
-        if self.samples:
+    def always_interrupted_after_the_first_chunk(self, times, values, start=None):
+        if start:
             raise KeyboardInterrupt
-        append(self, times, values)
+        append(self, times, values, start)
 
-    monkeypatch.setattr(ResultsWriter, "append", interrupted_on_second_chunk)
-    with pytest.raises(KeyboardInterrupt):
+    monkeypatch.setattr(ResultsWriter, "append", always_interrupted_after_the_first_chunk)
+    with pytest.raises(jp.SimulationError) as caught:
         dry_model.simulate(0.024, output_file=path, output_step=1e-6)
+    assert caught.value.kind == "OutputSink" and "interrupted (Ctrl-C)" in caught.value.cause
     assert path.read_bytes() == before
-    assert leftovers(tmp_path) == [] and not partial_path(path).exists()
+    assert len(open_results(partial_path(path))) == (4 << 20) // (8 * 53), "the first chunk"
+    assert leftovers(tmp_path) == []
 
 
 def test_two_writers_of_one_path_leave_one_complete_result(tmp_path):
@@ -367,3 +395,41 @@ def test_save_refuses_an_unknown_suffix(tmp_path):
         synthetic(1, 3).save(tmp_path / "r.txt")
     assert list(tmp_path.iterdir()) == []
 
+
+
+def test_a_chunk_handed_over_again_is_written_once(tmp_path):
+    # after Ctrl-C interrupts the sink call, the core hands the same chunk over again with the same start
+    from jointplay.resultsfile import ResultsWriter
+
+    writer = ResultsWriter(tmp_path / "w.nc", ["a.x", "a.y"], ["m", "m"], ["x", "y"])
+    times = np.arange(5.0)
+    values = np.column_stack([times, -times])
+    writer.append(times, values, 0)
+    writer.append(times, values, 0)
+    writer.append(times + 5, values, 5)
+    np.testing.assert_array_equal(writer.times(), np.arange(10.0))
+    target = writer.finish({})
+    again = open_results(target)
+    np.testing.assert_array_equal(again["a.y"], -np.r_[times, times])
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="sends SIGINT to a child process")
+def test_ctrl_c_during_a_streamed_run_keeps_what_was_computed(tmp_path):
+    import signal
+    import subprocess
+    import time as clock
+
+    out = tmp_path / "long.nc"
+    command = [sys.executable, "-m", "jointplay.cli", "run", str(DRY), "-o", str(out), "-q", "--t-end", "20 s"]
+    # the child gets the default SIGINT disposition, as in a terminal (a background job ignores it)
+    child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    clock.sleep(3.0)
+    child.send_signal(signal.SIGINT)
+    _, stderr = child.communicate(timeout=60)
+    assert child.returncode == 1, stderr
+    assert "simulation failed (Interrupted)" in stderr and "long.partial.nc" in stderr
+    assert not out.exists()
+    partial = open_results(tmp_path / "long.partial.nc")
+    assert len(partial) > 1000 and np.all(np.diff(partial.time) > 0), "every sample once, in order"
+    assert partial.extrema["channels"]["B.fn"]["peak"] > 4e4, "the summary of what was computed is kept"

@@ -420,15 +420,16 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
 
 
 def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None,
-         sink: Callable[[np.ndarray, np.ndarray], None] | None = None) -> dict:
+         sink: Callable[[np.ndarray, np.ndarray, int], None] | None = None) -> dict:
     """Runs the core in this thread with the GIL released. About ten times a second the core calls
     ``progress`` and lets pending signals run: on Ctrl-C the run stops at the next sample and what
     was computed is kept (the error says it was interrupted). With ``sink`` the samples go to
-    ``sink(times, values)`` in chunks instead of being returned."""
+    ``sink(times, values, start)`` in chunks instead of being returned (``start``: index of the first
+    sample; a chunk interrupted by Ctrl-C is handed over again with the same ``start``)."""
     last: list[float] = []  # time of the last sample recorded [s], once there is one
 
-    def forward(times: np.ndarray, values: np.ndarray) -> None:
-        sink(times, values)
+    def forward(times: np.ndarray, values: np.ndarray, start: int) -> None:
+        sink(times, values, start)
         last[:] = [float(times[-1])]
 
     raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward)

@@ -18,7 +18,9 @@ from __future__ import annotations
 
 import math
 import os
+import queue
 import threading
+from time import sleep
 import re
 import secrets
 from pathlib import Path
@@ -44,6 +46,8 @@ _CHUNK_CACHE_BYTES = 2 * CHUNK_SAMPLES * 8
 _BUFFER_BYTES = 64 * 2**20
 #: Scratch dataset holding the times while a run streams (``time`` is written at the end).
 _STREAMED_TIME = "_streamed_time"
+#: Wait between two looks at the writer's queue while a chunk is already waiting [s].
+_QUEUE_POLL = 0.002
 
 _SIZE = re.compile(r"^\s*(\d+(?:\.\d*)?|\.\d+)\s*([kKMGT]i?B|B)?\s*$")
 _FACTORS = {None: 1, "B": 1, "kB": 10**3, "MB": 10**6, "GB": 10**9, "TB": 10**12,
@@ -108,9 +112,10 @@ class ResultsWriter:
     :data:`_BUFFER_BYTES` before they go to the file: each write to a variable costs about 60 us
     whatever its length, which adds up over thousands of channels written a few samples at a time.
     Each append is written (and compressed) by a background thread while the caller goes on: the
-    simulation, which runs with the GIL released, computes the next chunk meanwhile. One append is
-    in flight at a time (its copy is the only extra memory), and an error of a background write is
-    raised by the next call."""
+    simulation, which runs with the GIL released, computes the next chunk meanwhile. At most one
+    chunk waits while another is written (their copies are the only extra memory), and an error of
+    a background write is raised by the next call. An append names the index of its first sample:
+    the same chunk appended again (after a Ctrl-C interrupted the call) is written once."""
 
     def __init__(self, path: str | os.PathLike, names: list[str], units: list[str], descriptions: list[str]):
         import h5py
@@ -123,14 +128,17 @@ class ResultsWriter:
         self._written = 0
         self._capacity = max(1, min(CHUNK_SAMPLES, _BUFFER_BYTES // (8 * (len(self.names) + 1))))
         self._buffer = np.empty((len(self.names) + 1, self._capacity))  # row 0: time; then the channels
-        self._writing: threading.Thread | None = None
+        self._queue: queue.SimpleQueue = queue.SimpleQueue()  # (first sample, times, values); None ends
         self._write_error: BaseException | None = None
+        #: Samples handed to the background writer.
+        self._offered = 0
         #: The times appended, kept in memory as well: the results hold them anyway, and reading them
         #: back from the file at the end would decompress them again.
         self._time_parts: list[np.ndarray] = []
         self._file = h5py.File(self.temporary, "w", track_order=True, libver=("v108", "latest"),
                                rdcc_nbytes=_CHUNK_CACHE_BYTES)
         self._channels: list = []
+        self._writer: threading.Thread | None = None
         try:
             self._time = self._resizable(_STREAMED_TIME)
             for name, unit, description in zip(self.names, units, descriptions):
@@ -138,6 +146,8 @@ class ResultsWriter:
         except BaseException:
             self.abort()
             raise
+        self._writer = threading.Thread(target=self._write_queued, name="jointplay results writer", daemon=True)
+        self._writer.start()
 
     def _channel(self, name: str, unit: str, description: str):
         """The variable of one channel, with its attributes."""
@@ -153,31 +163,49 @@ class ResultsWriter:
         return self._file.create_dataset(name, shape=(0,), maxshape=(None,), dtype="f8", chunks=(CHUNK_SAMPLES,),
                                          compression="gzip", compression_opts=1, shuffle=True)
 
-    def append(self, times: np.ndarray, values: np.ndarray) -> None:
-        """Appends ``len(times)`` samples; ``values`` has shape (samples, channels). Returns once a
-        copy is handed to the background writer (after the previous append is written)."""
+    def append(self, times: np.ndarray, values: np.ndarray, start: int | None = None) -> None:
+        """Appends ``len(times)`` samples, the first of index ``start`` (default: the next one);
+        ``values`` has shape (samples, channels). Returns once a copy is handed to the background
+        writer; a chunk whose ``start`` was handed over already is ignored.
+
+        Every step before the hand-over can be interrupted (Ctrl-C) and the call repeated: the
+        hand-over itself is one ``put``, and the writer drops a chunk it has taken already."""
+        start = self._offered if start is None else int(start)
+        if start < self._offered:
+            return
+        self._raise_write_error()
         times = np.array(times, dtype=float)  # copies: the caller may reuse its buffers
         values = np.array(values, dtype=float).reshape(times.size, len(self.names))
-        self._wait()
-        self._time_parts.append(times)
-        self._writing = threading.Thread(target=self._append_in_background, args=(times, values),
-                                         name="jointplay results writer", daemon=True)
-        self._writing.start()
+        while self._queue.qsize() >= 1:  # one chunk waits at most, while another is written
+            sleep(_QUEUE_POLL)
+            self._raise_write_error()
+        self._queue.put((start, times, values))
+        self._offered = start + times.size
 
-    def _append_in_background(self, times: np.ndarray, values: np.ndarray) -> None:
-        try:
-            self._append(times, values)
-        except BaseException as exc:  # raised by the next call, in the appending thread
-            self._write_error = exc
+    def _write_queued(self) -> None:
+        """The background writer: writes the queued chunks in order until ``None``."""
+        while (item := self._queue.get()) is not None:
+            start, times, values = item
+            if start < self.samples or self._write_error is not None:
+                continue  # taken already (handed over again after an interrupt), or writing failed
+            try:
+                self._time_parts.append(times)
+                self._append(times, values)
+            except BaseException as exc:  # raised by the next call, in the appending thread
+                self._write_error = exc
 
-    def _wait(self) -> None:
-        """Waits for the append in flight, and raises its error if it failed."""
-        if self._writing is not None:
-            self._writing.join()
-            self._writing = None
+    def _raise_write_error(self) -> None:
         if self._write_error is not None:
             error, self._write_error = self._write_error, None
             raise error
+
+    def _wait(self) -> None:
+        """Lets the background writer write what is queued and stop, then raises its error if any."""
+        if self._writer is not None:
+            self._queue.put(None)
+            self._writer.join()
+            self._writer = None
+        self._raise_write_error()
 
     def _append(self, times: np.ndarray, values: np.ndarray) -> None:
         """Buffers the samples and writes every full buffer."""

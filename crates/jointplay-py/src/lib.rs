@@ -55,28 +55,53 @@ fn poll(py: Python<'_>, progress: Option<&Py<PyAny>>, t: f64, raised: &Mutex<Opt
     }
 }
 
-/// A Python callable `sink(times, values)` receiving the samples chunk by chunk (GIL taken
-/// back for each call): `times` of shape (n,), `values` of shape (n, channels). An exception
-/// it raises is kept in `raised` (to be raised once the run has stopped) and stops the run.
+/// A Python callable `sink(times, values, start)` receiving the samples chunk by chunk (GIL
+/// taken back for each call): `times` of shape (n,), `values` of shape (n, channels), `start` the
+/// index of the first sample. An exception it raises is kept in `raised` (to be raised once the run
+/// has stopped) and stops the run, except a Ctrl-C (`KeyboardInterrupt`): the chunk is then handed
+/// over again with the same `start` (the sink takes it once) and the run is cancelled, so that it
+/// stops at its next sample as `Interrupted`, with everything computed kept.
 struct PythonSink {
     callable: Py<PyAny>,
     channels: usize,
     raised: Arc<Mutex<Option<PyErr>>>,
+    /// Samples handed over so far.
+    handed: usize,
+    /// The run's progress, cancelled by a Ctrl-C inside the sink.
+    progress: Arc<Progress>,
 }
+
+/// Times a chunk is handed over again after Ctrl-C interrupted the call (a user pressing Ctrl-C
+/// repeatedly then stops the run with what was written).
+const INTERRUPTED_HANDOVERS: usize = 3;
 
 impl SampleSink for PythonSink {
     fn write_chunk(&mut self, times: &[f64], rows: &[f64]) -> Result<(), String> {
         Python::attach(|py| {
-            let called = PyArray1::from_slice(py, rows)
-                .reshape([times.len(), self.channels])
-                .and_then(|values| self.callable.call1(py, (PyArray1::from_slice(py, times), values)));
-            called.map(drop).map_err(|error| {
-                let message = error.to_string();
-                if let Ok(mut slot) = self.raised.lock() {
-                    slot.get_or_insert(error);
+            let mut interrupted = false;
+            for _ in 0..=INTERRUPTED_HANDOVERS {
+                let called = PyArray1::from_slice(py, rows).reshape([times.len(), self.channels]).and_then(|values| {
+                    self.callable.call1(py, (PyArray1::from_slice(py, times), values, self.handed))
+                });
+                match called {
+                    Ok(_) => {
+                        self.handed += times.len();
+                        if interrupted {
+                            self.progress.cancel();
+                        }
+                        return Ok(());
+                    }
+                    Err(error) if error.is_instance_of::<PyKeyboardInterrupt>(py) => interrupted = true,
+                    Err(error) => {
+                        let message = error.to_string();
+                        if let Ok(mut slot) = self.raised.lock() {
+                            slot.get_or_insert(error);
+                        }
+                        return Err(message);
+                    }
                 }
-                message
-            })
+            }
+            Err("interrupted (Ctrl-C) while handing the samples to the results file".to_string())
         })
     }
 }
@@ -127,7 +152,7 @@ impl CoreModel {
     /// About every [`WATCH_INTERVAL`] the core takes the GIL back for a moment: it calls
     /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run at
     /// the next sample with what was computed kept. An exception raised by `progress` also
-    /// stops the run and is raised here. With `sink`, the samples go to `sink(times, values)`
+    /// stops the run and is raised here. With `sink`, the samples go to `sink(times, values, start)`
     /// in chunks of about 4 MiB while the run goes on (see [`PythonSink`]) and the returned
     /// `time` and `values` are empty; an exception in `sink` stops the run and is raised here.
     #[pyo3(signature = (t0, t_end, options, progress=None, sink=None))]
@@ -143,17 +168,20 @@ impl CoreModel {
         let options = conv::simulation_options(options)?;
         let model = Arc::clone(&self.model);
         let raised = Arc::new(Mutex::new(None));
-        let watched = {
+        let watched = Arc::new({
             let raised = Arc::clone(&raised);
             Progress::watched(WATCH_INTERVAL, move |t| Python::attach(|py| poll(py, progress.as_ref(), t, &raised)))
-        };
+        });
         let channels = self.model.channel_infos().len();
-        let sink = sink.map(|callable| Box::new(PythonSink { callable, channels, raised: Arc::clone(&raised) }) as Box<dyn SampleSink>);
+        let sink = sink.map(|callable| {
+            let progress = Arc::clone(&watched);
+            Box::new(PythonSink { callable, channels, raised: Arc::clone(&raised), handed: 0, progress }) as Box<dyn SampleSink>
+        });
         let run = py.detach(|| {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
                 let mut state = dynamics::assemble(&model, t0, &mut ws).map_err(|e| e)?;
-                Ok(dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&watched), sink))
+                Ok(dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&*watched), sink))
             })
         })?;
         if let Some(error) = raised.lock().map_err(|_| PyRuntimeError::new_err("callback state poisoned"))?.take() {
