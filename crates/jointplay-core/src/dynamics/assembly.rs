@@ -4,13 +4,17 @@
 //! initial eccentricity, then the velocities of that locked (ideal)
 //! mechanism.
 
-use super::projection::{project_positions, project_velocities};
+use super::projection::{project_positions, project_velocities, velocity_residuals};
 use super::state::{ContactMemory, State};
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 
 /// Largest constraint residual accepted at assembly [m or rad].
 pub const ASSEMBLY_TOLERANCE: f64 = 1e-12;
+
+/// Velocity residual, relative to the initial one, that the projection onto
+/// consistent joint equations always removes; more means contradictory equations.
+const LOCKED_VELOCITY_RESIDUAL: f64 = 1e-8;
 
 /// Newton iterations allowed at assembly: from a rough sketch of the
 /// mechanism Newton needs a handful; fifty means the input is far off.
@@ -23,7 +27,20 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
     let mut q = model.initial_coordinates.clone();
     let mut qdot = model.initial_velocities.clone();
     project_positions(model, all, t0, &mut q, ASSEMBLY_TOLERANCE, ASSEMBLY_ITERATIONS, ws)?;
+    let (before, _) = velocity_residuals(model, all, t0, &q, &qdot, ws);
     project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
+    // dependent equations that contradict each other (a driver against a weld) leave a residual
+    // no velocity removes: the mechanism is locked
+    let (after, row) = velocity_residuals(model, all, t0, &q, &qdot, ws);
+    if after > LOCKED_VELOCITY_RESIDUAL * (1.0 + before) {
+        return Err(SimulationError::SingularConfiguration {
+            time: t0,
+            element: model.elements[model.row_owner[row]].name.clone(),
+            cause: format!(
+                "the mechanism is locked: no velocities satisfy its joints and drivers together (residual {after:.3e} m/s or rad/s remains); a driver fights a joint, or the joints leave no freedom to move"
+            ),
+        });
+    }
     let mut y = Vec::with_capacity(2 * n);
     y.extend_from_slice(&q);
     y.extend_from_slice(&qdot);

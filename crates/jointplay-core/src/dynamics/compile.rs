@@ -459,12 +459,9 @@ impl<'s> Compiler<'s> {
     }
 
     fn finish(mut self) -> Result<Model, ModelErrors> {
+        // (more equations than coordinates is no error by itself: dependent equations are
+        // handled, and a mechanism that cannot move as driven is reported at assembly)
         self.analyse_constraint_matrix();
-        let n = self.model.n_coordinates() as i64;
-        let m = self.model.n_dynamic_equations() as i64;
-        if self.errors.is_empty() && m > n {
-            self.errors.push("joints", format!("the mechanism is over-constrained: {m} constraint equations for {n} coordinates"));
-        }
         for (q, (quantity, description)) in [("kinetic_energy", "kinetic energy"), ("potential_energy", "potential energy (gravity, springs, contact)"), ("energy", "total mechanical energy")].iter().enumerate() {
             self.channel("system", quantity, "J", description.to_string(), Source::Energy(q as u8));
         }

@@ -11,12 +11,12 @@
 
 use super::frame::{add_point_force, Frame};
 use super::state::ContactMemory;
-use super::model::SchurTerm;
+use super::constraint_solution;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 use crate::force::gravity_generalised_force;
 use crate::joint::{ConstraintRows, Lubrication, RowJacobian};
-use crate::linalg::{cholesky_factor, cholesky_solve, RankDeficiency};
+use crate::linalg::RankDeficiency;
 
 /// How constraint drift is controlled.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -111,48 +111,11 @@ pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &[R
     }
 }
 
-/// Forms `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows and factors it in place.
-/// Every row touches at most two bodies, so only the precomputed terms (pairs of
-/// row blocks on a common body) are summed; for the dynamic rows the factorisation
-/// follows the elimination program of that pattern (`linalg/sparse_cholesky.rs`).
-pub(crate) fn factor_constraint_matrix(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
-    let schur = &mut ws.schur[..rows * (rows + 1)];
-    schur.fill(0.0);
-    let blocks = ws.jacobian.as_flattened();
-    let inverse_mass = body_blocks(&model.inverse_mass);
-    let term_value = |term: &SchurTerm| {
-        let (ra, rb, w) = (&blocks[term.first as usize], &blocks[term.second as usize], &inverse_mass[term.body as usize]);
-        ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2]
-    };
-    let terms = model.schur_terms.iter().take_while(|term| (term.row as usize) < rows);
-    if rows == model.schur_factor.size() {
-        // the dynamic rows, in the factorisation's own layout
-        for term in terms {
-            schur[term.entry as usize] += term_value(term);
-        }
-        model.schur_factor.factor(schur)
-    } else {
-        for term in terms {
-            schur[term.row as usize * rows + term.column as usize] += term_value(term);
-        }
-        cholesky_factor(schur, rows)
-    }
-}
-
-/// Solves `(Phi_q M^-1 Phi_q^T) x = b` for the first `rows` rows in place with the factor
-/// [`factor_constraint_matrix`] left in `schur` (sparse `L D L^T` or dense `L L^T`).
-pub(crate) fn solve_constraint_matrix(model: &Model, rows: usize, schur: &[f64], b: &mut [f64]) {
-    if rows == model.schur_factor.size() {
-        model.schur_factor.solve(schur, &mut b[..rows]);
-    } else {
-        cholesky_solve(&schur[..rows * rows], rows, &mut b[..rows]);
-    }
-}
-
-/// [`factor_constraint_matrix`] at `(t, q)`, remembered so that an evaluation at the
+/// Factors `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows at `(t, q)`
+/// ([`constraint_solution::factor`]), remembered so that an evaluation at the
 /// same time and positions (after a velocity projection) reuses the factor.
-pub(crate) fn factor_constraint_matrix_at(model: &Model, rows: usize, t: f64, q: &[f64], ws: &mut Workspace) -> Result<(), RankDeficiency> {
-    factor_constraint_matrix(model, rows, ws)?;
+pub(crate) fn factor_constraint_matrix_at(model: &Model, rows: usize, t: f64, q: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
+    constraint_solution::factor(model, rows, ws).map_err(|d| non_finite_constraints(model, t, d))?;
     ws.factored_positions.copy_from_slice(q);
     ws.factored_at = Some((t, rows));
     Ok(())
@@ -163,16 +126,20 @@ fn holds_factor(ws: &Workspace, rows: usize, t: f64, q: &[f64]) -> bool {
     ws.factored_at == Some((t, rows)) && ws.factored_positions == q
 }
 
-/// Error for a rank-deficient constraint matrix, naming the owning element.
-pub(crate) fn singular_error(model: &Model, t: f64, deficiency: RankDeficiency) -> SimulationError {
+/// Solves `S x = b` with `b` in `ws.multipliers` (see [`constraint_solution::solve`]).
+pub(crate) fn solve_in_multipliers(model: &Model, rows: usize, ws: &mut Workspace) {
+    let mut b = std::mem::take(&mut ws.multipliers);
+    constraint_solution::solve(model, rows, ws, &mut b);
+    ws.multipliers = b;
+}
+
+/// Error for a constraint matrix that could not be factored even regularised (not finite).
+fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> SimulationError {
     let owner = &model.elements[model.row_owner[deficiency.row]];
     SimulationError::SingularConfiguration {
         time: t,
         element: owner.name.clone(),
-        cause: format!(
-            "its equations became dependent on the others (relative pivot {:.2e}); the mechanism is locked, at a dead point, or redundantly constrained",
-            deficiency.relative_pivot
-        ),
+        cause: format!("its constraint equations could not be factored (relative pivot {:.2e}); the state is not finite", deficiency.relative_pivot),
     }
 }
 
@@ -238,7 +205,7 @@ pub fn accelerations(
         if factored {
             ws.factored_at = Some((t, rows));
         } else {
-            factor_constraint_matrix_at(model, rows, t, q, ws).map_err(|d| singular_error(model, t, d))?;
+            factor_constraint_matrix_at(model, rows, t, q, ws)?;
         }
         // the right-hand side J M^-1 Q - gamma, solved in place into lambda
         for ((a, w), f) in ws.accelerations.iter_mut().zip(&model.inverse_mass).zip(&ws.generalised_force) {
@@ -249,7 +216,7 @@ pub fn accelerations(
         for (l, g) in lambda[..rows].iter_mut().zip(&ws.gamma) {
             *l -= g;
         }
-        solve_constraint_matrix(model, rows, &ws.schur, lambda);
+        solve_in_multipliers(model, rows, ws);
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     } else {
         ws.scratch.fill(0.0);

@@ -5,9 +5,17 @@
 //! `dv = -M^-1 Phi_q^T (Phi_q M^-1 Phi_q^T)^-1 (Phi_q v - nu)`.
 
 use super::equations::{
-    constraint_residuals, factor_constraint_matrix, factor_constraint_matrix_at, jacobian_times, jacobian_transpose_times, linearise_constraints, singular_error, solve_constraint_matrix, update_frames,
+    constraint_residuals, factor_constraint_matrix_at, jacobian_times, jacobian_transpose_times, linearise_constraints, solve_in_multipliers, update_frames,
 };
+use super::constraint_solution::FactorKind;
 use super::{Model, Workspace};
+
+/// Newton iterations allowed once a projection met a singular position, where
+/// the convergence is linear: halving per iteration takes 1e-3 to 1e-12 in 30.
+const SINGULAR_ITERATIONS: usize = 40;
+
+/// Factor on the position tolerance a projection at a singular position may leave (see [`singular_stagnation`]).
+const SINGULAR_TOLERANCE_FACTOR: f64 = 1e3;
 use crate::error::SimulationError;
 
 /// Newton on `Phi(q, t) = 0` for the first `n_constraints` constraints.
@@ -26,14 +34,21 @@ pub(crate) fn project_positions(
     if rows == 0 {
         return Ok(0);
     }
-    for iteration in 0..=max_iterations {
+    let mut allowed = max_iterations;
+    let mut iteration = 0;
+    let mut previous = f64::INFINITY;
+    loop {
         ws.scratch.fill(0.0);
         update_frames(model, q, &ws.scratch, &mut ws.frames);
         let (largest, row) = constraint_residuals(model, n_constraints, t, ws);
         if largest <= tolerance {
             return Ok(iteration);
         }
-        if iteration == max_iterations || !largest.is_finite() {
+        if singular_stagnation(ws, largest, previous, tolerance) {
+            return Ok(iteration);
+        }
+        previous = largest;
+        if iteration >= allowed || !largest.is_finite() {
             return Err(SimulationError::ConstraintViolation {
                 time: t,
                 element: model.elements[model.row_owner[row]].name.clone(),
@@ -41,15 +56,28 @@ pub(crate) fn project_positions(
             });
         }
         linearise_constraints(model, n_constraints, t, ws);
-        factor_constraint_matrix(model, rows, ws).map_err(|d| singular_error(model, t, d))?;
+        factor_constraint_matrix_at(model, rows, t, q, ws)?;
         ws.multipliers[..rows].copy_from_slice(&ws.residual[..rows]);
-        solve_constraint_matrix(model, rows, &ws.schur, &mut ws.multipliers);
+        solve_in_multipliers(model, rows, ws);
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
         for k in 0..n {
             q[k] -= model.inverse_mass[k] * ws.scratch[k];
         }
+        if ws.factor_kind == FactorKind::Spectral {
+            // at a singular position Newton converges only linearly (by about half per step)
+            allowed = allowed.max(SINGULAR_ITERATIONS);
+        }
+        iteration += 1;
     }
-    unreachable!("the loop returns on its last iteration")
+}
+
+/// Whether a Newton projection at a singular position has stopped improving
+/// with its residual within [`SINGULAR_TOLERANCE_FACTOR`] of the tolerance: the
+/// part left lies along the dependent direction, where the equations vanish to
+/// second order and no first-order step reaches it; the next steps, away from the
+/// singular position, remove it.
+fn singular_stagnation(ws: &Workspace, largest: f64, previous: f64, tolerance: f64) -> bool {
+    ws.factor_kind == FactorKind::Spectral && largest > 0.5 * previous && largest <= SINGULAR_TOLERANCE_FACTOR * tolerance
 }
 
 /// Corrects `q_dot` so that `Phi_q q_dot = nu` for the first `n_constraints`
@@ -68,24 +96,32 @@ pub(crate) fn project_velocities(
     if rows == 0 {
         return Ok(());
     }
-    update_frames(model, q, qdot, &mut ws.frames);
-    linearise_constraints(model, n_constraints, t, ws);
-    // the velocity residuals Phi_q q_dot - nu, in the multipliers' buffer
-    let residual = &mut ws.multipliers;
-    jacobian_times(model, rows, &ws.jacobian, qdot, residual);
-    let mut largest: f64 = 0.0;
-    for (r, nu) in residual[..rows].iter_mut().zip(&ws.nu) {
-        *r -= nu;
-        largest = largest.max(r.abs());
-    }
+    let (largest, _) = velocity_residuals(model, n_constraints, t, q, qdot, ws);
     if largest <= tolerance {
         return Ok(());
     }
-    factor_constraint_matrix_at(model, rows, t, q, ws).map_err(|d| singular_error(model, t, d))?;
-    solve_constraint_matrix(model, rows, &ws.schur, &mut ws.multipliers);
+    factor_constraint_matrix_at(model, rows, t, q, ws)?;
+    solve_in_multipliers(model, rows, ws);
     jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
     for k in 0..n {
         qdot[k] -= model.inverse_mass[k] * ws.scratch[k];
     }
     Ok(())
+}
+
+/// The velocity residuals `Phi_q q_dot - nu` of the first `n_constraints` constraints
+/// into `ws.multipliers`; returns the largest |residual| [m/s or rad/s] and its row.
+pub(crate) fn velocity_residuals(model: &Model, n_constraints: usize, t: f64, q: &[f64], qdot: &[f64], ws: &mut Workspace) -> (f64, usize) {
+    update_frames(model, q, qdot, &mut ws.frames);
+    let rows = linearise_constraints(model, n_constraints, t, ws);
+    let residual = &mut ws.multipliers;
+    jacobian_times(model, rows, &ws.jacobian, qdot, residual);
+    let mut largest = (0.0, 0);
+    for (row, (r, nu)) in residual[..rows].iter_mut().zip(&ws.nu).enumerate() {
+        *r -= nu;
+        if r.abs() > largest.0 {
+            largest = (r.abs(), row);
+        }
+    }
+    largest
 }

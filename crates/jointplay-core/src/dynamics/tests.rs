@@ -289,24 +289,61 @@ fn a_chain_conserves_energy_with_group_kernels_and_with_the_sparse_program() {
     }
 }
 
+/// A bar pinned to the ground at its end, once or twice at the same point, under gravity.
+fn pinned_bar(pins: usize) -> Model {
+    let joints: Vec<String> =
+        (0..pins).map(|k| format!(r#"{{"type": "revolute", "name": "pin{k}", "first": "ground.O", "second": "bar.O"}}"#)).collect();
+    model(&format!(
+        r#"{{"gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}],
+            "bodies": [{{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0.01], "points": [{{"name": "O", "position": [-0.3, 0]}}]}}],
+            "joints": [{}]}}"#,
+        joints.join(", ")
+    ))
+}
+
 #[test]
-fn redundant_joint_is_reported_as_a_singular_configuration_naming_it() {
+fn a_redundant_pin_runs_and_shares_the_reaction_by_minimum_norm() {
+    // the bar starts off its pin, so assembly iterates on dependent rows too
+    let (single, double) = (pinned_bar(1), pinned_bar(2));
+    let mut ws1 = Workspace::new(&single);
+    let mut ws2 = Workspace::new(&double);
+    let s1 = assemble(&single, 0.0, &mut ws1).unwrap();
+    let s2 = assemble(&double, 0.0, &mut ws2).unwrap();
+    for (a, b) in s1.y.iter().zip(&s2.y) {
+        assert!((a - b).abs() < 1e-12, "{a} vs {b}");
+    }
+    let n = single.n_coordinates();
+    accelerations(&single, &[], 0.0, &s1.y[..n], &s1.y[n..], Stabilization::Projection, &mut ws1).unwrap();
+    accelerations(&double, &[], 0.0, &s2.y[..n], &s2.y[n..], Stabilization::Projection, &mut ws2).unwrap();
+    assert!(ws2.singular_solves > 0, "the dependent rows take the singular path");
+    // same motion; the single pin's reaction split equally (the minimum-norm multipliers)
+    for k in 0..n {
+        assert!((ws1.accelerations[k] - ws2.accelerations[k]).abs() < 1e-9, "coordinate {k}");
+    }
+    for r in 0..2 {
+        let (whole, first, second) = (ws1.multipliers[r], ws2.multipliers[r], ws2.multipliers[r + 2]);
+        assert!((first - 0.5 * whole).abs() < 1e-6 * whole.abs(), "row {r}: {first} vs half of {whole}");
+        assert!((second - 0.5 * whole).abs() < 1e-6 * whole.abs(), "row {r}: {second} vs half of {whole}");
+    }
+}
+
+#[test]
+fn a_mechanism_driven_against_its_lock_is_reported_naming_the_element() {
+    // a bar pinned at its end and driven in rotation, and also welded to the ground: no motion can satisfy both
     let m = model(
         r#"{"ground_points": [{"name": "O", "position": [0, 0]}],
-            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.1, 0], "points": [{"name": "O", "position": [0, 0]}]},
-                       {"name": "free", "mass": 1, "inertia": 0.1}],
+            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0], "points": [{"name": "O", "position": [-0.3, 0]}]}],
             "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"},
-                       {"type": "revolute", "name": "again", "first": "ground.O", "second": "bar.O"}]}"#,
+                       {"type": "fixed", "name": "weld", "first": "ground.O", "second": "bar.O"}],
+            "drivers": [{"name": "motor", "joint": "pin", "function": {"kind": "constant_rate", "rate": 10.0}}]}"#,
     );
     let mut ws = Workspace::new(&m);
-    // the bar starts off its pin, so assembly must iterate and meets the dependent rows
     match assemble(&m, 0.0, &mut ws) {
-        Err(crate::SimulationError::SingularConfiguration { element, time, cause }) => {
-            assert_eq!(element, "again");
-            assert_eq!(time, 0.0);
-            assert!(cause.contains("redundantly constrained"), "{cause}");
+        Err(crate::SimulationError::SingularConfiguration { cause, element, .. }) => {
+            assert!(cause.contains("locked"), "{cause}");
+            assert!(["pin", "weld", "motor"].contains(&element.as_str()), "{element}");
         }
-        other => panic!("expected a singular configuration, got {other:?}"),
+        other => panic!("expected a locked mechanism, got {other:?}"),
     }
 }
 
@@ -444,7 +481,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     let n = model.n_coordinates();
     update_frames(&model, &state.y[..n], &state.y[n..], &mut ws.frames);
     equations::linearise_constraints(&model, model.n_dynamic_constraints, 0.0, &mut ws);
-    equations::factor_constraint_matrix(&model, rows, &mut ws).unwrap();
+    assert_eq!(super::constraint_solution::factor(&model, rows, &mut ws).unwrap(), super::constraint_solution::FactorKind::Pattern);
     let sparse = ws.schur[..rows * (rows + 1)].to_vec();
     // the same matrix formed densely from the Jacobian and factored by the dense kernel
     let mut dense = vec![0.0; rows * rows];

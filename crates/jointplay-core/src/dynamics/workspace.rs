@@ -26,6 +26,16 @@ pub struct Workspace {
     pub gamma: Vec<f64>,
     /// `Phi_q M^-1 Phi_q^T`, then its factor (`m (m + 1)` values for m rows, see `linalg::PatternLdl`).
     pub schur: Vec<f64>,
+    /// `Phi_q M^-1 Phi_q^T` (`m x m`), diagonalised in place on the singular path.
+    pub schur_matrix: Vec<f64>,
+    /// Its eigenvalues on the singular path.
+    pub schur_eigenvalues: Vec<f64>,
+    /// How the factor in `schur` was made.
+    pub(crate) factor_kind: super::constraint_solution::FactorKind,
+    /// Scratch of the singular path's solve (`m`).
+    pub solve_scratch: Vec<f64>,
+    /// Factorisations that took the singular path (dependent equations) so far.
+    pub singular_solves: usize,
     /// Time [s] and row count for which `schur` holds the factor at
     /// `factored_positions`; cleared whenever the Jacobian is linearised anew.
     pub factored_at: Option<(f64, usize)>,
@@ -68,6 +78,11 @@ impl Workspace {
             nu: vec![0.0; m],
             gamma: vec![0.0; m],
             schur: vec![0.0; m * (m + 1)],
+            schur_matrix: vec![0.0; m * m],
+            schur_eigenvalues: vec![0.0; m],
+            factor_kind: super::constraint_solution::FactorKind::Dense,
+            solve_scratch: vec![0.0; m],
+            singular_solves: 0,
             factored_at: None,
             factored_positions: vec![0.0; n],
             multipliers: vec![0.0; m],

@@ -12,7 +12,7 @@ pub struct RankDeficiency {
 /// Relative pivot below which a row is taken as linearly dependent on the
 /// rows before it. `Phi_q M^-1 Phi_q^T` of a healthy mechanism has relative
 /// pivots far above this; a locked configuration drives one to round-off.
-pub(crate) const RELATIVE_PIVOT_TOLERANCE: f64 = 1e-10;
+pub const RELATIVE_PIVOT_TOLERANCE: f64 = 1e-8;
 
 /// Factors the symmetric `n x n` row-major matrix `a` in place; its lower
 /// triangle becomes `L`, except that the diagonal holds `1 / l_jj` (the

@@ -17,7 +17,7 @@ mod lu;
 mod pattern_ldl;
 mod sparse_cholesky;
 
-pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency};
+pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency, RELATIVE_PIVOT_TOLERANCE};
 pub use lu::{lu_factor, lu_solve, SingularMatrix};
 pub use block_ldl::BlockLdl;
 pub use pattern_ldl::PatternLdl;
