@@ -2,7 +2,9 @@
 
 Run from the repository root:  .venv/bin/python tests/baselines/record_examples.py
 It rewrites tests/baselines/examples_before_rework.json (about a minute: each case is also run
-16 more times, disturbed, see "Spread" below). tests/test_examples_vs_baseline.py recomputes the
+16 more times, disturbed, see "Spread" below); it refuses (unless given --force) when the engine
+sources (crates/, python/jointplay/) differ from the recorded commit's, because the record is of that
+engine. tests/test_examples_vs_baseline.py recomputes the
 same quantities with :func:`measure` and compares them with the record.
 
 Cases: the four model files of examples/ that existed at the recorded commit, each run with its own
@@ -293,7 +295,22 @@ def summary_line(case: dict) -> str:
     return joints or "no clearance joint"
 
 
+def engine_differs_from_recorded_commit() -> bool | None:
+    """Whether the engine (crates/, python/jointplay/) of this checkout differs from the recorded
+    commit's; None if git cannot tell."""
+    try:
+        done = subprocess.run(["git", "diff", "--quiet", RECORDED_AT, "--", "crates", "python/jointplay"], cwd=ROOT,
+                              capture_output=True)
+    except OSError:
+        return None
+    return {0: False, 1: True}.get(done.returncode)
+
+
 if __name__ == "__main__":
+    # the record is of the engine before the rework: refuse to rewrite it from another engine
+    if engine_differs_from_recorded_commit() is not False and "--force" not in sys.argv[1:]:
+        sys.exit(f"the engine here is not (or cannot be shown to be) that of {RECORDED_AT}; the record is of that "
+                 "engine. Rerun from a checkout of it, or pass --force to record this one anyway.")
     data = record()
     BASELINE.write_text(json.dumps(data, indent=1) + "\n", encoding="utf-8")
     print(f"wrote {BASELINE.relative_to(ROOT)}: {len(data['cases'])} cases")
