@@ -12,7 +12,10 @@ EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 def test_every_python_example_is_covered_here():
     covered = {"flores_slider_crank_dry", "flores_slider_crank_ideal", "paper001_slider_crank_dry",
                "flores_slider_crank_lubricated", "paper001_parametric_study",
-               "paper000_joint_models"}  # the last has its own tests/test_paper000_example.py
+               "paper000_joint_models",  # has its own tests/test_paper000_example.py
+               # the physics of these two: tests/physics/test_singular_four_bar.py and
+               # tests/physics/test_redundant_double_parallelogram.py
+               "parallelogram_four_bar", "double_parallelogram"}
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 
@@ -65,3 +68,23 @@ def test_paper001_study_writes_its_figures_and_table(tmp_path):
     for name in ("paper001_clearance.png", "paper001_speed.png", "paper001_viscosity.png",
                  "paper001_film_min.csv", "paper001_film_min.md"):
         assert (tmp_path / name).exists()
+
+
+def test_parallelogram_four_bar_example_runs_through_its_flat_positions(tmp_path):
+    import parallelogram_four_bar as example
+
+    results = example.main(["--out", str(tmp_path), "--t-end", "2"])
+    assert results.error is None
+    assert results.time[-1] == pytest.approx(2.0)
+    assert example.flat_passages(results) >= 2  # at about 0.71 s and 1.22 s
+    assert (tmp_path / "parallelogram_four_bar.png").stat().st_size > 10_000
+
+
+def test_double_parallelogram_example_runs_with_its_redundant_bar(tmp_path):
+    import double_parallelogram as example
+
+    results = example.main(["--out", str(tmp_path), "--t-end", "2"])
+    assert results.error is None
+    assert results.time[-1] == pytest.approx(2.0)
+    assert example.flat_passages(results) >= 2
+    assert (tmp_path / "double_parallelogram.png").stat().st_size > 10_000
