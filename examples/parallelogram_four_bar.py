@@ -22,7 +22,8 @@ link at -1 rad/s).
 CHOSEN here: N = 1 (the benchmark's reference solution is for N = 40 and is
 not used: the motion depends on N, theta_ddot = -(3(3N+1)/(2(4N+1))) (g/L)
 cos(theta)); 10 s (the OpenSim rendering's length; the benchmark's is 20 s);
-tight tolerances (rtol 1e-10).
+rtol 1e-8: at tighter tolerances jointplay's passage through the flat
+position loses accuracy (docs/theory/planar-formulation.md, "Constraint solution").
 
 The mechanism: ground pins A0 = (0, 0) and A1 = (1, 0) m; crank A0-B0 and
 rocker A1-B1 vertical, coupler B0-B1 horizontal at y = 1 m. On the
@@ -79,8 +80,8 @@ def build_model() -> jp.Model:
 
 
 def simulate(model: jp.Model, t_end: float = T_END) -> jp.Results:
-    """Runs the model (rtol 1e-10, atol 1e-12, samples every 10 ms), as the model file's [simulation]."""
-    return model.simulate(t_end, method="dopri5", rtol=1e-10, atol=1e-12, output_step=0.01)
+    """Runs the model (rtol 1e-8, atol 1e-10, samples every 10 ms), as the model file's [simulation]."""
+    return model.simulate(t_end, method="dopri5", rtol=1e-8, atol=1e-10, output_step=0.01)
 
 
 def flat_passages(results: jp.Results) -> int:

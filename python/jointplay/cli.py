@@ -236,6 +236,11 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
     out.print(f"coordinates {info['n_coordinates']}, constraint equations {info['n_equations']}, "
               f"degrees of freedom {dof} ({2 * len(clearance)} from {len(clearance)} clearance joint(s), "
               f"{free} not driven)")
+    if info.get("redundant_equations"):
+        out.print(f"[yellow]note:[/] {info['redundant_equations']} constraint equation(s) are redundant (dependent on "
+                  f"the others; elements involved: {', '.join(info['dependent_elements'])}). The motion is "
+                  "determined; the reactions along the dependent directions are not, and jointplay reports "
+                  "the least-norm choice (docs/theory/planar-formulation.md)")
     if free > 0:
         out.print(f"[yellow]note:[/] {free} degree(s) of freedom are neither driven nor clearance: "
                   "the mechanism moves under gravity, forces and initial velocities only")

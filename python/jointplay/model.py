@@ -277,6 +277,10 @@ class Model:
         assembled = self.compile().assemble(0.0)
         if assembled["error"] is not None:
             raise SimulationError(assembled["error"], stage="assembly")
+        # degrees of freedom from the rank of the joints' equations at the assembled configuration
+        info["redundant_equations"] = assembled["redundant_equations"]
+        info["dependent_elements"] = list(assembled["dependent_elements"])
+        info["degrees_of_freedom"] = info["n_coordinates"] - assembled["constraint_rank"]
         info["initial_coordinates"] = np.asarray(assembled["coordinates"])
         info["initial_velocities"] = np.asarray(assembled["velocities"])
         return info

@@ -133,14 +133,20 @@ impl CoreModel {
         let result = py.detach(move || {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
-                dynamics::assemble(&model, t0, &mut ws)
+                dynamics::assemble(&model, t0, &mut ws).map(|state| {
+                    let rank = dynamics::constraint_rank(&model, &state, &mut ws);
+                    (state, rank)
+                })
             })
         })?;
         let out = PyDict::new(py);
         match result {
-            Ok(state) => {
+            Ok((state, rank)) => {
                 out.set_item("coordinates", PyArray1::from_slice(py, state.coordinates()))?;
                 out.set_item("velocities", PyArray1::from_slice(py, state.velocities()))?;
+                out.set_item("constraint_rank", rank.rank)?;
+                out.set_item("redundant_equations", rank.n_redundant())?;
+                out.set_item("dependent_elements", rank.dependent_elements.clone())?;
                 out.set_item("error", py.None())?;
             }
             Err(e) => out.set_item("error", conv::simulation_error(py, &e)?)?,

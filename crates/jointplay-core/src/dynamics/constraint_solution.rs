@@ -2,7 +2,7 @@
 //! at regular, singular and redundant configurations
 //! (`docs/theory/planar-formulation.md`, "Constraint solution").
 //!
-//! - **Regular** (every pivot of `S` above [`RELATIVE_PIVOT_TOLERANCE`] of its
+//! - **Regular** (every pivot of `S` above [`crate::linalg::RELATIVE_PIVOT_TOLERANCE`] of its
 //!   largest diagonal entry): `L D L^T` of `S` by the elimination program of its
 //!   pattern, one solve.
 //! - **Singular or redundant** (a pivot below that: dependent equations, a
@@ -25,7 +25,7 @@
 
 use super::model::SchurTerm;
 use super::{Model, Workspace};
-use crate::linalg::{cholesky_solve, RankDeficiency, RELATIVE_PIVOT_TOLERANCE};
+use crate::linalg::{cholesky_solve, RankDeficiency};
 
 /// Inverse penalty `eps` relative to the largest eigenvalue of `S`. Chosen by
 /// experiment on a parallelogram four-bar that passes its flat position ten
