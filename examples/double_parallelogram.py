@@ -39,7 +39,7 @@ from pathlib import Path
 import numpy as np
 
 import jointplay as jp
-from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS, flat_passages
+from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS
 
 T_END = 10.0  # s
 COUPLER_MASS = 2 * MASS  # kg: a 2 m bar of the same section
@@ -69,6 +69,12 @@ def build_model() -> jp.Model:
 def simulate(model: jp.Model, t_end: float = T_END) -> jp.Results:
     """Runs the model (rtol 1e-8, atol 1e-10, samples every 10 ms), as the model file's [simulation]."""
     return model.simulate(t_end, method="dopri5", rtol=1e-8, atol=1e-10, output_step=0.01)
+
+
+def flat_passages(results: jp.Results) -> int:
+    """How many times the left bar passed the ground line (sin of its angle changed sign)."""
+    s = np.sign(np.sin(results["left.angle"]))
+    return int(np.count_nonzero(s[1:] * s[:-1] < 0))
 
 
 def write_figure(results: jp.Results, path: Path) -> Path:

@@ -87,12 +87,25 @@ def test_a_failing_simulation_keeps_what_was_computed():
 
 
 def test_locked_mechanism_is_a_simulation_error_at_assembly():
-    m = pendulum(angle=0.1)  # off its pin, so assembly iterates and meets the dependent equations
-    m.add_revolute("again", "ground.O", "bar.O")
-    m.add_body("free", mass=1.0, inertia=0.1)
+    m = pendulum()
+    m.add_fixed("weld", "ground.O", "bar.O")
+    m.add_driver("motor", "pin", {"kind": "constant_rate", "rate": 2.0})  # turns what the weld holds
     with pytest.raises(jp.SimulationError) as info:
         m.simulate(0.1)
-    assert info.value.stage == "assembly" and info.value.element == "again"
+    assert info.value.stage == "assembly" and "locked" in str(info.value)
+
+
+def test_a_redundant_pin_runs_like_the_single_one_and_shares_its_reaction():
+    single = pendulum(angle=0.1)  # off its pin, so assembly iterates on the dependent equations too
+    double = pendulum(angle=0.1)
+    double.add_revolute("again", "ground.O", "bar.O")
+    r1, r2 = single.simulate(0.5, rtol=1e-9, atol=1e-12), double.simulate(0.5, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(r2["bar.angle"][-1], r1["bar.angle"][-1], atol=1e-9)
+    pin = next(j["name"] for j in single.to_spec()["joints"])
+    # the least-norm multipliers split the one reaction equally between the two coincident pins
+    np.testing.assert_allclose(r2[f"{pin}.fy"][-1], 0.5 * r1[f"{pin}.fy"][-1], rtol=1e-6)
+    np.testing.assert_allclose(r2["again.fy"][-1], 0.5 * r1[f"{pin}.fy"][-1], rtol=1e-6)
+    assert double.check()["redundant_equations"] == 2
 
 
 def test_ideal_joint_reactions_balance_newtons_law_on_the_slider():

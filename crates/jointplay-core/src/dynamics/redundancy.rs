@@ -42,6 +42,9 @@ pub fn constraint_rank(model: &Model, state: &State, ws: &mut Workspace) -> Cons
     let (q, qdot) = state.y[..2 * n].split_at(n);
     update_frames(model, q, qdot, &mut ws.frames);
     let rows = linearise_constraints(model, model.n_dynamic_constraints, state.time, ws);
+    if rows == 0 {
+        return ConstraintRank::default();
+    }
     let jacobian = DMatrix::from_fn(rows, n, |r, k| jacobian_entry(model, ws, r, k));
     // Phi_q Phi_q^T: its eigenvalues are the squared singular values, its null vectors the dependencies
     let eigen = SymmetricEigen::new(&jacobian * jacobian.transpose());
@@ -68,4 +71,31 @@ pub fn constraint_rank(model: &Model, state: &State, ws: &mut Workspace) -> Cons
 /// Entry (r, k) of the constraint Jacobian, from the row's body blocks.
 fn jacobian_entry(model: &Model, ws: &Workspace, r: usize, k: usize) -> f64 {
     ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, body)| body == k / 3).map(|(block, _)| block[k % 3]).sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dynamics::{assemble, compile};
+
+    fn rank_of(json: &str) -> ConstraintRank {
+        let model = compile(&serde_json::from_str(json).unwrap()).unwrap();
+        let mut ws = Workspace::new(&model);
+        let state = assemble(&model, 0.0, &mut ws).unwrap();
+        constraint_rank(&model, &state, &mut ws)
+    }
+
+    #[test]
+    fn a_free_body_has_no_equations_and_a_doubled_pin_two_redundant_ones() {
+        let free = rank_of(r#"{"bodies": [{"name": "bar", "mass": 1, "inertia": 0.1}]}"#);
+        assert_eq!((free.n_equations, free.rank, free.n_redundant()), (0, 0, 0));
+        let pins = rank_of(
+            r#"{"ground_points": [{"name": "O", "position": [0, 0]}],
+                "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0], "points": [{"name": "O", "position": [-0.3, 0]}]}],
+                "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"},
+                           {"type": "revolute", "name": "again", "first": "ground.O", "second": "bar.O"}]}"#,
+        );
+        assert_eq!((pins.n_equations, pins.rank, pins.n_redundant()), (4, 2, 2));
+        assert_eq!(pins.dependent_elements, vec!["pin".to_string(), "again".to_string()]);
+    }
 }
