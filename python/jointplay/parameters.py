@@ -20,6 +20,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
+from ._core import MAX_REYNOLDS_GRID_NODES as _MAX_GRID_NODES
+
 
 class _Required:
     def __repr__(self) -> str:
@@ -258,6 +260,16 @@ TRANSITION_LAWS = family(
           ), tag="law"),
 )
 
+def core_law(law: dict) -> dict:
+    """A law's dict as the core reads it: the Hertz-type law with a chosen exponent is
+    ``hertz_cylinder_exponent`` there (``hertz_cylinder`` with ``exponent`` in a model file)."""
+    if law["law"] in ("hertz_cylinder", "hertz_cylinder_exponent"):
+        exponent = law.get("exponent")
+        return {"law": "hertz_cylinder"} if exponent is None else {"law": "hertz_cylinder_exponent",
+                                                                   "exponent": exponent}
+    return law
+
+
 #: Law families by the key of a clearance joint (or lubrication table) that holds them.
 LAWS = {"contact": CONTACT_LAWS, "stiffness": STIFFNESS_LAWS, "friction": FRICTION_LAWS,
         "transition": TRANSITION_LAWS}
@@ -282,7 +294,8 @@ LUBRICATION = Table("lubrication", "A lubricant film in the clearance (docs/theo
           "groove)", "swift_stieber", of=("gumbel", "swift_stieber", "elrod_adams"),
           aliases=(("reynolds", "swift_stieber"), ("half_sommerfeld", "gumbel"), ("jfo", "elrod_adams"))),
     Param("grid", "grid", "Reynolds models only: `[cells around, cells along the axis]`, whole numbers >= 4; the "
-          "axial count must be even; at most 1 000 000 nodes `around x (along/2 + 1)`", None,
+          f"axial count must be even; at most {f'{_MAX_GRID_NODES:,}'.replace(',', ' ')} nodes "
+          "`around x (along/2 + 1)` (solver memory and time)", None,
           default_text="the solver's, `[120, 16]`"),
     Param("ambient_pressure", "pressure", "Reynolds models only: gauge pressure at the bearing ends", 0.0),
     Param("groove_supply_pressure", "pressure", "Reynolds models only, `reynolds_exact` only: a circumferential "

@@ -369,7 +369,7 @@ class Builder:
         table = self.validate(laws[law], value, location, hint=f"{law}: ")
         if table is None:
             return None
-        return _core_law({k: (float(v) if isinstance(v, float) else v)
+        return p.core_law({k: (float(v) if isinstance(v, float) else v)
                           for k, v in table.model_dump(exclude_none=True).items()})
 
     def drivers(self) -> None:
@@ -424,15 +424,6 @@ class Builder:
             if name not in self.referenced and name not in self.free:
                 self.problem(join("bodies", name), "is connected to nothing: no joint or force element refers to it "
                                                    "(write free = true if it is meant to move freely)")
-
-
-def _core_law(law: dict) -> dict:
-    """The core names the Hertz-type law with a chosen exponent ``hertz_cylinder_exponent``."""
-    if law["law"] in ("hertz_cylinder", "hertz_cylinder_exponent"):
-        exponent = law.get("exponent")
-        return {"law": "hertz_cylinder"} if exponent is None else {"law": "hertz_cylinder_exponent",
-                                                                   "exponent": exponent}
-    return law
 
 
 class _Bad(ValueError):
