@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from ._core import MAX_REYNOLDS_GRID_NODES as _MAX_GRID_NODES
+from .resultsfile import DEFAULT_MAX_FILE_BYTES, DEFAULT_MAX_MEMORY_BYTES, format_size
 
 
 class _Required:
@@ -218,7 +219,7 @@ STIFFNESS_LAWS = family(
 
 COEFFICIENT = Param("coefficient", "dimensionless", "friction coefficient mu", ge=0,
                     example="a friction coefficient, e.g. 0.01")
-FLORES_BAND = "the values of the Flores-Ambrosio slider-crank (examples/flores_slider_crank_dry)"
+FLORES_BAND = "the values of the Flores-Ambrosio slider-crank, examples/flores_slider_crank_dry"
 
 FRICTION_LAWS = family(
     Table("none", "No friction.", tag="law"),
@@ -250,8 +251,8 @@ TRANSITION_LAWS = family(
     Table("flores", "Flores et al.: squeeze film only, faded out between eccentricity ratio `lubricated_limit` "
           "and contact.", (
               Param("lubricated_limit", "dimensionless", "eccentricity ratio where the fading starts", 0.95,
-                    gt=0, lt=1, why="the Flores default, for want of the source value "
-                                    "(docs/theory/lubricated-contact-transition.md)"),
+                    gt=0, lt=1, why="the Flores default, for want of the source value; "
+                                    "docs/theory/lubricated-contact-transition.md"),
           ), tag="law"),
     Table("wang_improved", "Paper 001's transition: squeeze and wedge film faded out from the safe film thickness "
           "to contact.", (
@@ -345,7 +346,7 @@ CLEARANCE_REVOLUTE = Table("clearance_revolute", "A revolute joint with radial c
           why="a clearance joint starts as the ideal mechanism"),
     Param("onset_velocity_floor", "velocity", "smallest contact-onset velocity used in the damping term; guards "
           "grazing entries", 1e-4, gt=0,
-          why="small against the impact velocities of machinery (0.01-1 m/s), yet it keeps "
+          why="small against the impact velocities of machinery, 0.01-1 m/s, yet it keeps "
               "delta_dot / delta_dot_minus bounded for grazing entries"),
     Param("max_penetration", "length", "penetration at which the run stops as unphysical", None, gt=0,
           default_text="5 % of the journal radius (set by the core)"),
@@ -459,7 +460,8 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
     Param("max_output_bytes", "size", 'budget of samples x channels x 8 bytes, a whole number of bytes or `"500 MB"`, '
           '`"2 GiB"`: checked before the run when `output_step` makes the sample count known, otherwise the run stops '
           "when it reaches it, keeping what was computed", None,
-          default_text="2 GiB with a results file, 1 GiB in memory"),
+          default_text=f"{format_size(DEFAULT_MAX_FILE_BYTES)} with a results file, "
+                       f"{format_size(DEFAULT_MAX_MEMORY_BYTES)} in memory"),
 ), sparse=True)
 
 

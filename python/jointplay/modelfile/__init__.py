@@ -9,8 +9,8 @@ assembles its initial configuration. Every problem found comes back in one
 unless the file's ``[units]`` table declares the unit of its kind.
 ``plausibility(spec)`` lists legal but suspicious values (warnings, not
 errors). ``to_toml(model)`` writes a model back, every unit spelled out;
-loading that text gives the same model. The keys are documented in
-``docs/model-files.md``.
+loading that text gives the same model. The keys are defined in :mod:`jointplay.parameters` and listed
+in ``docs/model-file-reference.md``.
 """
 
 from __future__ import annotations
