@@ -534,3 +534,11 @@ def docstring(table: Table, summary: str = "", skip: tuple[str, ...] = ()) -> st
         reason = f" ({param.why})" if param.why else ""
         lines.append(f"{head}: {param.doc}{tail}; {default}{reason}.")
     return "\n".join(lines)
+
+
+def all_tables() -> list[Table]:
+    """Every table defined here, each variant once (the tests check each against the schema, the builder
+    and the writer)."""
+    laws = [t for tables in LAWS.values() for t in variants(tables)]
+    return [MODEL, GROUND, BODY, *variants(JOINTS), MATERIAL, LUBRICATION, *laws, DRIVER, *variants(FUNCTIONS),
+            *variants(FORCES), SIMULATION]

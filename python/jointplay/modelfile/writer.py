@@ -131,7 +131,7 @@ def _value_of(param: p.Param, value: Any) -> Any:
     if param.kind in KINDS:
         return quantity(value, param.kind)
     if param.kind == "function":
-        return function(value, param.of)
+        return function(value, param.of) if isinstance(value, dict) else quantity(value, param.of)
     if param.kind == "table" and param.of is p.LUBRICATION:
         return _lubrication(value)
     if param.kind == "table":
