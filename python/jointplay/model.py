@@ -388,7 +388,7 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
     if stabilization not in STABILIZATIONS:
         problems.append(("simulation.stabilization", f"must be one of {list(STABILIZATIONS)}, got {stabilization!r}"))
     options = {
-        "method": METHODS.get(key, "dopri5"), "rtol": positive("rtol", rtol, False),
+        "method": METHODS.get(key, _SIMULATION.default("method")), "rtol": positive("rtol", rtol, False),
         "atol": None, "max_step": positive("max_step", max_step), "output_step": positive("output_step", output_step),
         "initial_step": positive("initial_step", initial_step), "min_step": positive("min_step", min_step),
         "max_steps": None, "stabilization": stabilization,

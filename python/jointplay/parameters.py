@@ -278,6 +278,10 @@ LAWS = {"contact": CONTACT_LAWS, "stiffness": STIFFNESS_LAWS, "friction": FRICTI
 FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamrock_long", "frene_short",
                "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
 REYNOLDS_MODELS = ("reynolds_exact", "reynolds_table")
+#: The Reynolds solver's grid when none is given, cells around x cells along the axis: the core's default
+#: (Python sends no grid then); the steady-bearing tool (``jointplay bearing``) uses it too.
+REYNOLDS_GRID = (120, 16)
+CAVITATIONS = ("gumbel", "swift_stieber", "elrod_adams")
 #: Keys of a lubrication table that only the Reynolds solver reads (the closed forms have no grid,
 #: cavitation condition or boundary pressures).
 REYNOLDS_ONLY_KEYS = ("cavitation", "grid", "ambient_pressure", "groove_supply_pressure")
@@ -292,12 +296,12 @@ LUBRICATION = Table("lubrication", "A lubricant film in the clearance (docs/theo
     Param("transition", "law", "hand-over from the film force to dry contact", "wang_improved", of="transition",
           why="paper 001's improved law keeps the wedge effect, which the dynamic film models carry"),
     Param("cavitation", "choice", "Reynolds models only: cavitation condition (`elrod_adams` needs a supply: a "
-          "groove)", "swift_stieber", of=("gumbel", "swift_stieber", "elrod_adams"),
+          "groove)", "swift_stieber", of=CAVITATIONS,
           aliases=(("reynolds", "swift_stieber"), ("half_sommerfeld", "gumbel"), ("jfo", "elrod_adams"))),
     Param("grid", "grid", "Reynolds models only: `[cells around, cells along the axis]`, whole numbers >= 4; the "
           f"axial count must be even; at most {f'{_MAX_GRID_NODES:,}'.replace(',', ' ')} nodes "
           "`around x (along/2 + 1)` (solver memory and time)", None,
-          default_text="the solver's, `[120, 16]`"),
+          default_text=f"the solver's, `[{REYNOLDS_GRID[0]}, {REYNOLDS_GRID[1]}]`"),
     Param("ambient_pressure", "pressure", "Reynolds models only: gauge pressure at the bearing ends", 0.0),
     Param("groove_supply_pressure", "pressure", "Reynolds models only, `reynolds_exact` only: a circumferential "
           "groove at mid-length held at this pressure (paper 000)", None, default_text="no groove"),

@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ModelError, Problem, SimulationError
+from ..parameters import DEFAULT_NAME
 from .build import Builder
 from .overrides import apply_overrides, parse_assignment
 from .plausibility import plausibility
@@ -75,13 +76,13 @@ def load(path: str | Path, overrides: list[str] | dict[str, Any] | None = None, 
     return model
 
 
-def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, name: str = "mechanism",
+def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, name: str = DEFAULT_NAME,
           check: bool = True):
     """Like :func:`load`, from TOML text."""
     return from_document(parse_text(text), overrides, name=name, check=check)
 
 
-def from_document(doc: dict, overrides=None, *, name: str = "mechanism", check: bool = True):
+def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check: bool = True):
     """A Model from an already parsed document."""
     from ..model import Model
 

@@ -29,7 +29,7 @@ _FAILED = object()  # a value that could not be read (its problems are reported)
 class Builder:
     """Validates one document; ``spec`` and ``simulation`` hold the result, ``problems`` what is wrong."""
 
-    def __init__(self, doc: dict, default_name: str = "mechanism", check_references: bool = True):
+    def __init__(self, doc: dict, default_name: str = p.DEFAULT_NAME, check_references: bool = True):
         self.doc = doc
         self.check_references = check_references  # False for the Python builder: the core checks them
         self.default_name = default_name
