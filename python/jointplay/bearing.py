@@ -106,7 +106,8 @@ def _grid(n_circumferential, n_axial) -> tuple[int, int]:
 
 
 def steady(length_over_diameter, eccentricity_ratio=None, load=None, radius=None, clearance=None,
-           viscosity=None, speed=None, n_circumferential=120, n_axial=16) -> SteadyBearing:
+           viscosity=None, speed=None, n_circumferential=p.REYNOLDS_GRID[0],
+           n_axial=p.REYNOLDS_GRID[1]) -> SteadyBearing:
     """Steady operating point of a full journal bearing.
 
     Give ``eccentricity_ratio`` (dimensionless result; dimensional fields too
@@ -198,7 +199,7 @@ def _plot_field(field: PressureField, path: Path) -> None:
 
 
 def chart(length_over_diameter, path, n_points=24, eccentricity_range=(0.03, 0.95),
-          n_circumferential=120, n_axial=16) -> list[SteadyBearing]:
+          n_circumferential=p.REYNOLDS_GRID[0], n_axial=p.REYNOLDS_GRID[1]) -> list[SteadyBearing]:
     """Draws the Raimondi-Boyd design chart for one L/D into ``path`` (PNG, PDF, SVG by suffix).
 
     Six panels against the Sommerfeld number (log axis): eccentricity ratio

@@ -300,6 +300,6 @@ def _pressure_figure(inputs: _Inputs, point: _bearing.SteadyBearing, path: Path)
     n_t, n_a = inputs.grid
     _bearing.pressure_field(r, 2.0 * r * inputs.length_over_diameter, c, inputs.viscosity,
                             (e * math.sin(phi), -e * math.cos(phi)), journal_spin=2.0 * math.pi * inputs.speed,
-                            cavitation="swift_stieber", feed_at_thickest_film=True, n_circumferential=n_t,
-                            n_axial=n_a, path=path)
+                            cavitation=p.LUBRICATION.default("cavitation"), feed_at_thickest_film=True,
+                            n_circumferential=n_t, n_axial=n_a, path=path)
     return phi - 0.5 * math.pi
