@@ -20,6 +20,7 @@ import inspect
 import json
 import math
 import os
+import textwrap
 import time as _time
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -173,6 +174,9 @@ class Model:
             "lubrication": None if lubrication is None else copy.deepcopy(lubrication),
         })
         return self._joint(joint)
+
+    add_clearance_revolute.__doc__ = (add_clearance_revolute.__doc__.rstrip() + "\n\n"
+                                      + textwrap.indent(p.key_list(_CLEARANCE), " " * 8))
 
     def _joint(self, joint: dict) -> str:
         self._spec["joints"].append(joint)

@@ -523,13 +523,17 @@ def _number(value: float, si: str) -> str:
     return f'"{value:g} {si}"' if si else f"{value:g}"
 
 
-def docstring(table: Table, summary: str = "", skip: tuple[str, ...] = ()) -> str:
-    """A docstring: ``summary`` (the table's doc by default), then one line per key with its unit, range
-    and default, from the definition."""
-    lines = [summary or table.doc, "", "Keys, as in a model file (numbers in SI units, strings with units, pint "
-             "quantities; docs/model-file-reference.md):", ""]
+def docstring(table: Table, summary: str = "") -> str:
+    """A docstring: ``summary`` (the table's doc by default), then its :func:`key_list`."""
+    return f"{summary or table.doc}\n\n{key_list(table)}"
+
+
+def key_list(table: Table) -> str:
+    """One line per key that the core reads, with its unit, range, default and doc, from the definition."""
+    lines = ["Keys, as in a model file (numbers in SI units, strings with units, pint quantities; "
+             "docs/model-file-reference.md):", ""]
     for param in table.params:
-        if param.key in skip or not param.in_spec:
+        if not param.in_spec:
             continue
         si, allowed = unit(param), range_text(param)
         head = f"- ``{param.key}``" + (f" [{si}]" if si else "")

@@ -61,12 +61,13 @@ def points(raw: dict[str, Any] | None, where: str) -> list[dict]:
 
 def material(raw: dict, where: str) -> dict:
     """A material ``{"youngs_modulus": "207 GPa", "poisson_ratio": 0.3}``."""
+    from .. import parameters as p
     from .schema import MaterialTable
 
-    if not isinstance(raw, dict) or set(raw) != {"youngs_modulus", "poisson_ratio"}:
+    if not isinstance(raw, dict) or set(raw) != set(p.MATERIAL.keys()):
         raise ModelError([Problem(where, f"must be a material such as jointplay.laws.material(\"207 GPa\", 0.3), "
                                          f"got {raw!r}")])
-    return {key: value(MaterialTable, key, raw[key], where) for key in ("youngs_modulus", "poisson_ratio")}
+    return {key: value(MaterialTable, key, raw[key], where) for key in p.MATERIAL.keys()}
 
 
 def function(raw: Any, kind: str, where: str) -> dict:
