@@ -346,3 +346,15 @@ def test_every_default_lies_in_its_range():
                 assert math.isfinite(d)
             if param.kind == "choice" and isinstance(d, str):
                 assert d in param.of, param.key
+
+
+def test_every_kind_is_a_quantity_or_a_known_structure():
+    from jointplay.units import KINDS
+
+    for table in p.all_tables():
+        for param in table.params:
+            assert param.kind in KINDS or param.kind in p.STRUCTURED, (table.name, param.key, param.kind)
+            if param.kind in ("vector", "list") and param.of not in ("powers", "value"):
+                assert param.of in KINDS, (table.name, param.key)
+            if param.kind == "law":
+                assert param.of in p.LAWS, (table.name, param.key)

@@ -12,7 +12,14 @@ nested table (a material). Everything else follows from these definitions:
 - the TOML writer (:mod:`jointplay.modelfile.writer`);
 - the reference of every key, ``docs/model-file-reference.md`` (:mod:`jointplay.modelfile.reference`).
 
-Defaults are in SI units. This module imports nothing heavy: ``import jointplay`` reads it.
+Defaults are in SI units. ``import jointplay`` reads this module, so it loads neither pint nor pydantic.
+
+To add an element (a force element, say): define its :class:`Table` here (``tag="type"``, its keys in the
+order of the core's spec) and add it to :data:`FORCES`; add one builder line to :class:`jointplay.Model`
+(``add_x = _adds(p.X, "forces", positional=2)``); the core's ``ForceSpec`` gets a variant with the same keys.
+A new law family goes into :data:`LAWS`, with one helper line per law in :mod:`jointplay.laws`. Then
+regenerate ``docs/model-file-reference.md`` and use every new key in ``tests/fixtures/every_key.toml``
+(``tests/test_parameters.py`` says what is missing).
 """
 
 from __future__ import annotations
@@ -118,10 +125,6 @@ class Table:
     def default(self, key: str) -> Any:
         """The default of ``key`` (:data:`REQUIRED` when it has none)."""
         return self[key].default
-
-    def defaults(self) -> dict[str, Any]:
-        """Every key that has a default, with it."""
-        return {p.key: p.default for p in self.params if not p.required}
 
 
 def family(*tables: Table) -> dict[str, Table]:
