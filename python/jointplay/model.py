@@ -77,7 +77,8 @@ def _adds(table: p.Table, section: str, positional: int | None = None, summary: 
         return self._add(section, table, values.pop("name"), values, hint)
 
     add.__signature__ = signature  # type: ignore[attr-defined]
-    add.__name__ = add.__qualname__ = f"add_{table.name}" if section != "bodies" else "add_body"
+    add.__name__ = f"add_{table.name}" if section != "bodies" else "add_body"
+    add.__qualname__ = f"Model.{add.__name__}"
     add.__doc__ = p.docstring(table, summary) + "\n\nReturns the element's name."
     return add
 
