@@ -22,8 +22,9 @@ from pathlib import Path
 import numpy as np
 
 from . import _core
+from . import parameters as p
 
-_CAVITATION = ("gumbel", "swift_stieber", "elrod_adams")
+_CAVITATION = p.CAVITATIONS
 
 
 @dataclass(frozen=True)
@@ -105,7 +106,8 @@ def _grid(n_circumferential, n_axial) -> tuple[int, int]:
 
 
 def steady(length_over_diameter, eccentricity_ratio=None, load=None, radius=None, clearance=None,
-           viscosity=None, speed=None, n_circumferential=120, n_axial=16) -> SteadyBearing:
+           viscosity=None, speed=None, n_circumferential=p.REYNOLDS_GRID[0],
+           n_axial=p.REYNOLDS_GRID[1]) -> SteadyBearing:
     """Steady operating point of a full journal bearing.
 
     Give ``eccentricity_ratio`` (dimensionless result; dimensional fields too
@@ -142,9 +144,10 @@ def steady(length_over_diameter, eccentricity_ratio=None, load=None, radius=None
 
 
 def pressure_field(radius, length, clearance, viscosity, eccentricity, eccentricity_rate=(0.0, 0.0),
-                   journal_spin=0.0, bearing_spin=0.0, cavitation="swift_stieber", ambient_pressure=0.0,
-                   supply_pressure=None, groove_width=0.0, feed_at_thickest_film=False,
-                   n_circumferential=120, n_axial=16, path=None) -> PressureField:
+                   journal_spin=0.0, bearing_spin=0.0, cavitation=p.LUBRICATION.default("cavitation"),
+                   ambient_pressure=p.LUBRICATION.default("ambient_pressure"), supply_pressure=None,
+                   groove_width=0.0, feed_at_thickest_film=False, n_circumferential=p.REYNOLDS_GRID[0],
+                   n_axial=p.REYNOLDS_GRID[1], path=None) -> PressureField:
     """Solves the Reynolds equation for one state and returns p(theta, z) over the full length.
 
     ``eccentricity`` = journal centre - bearing centre [m] and its rate [m/s]
@@ -196,7 +199,7 @@ def _plot_field(field: PressureField, path: Path) -> None:
 
 
 def chart(length_over_diameter, path, n_points=24, eccentricity_range=(0.03, 0.95),
-          n_circumferential=120, n_axial=16) -> list[SteadyBearing]:
+          n_circumferential=p.REYNOLDS_GRID[0], n_axial=p.REYNOLDS_GRID[1]) -> list[SteadyBearing]:
     """Draws the Raimondi-Boyd design chart for one L/D into ``path`` (PNG, PDF, SVG by suffix).
 
     Six panels against the Sommerfeld number (log axis): eccentricity ratio

@@ -20,7 +20,10 @@ import typer
 from rich.table import Table
 
 from . import bearing as _bearing
+from . import parameters as p
 from ._core import MAX_REYNOLDS_GRID_NODES
+
+_GRID = f"{p.REYNOLDS_GRID[0]}x{p.REYNOLDS_GRID[1]}"
 from .cli import EXIT_BAD_INPUT, app, err, out
 
 HELP = """Steady operating point of a full (360 degree) journal bearing, and its design chart.
@@ -110,13 +113,13 @@ def _grid(text: str, problems: list[str]) -> tuple[int, int]:
         n_t, n_a = 0, 0
     if n_t < 8 or n_a < 2 or n_a % 2:
         problems.append(f"--grid: must be N_CIRCUMFERENTIAL x N_AXIAL with N_CIRCUMFERENTIAL >= 8 and N_AXIAL even "
-                        f">= 2, e.g. 120x16, got {text!r}")
-        return 120, 16
+                        f">= 2, e.g. {_GRID}, got {text!r}")
+        return p.REYNOLDS_GRID
     nodes = n_t * (n_a // 2 + 1)
     if nodes > MAX_REYNOLDS_GRID_NODES:
         problems.append(f"--grid: {n_t}x{n_a} has {nodes} nodes on the half length, more than the limit of "
                         f"{MAX_REYNOLDS_GRID_NODES} (N_CIRCUMFERENTIAL x (N_AXIAL/2 + 1)), got {text!r}")
-        return 120, 16
+        return p.REYNOLDS_GRID
     return n_t, n_a
 
 
@@ -261,7 +264,7 @@ def bearing(
                                                   "pressure p(theta, z) at the operating point (needs the "
                                                   "geometry); .png, .svg or .pdf.")] = None,
     grid: Annotated[str, typer.Option("--grid", metavar="NTxNZ", help="Reynolds grid: nodes around x intervals "
-                                      "along the length (even).")] = "120x16",
+                                      "along the length (even).")] = _GRID,
 ) -> None:
     inputs = _read(l_over_d, eccentricity, load, radius, diameter, clearance, viscosity, speed, grid, chart, pressure)
     n_t, n_a = inputs.grid
@@ -297,6 +300,6 @@ def _pressure_figure(inputs: _Inputs, point: _bearing.SteadyBearing, path: Path)
     n_t, n_a = inputs.grid
     _bearing.pressure_field(r, 2.0 * r * inputs.length_over_diameter, c, inputs.viscosity,
                             (e * math.sin(phi), -e * math.cos(phi)), journal_spin=2.0 * math.pi * inputs.speed,
-                            cavitation="swift_stieber", feed_at_thickest_film=True, n_circumferential=n_t,
-                            n_axial=n_a, path=path)
+                            cavitation=p.LUBRICATION.default("cavitation"), feed_at_thickest_film=True,
+                            n_circumferential=n_t, n_axial=n_a, path=path)
     return phi - 0.5 * math.pi

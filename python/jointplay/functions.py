@@ -15,6 +15,10 @@ import math
 from collections.abc import Sequence
 from typing import Any
 
+from . import parameters as p
+
+_RATE, _SINE = p.FUNCTIONS["constant_rate"], p.FUNCTIONS["sine"]
+
 
 def _value(x: Any) -> Any:
     """A number as a float (SI); a string with a unit or a pint Quantity as it is, for the builder."""
@@ -28,7 +32,7 @@ def constant(value: float) -> dict:
     return {"kind": "constant", "value": _value(value)}
 
 
-def constant_speed(rate: float, initial: float = 0.0) -> dict:
+def constant_speed(rate: float, initial: float = _RATE.default("initial")) -> dict:
     """``initial + rate * t``: a crank at constant speed (rate in rad/s) or a slider at constant velocity."""
     return {"kind": "constant_rate", "initial": _value(initial), "rate": _value(rate)}
 
@@ -49,7 +53,8 @@ def cubic_step(t_start: float, t_end: float, value_start: float, value_end: floa
             "value_start": _value(value_start), "value_end": _value(value_end)}
 
 
-def sine(amplitude: float, frequency: float, offset: float = 0.0, phase: float = 0.0) -> dict:
+def sine(amplitude: float, frequency: float, offset: float = _SINE.default("offset"),
+         phase: float = _SINE.default("phase")) -> dict:
     """``offset + amplitude sin(2 pi frequency t + phase)``; frequency in Hz, phase in rad."""
     return {"kind": "sine", "offset": _value(offset), "amplitude": _value(amplitude),
             "frequency": _value(frequency), "phase": _value(phase)}

@@ -8,7 +8,11 @@ a wrong one raises :class:`~jointplay.errors.ModelError` naming the law's key.
 
 from __future__ import annotations
 
+import inspect
+from collections.abc import Callable
 from typing import Any
+
+from . import parameters as p
 
 
 def _si(raw: Any, kind: str, where: str) -> float:
@@ -21,105 +25,70 @@ def _si(raw: Any, kind: str, where: str) -> float:
     except UnitError as exc:
         raise ModelError([Problem(where, str(exc))]) from None
 
-STEEL = {"youngs_modulus": 207e9, "poisson_ratio": 0.3}
+
+def _helper(table: p.Table, name: str, where: str) -> Callable[..., dict]:
+    """A function returning the plain data of ``table`` (a law, or a material): its keys as arguments, in
+    the definition's order, with the definition's defaults (None: left to the core); each value converted
+    to SI (errors located at ``where.<key>``), not range-checked (the builder does that, as in a file)."""
+    signature = inspect.Signature([
+        inspect.Parameter(param.key, inspect.Parameter.POSITIONAL_OR_KEYWORD,
+                          default=inspect.Parameter.empty if param.required else param.default)
+        for param in table.params], return_annotation="dict")
+
+    def make(*args: Any, **kwargs: Any) -> dict:
+        bound = signature.bind(*args, **kwargs)
+        bound.apply_defaults()
+        out = {table.tag: table.name} if table.tag else {}
+        for key, value in bound.arguments.items():
+            if value is not None:
+                out[key] = _si(value, table[key].kind, f"{where}.{key}")
+        return p.core_law(out) if table.tag else out
+
+    make.__signature__ = signature  # type: ignore[attr-defined]
+    make.__name__ = make.__qualname__ = name
+    make.__doc__ = p.docstring(table)
+    return make
+
+
+STEEL = p.STEEL
 """Structural steel, E = 207 GPa, nu = 0.3 (the value the Flores papers use)."""
 
-
-def material(youngs_modulus: float, poisson_ratio: float) -> dict:
-    """An elastic material: Young's modulus [Pa], Poisson's ratio [-]."""
-    return {"youngs_modulus": _si(youngs_modulus, "pressure", "material.youngs_modulus"),
-            "poisson_ratio": _si(poisson_ratio, "dimensionless", "material.poisson_ratio")}
-
+material = _helper(p.MATERIAL, "material", "material")
 
 # normal force laws ---------------------------------------------------------
 
-def hertz() -> dict:
-    """Elastic Hertz contact, no dissipation."""
-    return {"law": "hertz"}
-
-
-def hunt_crossley(restitution: float) -> dict:
-    """Hunt-Crossley, D = 3(1-e)/2."""
-    return {"law": "hunt_crossley", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
-
-
-def lankarani_nikravesh(restitution: float) -> dict:
-    """Lankarani-Nikravesh, D = 3(1-e^2)/4 (accurate for e near 1)."""
-    return {"law": "lankarani_nikravesh", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
-
-
-def flores(restitution: float) -> dict:
-    """Flores et al. 2011, D = 8(1-e)/(5e) (for any e)."""
-    return {"law": "flores", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
-
-
-def gonthier(restitution: float) -> dict:
-    """Gonthier et al. 2004."""
-    return {"law": "gonthier", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
-
-
-def hu_guo(restitution: float) -> dict:
-    """Hu and Guo 2015."""
-    return {"law": "hu_guo", "restitution": _si(restitution, "dimensionless", "contact.restitution")}
-
+hertz = _helper(p.CONTACT_LAWS["hertz"], "hertz", "contact")
+hunt_crossley = _helper(p.CONTACT_LAWS["hunt_crossley"], "hunt_crossley", "contact")
+lankarani_nikravesh = _helper(p.CONTACT_LAWS["lankarani_nikravesh"], "lankarani_nikravesh", "contact")
+flores = _helper(p.CONTACT_LAWS["flores"], "flores", "contact")
+gonthier = _helper(p.CONTACT_LAWS["gonthier"], "gonthier", "contact")
+hu_guo = _helper(p.CONTACT_LAWS["hu_guo"], "hu_guo", "contact")
 
 # stiffness laws ------------------------------------------------------------
 
-def hertz_cylinder(exponent: float | None = None) -> dict:
-    """K delta^n with K = (4/3) E* sqrt(R*); n = 1.5 unless given."""
-    if exponent is None:
-        return {"law": "hertz_cylinder"}
-    return {"law": "hertz_cylinder_exponent", "exponent": _si(exponent, "dimensionless", "stiffness.exponent")}
-
-
-def johnson_line() -> dict:
-    """Johnson / ESDU line contact of a cylinder in a bore (needs the bearing length)."""
-    return {"law": "johnson_line"}
-
-
-def rogers_andrews() -> dict:
-    """Rogers-Andrews logarithmic law (needs the bearing length)."""
-    return {"law": "rogers_andrews"}
-
+hertz_cylinder = _helper(p.STIFFNESS_LAWS["hertz_cylinder"], "hertz_cylinder", "stiffness")
+johnson_line = _helper(p.STIFFNESS_LAWS["johnson_line"], "johnson_line", "stiffness")
+rogers_andrews = _helper(p.STIFFNESS_LAWS["rogers_andrews"], "rogers_andrews", "stiffness")
 
 # friction laws -------------------------------------------------------------
 
-def frictionless() -> dict:
-    """No friction."""
-    return {"law": "none"}
+frictionless = _helper(p.FRICTION_LAWS["none"], "frictionless", "friction")
+coulomb = _helper(p.FRICTION_LAWS["coulomb"], "coulomb", "friction")
+ambrosio = _helper(p.FRICTION_LAWS["ambrosio"], "ambrosio", "friction")
+threlfall = _helper(p.FRICTION_LAWS["threlfall"], "threlfall", "friction")
+stiction = _helper(p.FRICTION_LAWS["stiction"], "stiction", "friction")
 
+# transitions from film to contact --------------------------------------------
 
-def coulomb(coefficient: float, velocity_tolerance: float = 1e-3) -> dict:
-    """Coulomb friction regularised by tanh(v / velocity_tolerance)."""
-    return {"law": "coulomb", "coefficient": _si(coefficient, "dimensionless", "friction.coefficient"),
-            "velocity_tolerance": _si(velocity_tolerance, "velocity", "friction.velocity_tolerance")}
-
-
-def ambrosio(coefficient: float, v0: float = 1e-4, v1: float = 1e-3) -> dict:
-    """Modified Coulomb law of Ambrosio: none below v0, full above v1, linear between [m/s]."""
-    return {"law": "ambrosio", "coefficient": _si(coefficient, "dimensionless", "friction.coefficient"),
-            "v0": _si(v0, "velocity", "friction.v0"), "v1": _si(v1, "velocity", "friction.v1")}
-
-
-def threlfall(coefficient: float, v0: float = 1e-3) -> dict:
-    """Threlfall: mu F_n (1 - exp(-3|v|/v0))."""
-    return {"law": "threlfall", "coefficient": _si(coefficient, "dimensionless", "friction.coefficient"),
-            "v0": _si(v0, "velocity", "friction.v0")}
-
-
-def stiction(static_coefficient: float, kinetic_coefficient: float,
-             stiction_velocity: float = 1e-4, transition_velocity: float = 1e-3) -> dict:
-    """Static and kinetic coefficients with velocity tolerances [m/s]."""
-    return {"law": "stiction", "static_coefficient": _si(static_coefficient, "dimensionless", "friction.static_coefficient"),
-            "kinetic_coefficient": _si(kinetic_coefficient, "dimensionless", "friction.kinetic_coefficient"),
-            "stiction_velocity": _si(stiction_velocity, "velocity", "friction.stiction_velocity"),
-            "transition_velocity": _si(transition_velocity, "velocity", "friction.transition_velocity")}
+wang_transition = _helper(p.TRANSITION_LAWS["wang_improved"], "wang_transition", "transition")
+flores_transition = _helper(p.TRANSITION_LAWS["flores"], "flores_transition", "transition")
+switch_transition = _helper(p.TRANSITION_LAWS["switch"], "switch_transition", "transition")
 
 
 # lubrication ---------------------------------------------------------------
 
-FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamrock_long", "frene_short",
-               "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
+FILM_MODELS = p.FILM_MODELS
+_LUBRICATION = p.LUBRICATION
 
 
 def centipoise(value: float) -> float:
@@ -130,50 +99,34 @@ def centipoise(value: float) -> float:
 def lubrication(model: str, viscosity: float, transition: dict | None = None, *, cavitation: str | None = None,
                 n_circumferential: int | None = None, n_axial: int | None = None, ambient_pressure: Any = None,
                 groove_supply_pressure: Any = None) -> dict:
-    """A lubricant film for a clearance joint: ``model`` one of :data:`FILM_MODELS`, ``viscosity`` [Pa s]
-    (a number, or ``"400 cP"``; see :func:`centipoise`), ``transition`` from :func:`wang_transition`
-    (default), :func:`flores_transition` or :func:`switch_transition`. Only the Reynolds models
-    (``reynolds_exact``, ``reynolds_table``) take the cavitation condition (``gumbel``,
-    ``swift_stieber`` by default, ``elrod_adams``), the grid, the ambient pressure at the ends [Pa]
-    (0 by default) and the supply pressure of a circumferential groove at mid-length [Pa]; giving one
-    of them to a closed-form model is a ModelError, as in a model file."""
     from .errors import ModelError, Problem
 
     if model not in FILM_MODELS:
         raise ValueError(f"unknown film model {model!r}; choose one of {', '.join(FILM_MODELS)}")
     spec = {"model": model, "viscosity": _si(viscosity, "viscosity", "lubrication.viscosity"),
-            "transition": transition or wang_transition()}
+            "transition": transition or {"law": _LUBRICATION.default("transition")}}
     reynolds_only = {"cavitation": cavitation, "n_circumferential": n_circumferential, "n_axial": n_axial,
                      "ambient_pressure": ambient_pressure, "groove_supply_pressure": groove_supply_pressure}
     if not model.startswith("reynolds"):
         given = [key for key, value in reynolds_only.items() if value is not None]
         if given:
-            raise ModelError([Problem(f"lubrication.{key}", f"applies only to the Reynolds models (reynolds_exact, "
-                                                            f"reynolds_table), not to {model}") for key in given])
+            raise ModelError([Problem(f"lubrication.{key}", f"applies only to the Reynolds models "
+                                                            f"({', '.join(p.REYNOLDS_MODELS)}), not to {model}")
+                              for key in given])
         return spec
-    spec["reynolds"] = {"cavitation": cavitation or "swift_stieber", "n_circumferential": n_circumferential,
-                        "n_axial": n_axial,
-                        "ambient_pressure": _si(ambient_pressure or 0.0, "pressure", "lubrication.ambient_pressure"),
+    if ambient_pressure is None:
+        ambient_pressure = _LUBRICATION.default("ambient_pressure")
+    spec["reynolds"] = {"cavitation": cavitation or _LUBRICATION.default("cavitation"),
+                        "n_circumferential": n_circumferential, "n_axial": n_axial,
+                        "ambient_pressure": _si(ambient_pressure, "pressure", "lubrication.ambient_pressure"),
                         "groove_supply_pressure": None if groove_supply_pressure is None else
                         _si(groove_supply_pressure, "pressure", "lubrication.groove_supply_pressure")}
     return spec
 
 
-def wang_transition(safe_film_thickness: float | None = None) -> dict:
-    """Paper 001's transition: squeeze and wedge film faded out from the safe film thickness [m]
-    (default 0.00015 of the diameter) to contact."""
-    if safe_film_thickness is None:
-        return {"law": "wang_improved"}
-    return {"law": "wang_improved", "safe_film_thickness": _si(safe_film_thickness, "length",
-                                                                    "transition.safe_film_thickness")}
-
-
-def flores_transition(lubricated_limit: float = 0.95) -> dict:
-    """Flores et al.: squeeze film only, faded out between eccentricity ratio ``lubricated_limit`` and contact."""
-    return {"law": "flores", "lubricated_limit": _si(lubricated_limit, "dimensionless",
-                                                               "transition.lubricated_limit")}
-
-
-def switch_transition() -> dict:
-    """Film force until contact, contact force after (paper 000's squeeze-film joint)."""
-    return {"law": "switch"}
+lubrication.__doc__ = p.docstring(p.LUBRICATION, summary=(
+    "A lubricant film for a clearance joint, as the core reads it (``model.joint(\"B\")[\"lubrication\"] = ...`` "
+    "or ``add_clearance_revolute(lubrication=...)``). ``viscosity`` [Pa s] may be ``\"400 cP\"`` (see "
+    ":func:`centipoise`); ``transition`` comes from :func:`wang_transition`, :func:`flores_transition` or "
+    ":func:`switch_transition`; ``n_circumferential`` and ``n_axial`` are a model file's ``grid``. Giving a "
+    "key of the Reynolds models to a closed-form model is a ModelError, as in a model file."))

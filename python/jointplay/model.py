@@ -16,9 +16,11 @@ got -0.1 mm``).
 from __future__ import annotations
 
 import copy
+import inspect
 import json
 import math
 import os
+import textwrap
 import time as _time
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -26,17 +28,17 @@ from typing import Any
 import numpy as np
 
 from . import _core, resultsfile
+from . import parameters as p
 from .errors import ModelError, SimulationError
 from .functions import as_function
-from .laws import STEEL, hertz_cylinder, frictionless
 from .results import Results
 
 Vector = Sequence[Any]
 Quantity = Any  # a number in SI units, a string with a unit ("0.5 mm") or a pint Quantity
 
-METHODS = {"dopri5": "dopri5", "rk45": "dopri5", "dormand_prince": "dopri5", "adams": "adams", "adams_pc": "adams",
-           "bdf": "bdf", "ndf": "bdf"}
-STABILIZATIONS = ("projection", "baumgarte", "none")
+METHODS = {**{m: m for m in p.METHODS}, **dict(p.METHOD_ALIASES)}
+STABILIZATIONS = p.STABILIZATIONS
+_CLEARANCE, _SIMULATION = p.CLEARANCE_REVOLUTE, p.SIMULATION
 
 
 def _arg(table: str, key: str, raw: Any, where: str) -> Any:
@@ -52,6 +54,35 @@ def _where(section: str, name: str) -> str:
     return join(section, name)
 
 
+def _adds(table: p.Table, section: str, positional: int | None = None, summary: str = "") -> Callable[..., str]:
+    """The builder method that adds an element defined by ``table`` to ``section``: ``(self, name, key...)``
+    with the table's keys (that the core reads) as arguments and their defaults, the first ``positional`` of
+    them (all by default) positional too, the rest keyword-only (required ones first). Each value is read
+    as the model-file key (units, ranges, messages); it returns the element's name."""
+    keys = [param for param in table.params if param.in_spec]
+    n = len(keys) if positional is None else positional
+    ordered = keys[:n] + sorted(keys[n:], key=lambda param: not param.required)
+    arguments = [inspect.Parameter("self", inspect.Parameter.POSITIONAL_OR_KEYWORD),
+                 inspect.Parameter("name", inspect.Parameter.POSITIONAL_OR_KEYWORD, annotation="str")]
+    for k, param in enumerate(ordered):
+        how = inspect.Parameter.POSITIONAL_OR_KEYWORD if k < n else inspect.Parameter.KEYWORD_ONLY
+        default = inspect.Parameter.empty if param.required else None if param.kind == "points" else param.default
+        arguments.append(inspect.Parameter(param.key, how, default=default))
+    signature = inspect.Signature(arguments, return_annotation="str")
+    hint = f"{table.name} joint: " if section == "joints" else f"{table.name}: " if table.tag else ""
+
+    def add(self: Model, *args: Any, **kwargs: Any) -> str:
+        values = signature.bind(self, *args, **kwargs).arguments
+        del values["self"]
+        return self._add(section, table, values.pop("name"), values, hint)
+
+    add.__signature__ = signature  # type: ignore[attr-defined]
+    add.__name__ = f"add_{table.name}" if section != "bodies" else "add_body"
+    add.__qualname__ = f"Model.{add.__name__}"
+    add.__doc__ = p.docstring(table, summary) + "\n\nReturns the element's name."
+    return add
+
+
 class Model:
     """A planar mechanism under construction.
 
@@ -64,7 +95,7 @@ class Model:
         results = m.simulate(2.0, output_step=1e-3)
     """
 
-    def __init__(self, name: str = "mechanism", gravity: Vector = (0.0, 0.0)):
+    def __init__(self, name: str = p.DEFAULT_NAME, gravity: Vector = p.MODEL.default("gravity")):
         self._spec: dict[str, Any] = {
             "name": name, "gravity": _arg("ModelTable", "gravity", gravity, "model"),
             "ground_points": [], "bodies": [], "joints": [], "drivers": [], "forces": [],
@@ -96,54 +127,34 @@ class Model:
         self._changed()
         return f"ground.{name}"
 
-    def add_body(self, name: str, mass: Quantity, inertia: Quantity, position: Vector = (0.0, 0.0),
-                 angle: Quantity = 0.0, velocity: Vector = (0.0, 0.0), angular_velocity: Quantity = 0.0,
-                 points: dict[str, Vector] | None = None) -> str:
-        """A rigid body: mass [kg], inertia about its centre of mass [kg m^2], approximate initial
-        position [m], angle [rad], velocities; named points in body coordinates [m]. Numbers are SI;
-        strings with units (``mass="0.3 kg"``, ``points={"A": ("25 mm", 0)}``) and pint quantities too."""
-        from .modelfile import arguments
+    # elements: their keys, defaults and docs are defined once, in jointplay.parameters
+    add_body = _adds(p.BODY, "bodies", summary="A rigid body, its frame at the centre of mass: mass, inertia "
+                     "about the centre of mass, approximate initial position, angle and velocities; named points "
+                     "in body coordinates (``points={\"A\": (\"25 mm\", 0)}``).")
+    add_revolute = _adds(p.REVOLUTE, "joints")
+    add_translational = _adds(p.TRANSLATIONAL, "joints")
+    add_fixed = _adds(p.FIXED, "joints")
 
-        where = _where("bodies", name)
-        body = {"name": name}
-        for key, raw in (("mass", mass), ("inertia", inertia), ("position", position), ("angle", angle),
-                         ("velocity", velocity), ("angular_velocity", angular_velocity)):
-            body[key] = _arg("BodyTable", key, raw, where)
-        body["points"] = arguments.points(points, where)
-        self._spec["bodies"].append(body)
-        self._changed()
-        return name
-
-    def add_revolute(self, name: str, first: str, second: str) -> str:
-        """Ideal pin joint: points ``first`` and ``second`` (``"body.point"``) coincide."""
-        return self._joint({"type": "revolute", "name": name, "first": first, "second": second})
-
-    def add_translational(self, name: str, first: str, second: str, axis: Vector = (1.0, 0.0)) -> str:
-        """Ideal slider: no relative rotation; ``second`` moves on the line through ``first`` along
-        ``axis`` (in the first body's frame)."""
-        return self._joint({"type": "translational", "name": name, "first": first, "second": second,
-                            "axis": _arg("TranslationalTable", "axis", axis, _where("joints", name))})
-
-    def add_fixed(self, name: str, first: str, second: str) -> str:
-        """Ideal weld between two bodies at coincident points."""
-        return self._joint({"type": "fixed", "name": name, "first": first, "second": second})
-
-    def add_clearance_revolute(self, name: str, bearing: str, journal: str, *, bearing_radius: Quantity,
-                               clearance: Quantity, contact: dict, length: Quantity | None = None,
-                               stiffness: dict | None = None, friction: dict | None = None,
-                               bearing_material: dict = STEEL, journal_material: dict = STEEL,
-                               initial_eccentricity: Vector = (0.0, 0.0), lock_at_assembly: bool = True,
-                               onset_velocity_floor: Quantity = 1e-4, max_penetration: Quantity | None = None,
-                               lubrication: dict | None = None) -> str:
+    def add_clearance_revolute(
+            self, name: str, bearing: str, journal: str, *, bearing_radius: Quantity, clearance: Quantity,
+            contact: dict, length: Quantity | None = _CLEARANCE.default("length"),
+            stiffness: dict | None = None, friction: dict | None = None,
+            bearing_material: dict = _CLEARANCE.default("bearing_material"),
+            journal_material: dict = _CLEARANCE.default("journal_material"),
+            initial_eccentricity: Vector = _CLEARANCE.default("initial_eccentricity"),
+            lock_at_assembly: bool = _CLEARANCE.default("lock_at_assembly"),
+            onset_velocity_floor: Quantity = _CLEARANCE.default("onset_velocity_floor"),
+            max_penetration: Quantity | None = _CLEARANCE.default("max_penetration"),
+            lubrication: dict | None = _CLEARANCE.default("lubrication")) -> str:
         """Dry revolute joint with radial clearance: bore of radius ``bearing_radius`` [m] centred at
         ``bearing``, journal of radius ``bearing_radius - clearance`` centred at ``journal``.
         ``contact``, ``stiffness`` and ``friction`` come from :mod:`jointplay.laws`. Assembly holds the
         journal at ``initial_eccentricity`` [m] with the velocities of the ideal mechanism unless
         ``lock_at_assembly`` is False (then the bodies' own approximate positions and velocities count).
         ``onset_velocity_floor`` [m/s] bounds the damping term for grazing contacts; the run stops if the
-        penetration exceeds ``max_penetration`` [m] (default 5 % of the journal radius). ``lubrication``
-        (:func:`jointplay.laws.lubrication`) fills the clearance with a lubricant film; dry contact still
-        acts once the journal touches the bore. Lengths and speeds may be strings with units
+        penetration exceeds ``max_penetration`` [m]. ``lubrication`` (:func:`jointplay.laws.lubrication`)
+        fills the clearance with a lubricant film; dry contact still acts once the journal touches the bore.
+        ``stiffness`` and ``friction`` None: the default law. Lengths and speeds may be strings with units
         (``bearing_radius="10 mm", clearance="0.5 mm"``) or pint quantities."""
         from .modelfile import arguments
 
@@ -155,8 +166,8 @@ class Model:
             "bearing_material": arguments.material(bearing_material, f"{where}.bearing_material"),
             "journal_material": arguments.material(journal_material, f"{where}.journal_material"),
             "contact": arguments.law(contact, "contact", where),
-            "stiffness": arguments.law(stiffness or hertz_cylinder(), "stiffness", where),
-            "friction": arguments.law(friction or frictionless(), "friction", where),
+            "stiffness": arguments.law(stiffness, "stiffness", where),
+            "friction": arguments.law(friction, "friction", where),
             "initial_eccentricity": _arg("ClearanceRevoluteTable", "initial_eccentricity", initial_eccentricity, where),
             "lock_at_assembly": bool(lock_at_assembly),
             "onset_velocity_floor": _arg("ClearanceRevoluteTable", "onset_velocity_floor", onset_velocity_floor, where),
@@ -164,6 +175,9 @@ class Model:
             "lubrication": None if lubrication is None else copy.deepcopy(lubrication),
         })
         return self._joint(joint)
+
+    add_clearance_revolute.__doc__ = (add_clearance_revolute.__doc__.rstrip() + "\n\n"
+                                      + textwrap.indent(p.key_list(_CLEARANCE), " " * 8))
 
     def _joint(self, joint: dict) -> str:
         self._spec["joints"].append(joint)
@@ -181,39 +195,17 @@ class Model:
         self._changed()
         return name
 
-    def add_spring_damper(self, name: str, first: str, second: str, *, free_length: Quantity,
-                          stiffness: Quantity = 0.0, damping: Quantity = 0.0) -> str:
-        """Linear spring [N/m] and damper [N s/m] between two points, free length [m]."""
-        where = _where("forces", name)
-        values = {key: _arg("SpringDamperTable", key, raw, where)
-                  for key, raw in (("stiffness", stiffness), ("damping", damping), ("free_length", free_length))}
-        return self._force({"type": "spring_damper", "name": name, "first": first, "second": second, **values})
+    add_spring_damper = _adds(p.SPRING_DAMPER, "forces", positional=2)
+    add_rotational_spring_damper = _adds(p.ROTATIONAL_SPRING_DAMPER, "forces", positional=2)
+    add_point_force = _adds(p.POINT_FORCE, "forces")
+    add_torque = _adds(p.TORQUE, "forces")
 
-    def add_rotational_spring_damper(self, name: str, first: str, second: str, *, stiffness: Quantity = 0.0,
-                                     damping: Quantity = 0.0, free_angle: Quantity = 0.0) -> str:
-        """Torsional spring [N m/rad] and damper [N m s/rad] on the relative angle of two bodies."""
-        where = _where("forces", name)
-        values = {key: _arg("RotationalSpringDamperTable", key, raw, where)
-                  for key, raw in (("stiffness", stiffness), ("damping", damping), ("free_angle", free_angle))}
-        return self._force({"type": "rotational_spring_damper", "name": name, "first": first, "second": second,
-                            **values})
+    def _add(self, section: str, table: p.Table, name: str, values: dict[str, Any], hint: str) -> str:
+        from .modelfile import arguments
 
-    def add_point_force(self, name: str, point: str, fx: dict | Quantity = 0.0, fy: dict | Quantity = 0.0) -> str:
-        """Force at a point, global components [N] (numbers, strings with units or functions of time)."""
-        where = _where("forces", name)
-        return self._force({"type": "point_force", "name": name, "point": point,
-                            "fx": _function(fx, "force", f"{where}.fx"), "fy": _function(fy, "force", f"{where}.fy")})
-
-    def add_torque(self, name: str, body: str, torque: dict | Quantity) -> str:
-        """Torque on a body [N m], counter-clockwise positive."""
-        where = _where("forces", name)
-        return self._force({"type": "torque", "name": name, "body": body,
-                            "torque": _function(torque, "torque", f"{where}.torque")})
-
-    def _force(self, force: dict) -> str:
-        self._spec["forces"].append(force)
+        self._spec[section].append(arguments.element(table, name, values, _where(section, name), hint))
         self._changed()
-        return force["name"]
+        return name
 
     # variants --------------------------------------------------------------
 
@@ -248,7 +240,7 @@ class Model:
     @classmethod
     def from_spec(cls, spec: dict) -> Model:
         """A model from plain data as produced by :meth:`to_spec`."""
-        m = cls(spec.get("name", "mechanism"))
+        m = cls(spec.get("name", p.DEFAULT_NAME))
         m._spec.update(copy.deepcopy(spec))
         return m
 
@@ -285,10 +277,11 @@ class Model:
         info["initial_velocities"] = np.asarray(assembled["velocities"])
         return info
 
-    def simulate(self, t_end: float, *, method: str = "dopri5", rtol: float = 1e-6, atol: float = 1e-9,
+    def simulate(self, t_end: float, *, method: str = _SIMULATION.default("method"),
+                 rtol: float = _SIMULATION.default("rtol"), atol: float = _SIMULATION.default("atol"),
                  max_step: float | None = None, output_step: float | None = None,
                  initial_step: float | None = None, min_step: float | None = None, max_steps: int | None = None,
-                 stabilization: str = "projection", t0: float = 0.0,
+                 stabilization: str = _SIMULATION.default("stabilization"), t0: float = _SIMULATION.default("t0"),
                  progress: Callable[[float], None] | None = None, output_file: str | os.PathLike | None = None,
                  max_output_bytes: int | str | None = None) -> Results:
         """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
@@ -404,7 +397,7 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
     if stabilization not in STABILIZATIONS:
         problems.append(("simulation.stabilization", f"must be one of {list(STABILIZATIONS)}, got {stabilization!r}"))
     options = {
-        "method": METHODS.get(key, "dopri5"), "rtol": positive("rtol", rtol, False),
+        "method": METHODS.get(key, _SIMULATION.default("method")), "rtol": positive("rtol", rtol, False),
         "atol": None, "max_step": positive("max_step", max_step), "output_step": positive("output_step", output_step),
         "initial_step": positive("initial_step", initial_step), "min_step": positive("min_step", min_step),
         "max_steps": None, "stabilization": stabilization,

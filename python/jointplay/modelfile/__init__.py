@@ -9,8 +9,8 @@ assembles its initial configuration. Every problem found comes back in one
 unless the file's ``[units]`` table declares the unit of its kind.
 ``plausibility(spec)`` lists legal but suspicious values (warnings, not
 errors). ``to_toml(model)`` writes a model back, every unit spelled out;
-loading that text gives the same model. The keys are documented in
-``docs/model-files.md``.
+loading that text gives the same model. The keys are defined in :mod:`jointplay.parameters` and listed
+in ``docs/model-file-reference.md``.
 """
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import ModelError, Problem, SimulationError
+from ..parameters import DEFAULT_NAME
 from .build import Builder
 from .overrides import apply_overrides, parse_assignment
 from .plausibility import plausibility
@@ -75,13 +76,13 @@ def load(path: str | Path, overrides: list[str] | dict[str, Any] | None = None, 
     return model
 
 
-def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, name: str = "mechanism",
+def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, name: str = DEFAULT_NAME,
           check: bool = True):
     """Like :func:`load`, from TOML text."""
     return from_document(parse_text(text), overrides, name=name, check=check)
 
 
-def from_document(doc: dict, overrides=None, *, name: str = "mechanism", check: bool = True):
+def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check: bool = True):
     """A Model from an already parsed document."""
     from ..model import Model
 

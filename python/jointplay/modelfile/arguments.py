@@ -61,12 +61,13 @@ def points(raw: dict[str, Any] | None, where: str) -> list[dict]:
 
 def material(raw: dict, where: str) -> dict:
     """A material ``{"youngs_modulus": "207 GPa", "poisson_ratio": 0.3}``."""
+    from .. import parameters as p
     from .schema import MaterialTable
 
-    if not isinstance(raw, dict) or set(raw) != {"youngs_modulus", "poisson_ratio"}:
+    if not isinstance(raw, dict) or set(raw) != set(p.MATERIAL.keys()):
         raise ModelError([Problem(where, f"must be a material such as jointplay.laws.material(\"207 GPa\", 0.3), "
                                          f"got {raw!r}")])
-    return {key: value(MaterialTable, key, raw[key], where) for key in ("youngs_modulus", "poisson_ratio")}
+    return {key: value(MaterialTable, key, raw[key], where) for key in p.MATERIAL.keys()}
 
 
 def function(raw: Any, kind: str, where: str) -> dict:
@@ -83,17 +84,31 @@ def function(raw: Any, kind: str, where: str) -> dict:
 
 def law(raw: Any, key: str, where: str) -> dict:
     """A contact, stiffness or friction law (a dict from :mod:`jointplay.laws`, or written by hand with
-    units: ``{"law": "ambrosio", "coefficient": 0.01, "v0": "0.1 mm/s"}``) checked as in a model file."""
-    from . import schema as s
+    units: ``{"law": "ambrosio", "coefficient": 0.01, "v0": "0.1 mm/s"}``; None for the default law) checked
+    as in a model file."""
+    from .. import parameters as p
     from .build import Builder
 
-    laws = {"contact": s.CONTACT_LAWS, "stiffness": s.STIFFNESS_LAWS, "friction": s.FRICTION_LAWS}[key]
     builder = Builder({})
-    out = builder.law({key: raw}, key, laws, where, required=True)
+    out = builder.law({} if raw is None else {key: raw}, p.CLEARANCE_REVOLUTE[key], where)
     if builder.problems or out is None:
         raise ModelError(builder.problems or [Problem(join(where, key), f"must be a law, got {raw!r}")])
-    if key == "stiffness" and out["law"].startswith("hertz_cylinder"):
-        exponent = out.pop("exponent", None)
-        out = ({"law": "hertz_cylinder_exponent", "exponent": exponent} if exponent is not None
-               else {"law": "hertz_cylinder"})
     return out
+
+
+def element(table, name: str, values: dict[str, Any], where: str, hint: str = "") -> dict:
+    """The core's dict of an element of the Python builder: ``values`` (by key; None for the default) read
+    as the table ``table`` (:mod:`jointplay.parameters`) of a model file, every problem in one ModelError.
+    References to points and bodies are left to the core."""
+    from .build import Builder
+    from .schema import table_class
+
+    raw = {key: value for key, value in values.items() if value is not None}
+    if table.tag:
+        raw = {table.tag: table.name, **raw}
+    builder = Builder({}, check_references=False)
+    t = builder.validate(table_class(table), raw, where, hint=hint)
+    spec = None if t is None else builder.element_spec(table, name, where, t, raw)
+    if builder.problems or spec is None:
+        raise ModelError(builder.problems or [Problem(where, f"cannot be read: {values!r}")])
+    return spec

@@ -14,6 +14,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from .. import parameters as p
 from .._core import MAX_REYNOLDS_GRID_NODES
 from ..errors import ModelError, Problem
 from ..units import DECLARABLE, UnitError, declare_unit, model_file_units
@@ -22,13 +23,15 @@ from .fields import Q, Strict, did_you_mean, join, problems_from
 from .functions import function_spec
 
 DRIVEN_KIND = {"revolute": "angle", "translational": "length"}
+_FAILED = object()  # a value that could not be read (its problems are reported)
 
 
 class Builder:
     """Validates one document; ``spec`` and ``simulation`` hold the result, ``problems`` what is wrong."""
 
-    def __init__(self, doc: dict, default_name: str = "mechanism"):
+    def __init__(self, doc: dict, default_name: str = p.DEFAULT_NAME, check_references: bool = True):
         self.doc = doc
+        self.check_references = check_references  # False for the Python builder: the core checks them
         self.default_name = default_name
         self.problems: list[Problem] = []
         self.spec: dict[str, Any] = {"name": default_name, "gravity": [0.0, 0.0], "ground_points": [],
@@ -112,6 +115,8 @@ class Builder:
         return value
 
     def point(self, ref: str, where: str) -> None:
+        if not self.check_references:
+            return
         body, dot, name = ref.partition(".")
         if not dot or not body or not name or "." in name:
             self.problem(where, f'must be a point "body.point" (e.g. "crank.A", "ground.O"), got {ref!r}')
@@ -125,10 +130,53 @@ class Builder:
             self.referenced.add(body)
 
     def body(self, ref: str, where: str) -> None:
+        if not self.check_references:
+            return
         if ref not in self.points:
             self.problem(where, f"no body named {ref!r}{did_you_mean(ref, self.points)}")
         else:
             self.referenced.add(ref)
+
+    def element_spec(self, table: p.Table, name: str, where: str, t: Strict, raw: dict,
+                     given: dict | None = None) -> dict | None:
+        """The core's dict of a validated table ``t`` (``raw`` as written): every key of the definition that
+        the core reads, in its order, in SI units, references checked; ``given`` holds keys read already.
+        None when a function of time or a law could not be read."""
+        out: dict[str, Any] = {"type": table.name, "name": name} if table.tag == "type" else {"name": name}
+        for param in table.params:
+            if not param.in_spec:
+                continue
+            if given is not None and param.key in given:
+                out[param.key] = given[param.key]
+            else:
+                out[param.key] = self.spec_value(param, getattr(t, param.key), raw, where)
+        return None if any(v is _FAILED for v in out.values()) else out
+
+    def spec_value(self, param: p.Param, value: Any, raw: dict, where: str) -> Any:
+        """The core's value of one validated key of the table at ``where``; _FAILED after adding problems."""
+        location = join(where, param.key)
+        kind = param.kind
+        if kind == "law":
+            law = self.law(raw, param, where)
+            return _FAILED if law is None else law
+        if value is None:
+            return None
+        if kind == "point":
+            self.point(value, location)
+        elif kind == "body":
+            self.body(value, location)
+        elif kind == "function":
+            function = function_spec(value, param.of, location, self.problems)
+            return _FAILED if function is None else function
+        elif kind == "table":
+            return {sub.key: self.spec_value(sub, getattr(value, sub.key), {}, location) for sub in param.of.params}
+        elif kind == "points":
+            return self.point_table(value, location)
+        elif kind == "vector":
+            return [float(v) for v in value]
+        elif kind == "flag":
+            return bool(value)
+        return float(value) if isinstance(value, float) else value
 
     # sections --------------------------------------------------------------
 
@@ -186,17 +234,12 @@ class Builder:
             self.claim(name, where)
             table = self.validate(s.BodyTable, raw, where)
             points = self.point_table(raw.get("points", {}), join(where, "points"))
-            self.points.setdefault(name, [p["name"] for p in points])
+            self.points.setdefault(name, [point["name"] for point in points])
             if table is None:
                 continue
             if table.free:
                 self.free.add(name)
-            self.spec["bodies"].append({
-                "name": name, "mass": float(table.mass), "inertia": float(table.inertia),
-                "position": [float(v) for v in table.position], "angle": float(table.angle),
-                "velocity": [float(v) for v in table.velocity], "angular_velocity": float(table.angular_velocity),
-                "points": points,
-            })
+            self.spec["bodies"].append(self.element_spec(p.BODY, name, where, table, raw, {"points": points}))
 
     def joints(self) -> None:
         for name, where, raw in self.entries("joints"):
@@ -211,13 +254,9 @@ class Builder:
             if kind == "clearance_revolute":
                 joint = self.clearance_joint(name, where, table, raw)
             else:
-                joint = {"type": kind, "name": name, "first": table.first, "second": table.second}
-                if kind == "translational":
-                    joint["axis"] = [float(a) for a in table.axis]
-                    if math.hypot(*joint["axis"]) == 0.0:
-                        self.problem(join(where, "axis"), f"must be a non-zero direction, got {raw.get('axis')!r}")
-                for end in ("first", "second"):
-                    self.point(joint[end], join(where, end))
+                joint = self.element_spec(p.JOINTS[kind], name, where, table, raw)
+                if kind == "translational" and math.hypot(*joint["axis"]) == 0.0:
+                    self.problem(join(where, "axis"), f"must be a non-zero direction, got {raw.get('axis')!r}")
             if joint is not None:
                 self.spec["joints"].append(joint)
 
@@ -225,16 +264,11 @@ class Builder:
         self.point(t.bearing, join(where, "bearing"))
         self.point(t.journal, join(where, "journal"))
         clearance = self.radial_clearance(where, t)
-        contact = self.law(raw, "contact", s.CONTACT_LAWS, where, required=True)
-        stiffness = self.law(raw, "stiffness", s.STIFFNESS_LAWS, where, default={"law": "hertz_cylinder"})
-        friction = self.law(raw, "friction", s.FRICTION_LAWS, where, default={"law": "none"})
+        contact, stiffness, friction = (self.law(raw, p.CLEARANCE_REVOLUTE[key], where)
+                                        for key in ("contact", "stiffness", "friction"))
         if stiffness is not None and stiffness["law"] in ("johnson_line", "rogers_andrews") and t.length is None:
             self.problem(join(where, "length"), f"missing required value: the {stiffness['law']} stiffness law "
                                                 "needs the bearing length, e.g. \"40 mm\"")
-        if stiffness is not None and stiffness["law"].startswith("hertz_cylinder"):
-            exponent = stiffness.pop("exponent", None)
-            stiffness = ({"law": "hertz_cylinder_exponent", "exponent": exponent} if exponent is not None
-                         else {"law": "hertz_cylinder"})
         if clearance is not None:
             ex, ey = t.initial_eccentricity
             if math.hypot(ex, ey) > clearance:
@@ -243,19 +277,9 @@ class Builder:
         lubrication = self.lubrication(raw.get("lubrication"), join(where, "lubrication"), t.length, where)
         if None in (clearance, contact, stiffness, friction) or lubrication is False:
             return None
-        material = lambda m: {"youngs_modulus": float(m.youngs_modulus), "poisson_ratio": float(m.poisson_ratio)}
-        return {
-            "type": "clearance_revolute", "name": name, "bearing": t.bearing, "journal": t.journal,
-            "bearing_radius": float(t.bearing_radius), "clearance": float(clearance),
-            "length": None if t.length is None else float(t.length),
-            "bearing_material": material(t.bearing_material), "journal_material": material(t.journal_material),
-            "contact": contact, "stiffness": stiffness, "friction": friction,
-            "initial_eccentricity": [float(e) for e in t.initial_eccentricity],
-            "lock_at_assembly": bool(t.lock_at_assembly),
-            "onset_velocity_floor": float(t.onset_velocity_floor),
-            "max_penetration": None if t.max_penetration is None else float(t.max_penetration),
-            "lubrication": lubrication,
-        }
+        read = {"bearing": t.bearing, "journal": t.journal, "clearance": float(clearance), "contact": contact,
+                "stiffness": stiffness, "friction": friction, "lubrication": lubrication}
+        return self.element_spec(p.CLEARANCE_REVOLUTE, name, where, t, raw, read)
 
     def lubrication(self, raw: Any, where: str, length: Any, joint_where: str) -> dict | None | bool:
         """The core's lubrication dict, None for a dry joint, False after adding problems."""
@@ -273,7 +297,7 @@ class Builder:
                                                f"not to model = {table.model!r}; remove it or choose a Reynolds model")
             if unused:
                 return False
-        transition = self.law(raw, "transition", s.TRANSITION_LAWS, where, default={"law": "wang_improved"})
+        transition = self.law(raw, p.LUBRICATION["transition"], where)
         if length is None:
             self.problem(join(joint_where, "length"), 'missing required value: a lubricated joint needs the bearing '
                                                       'length, e.g. "40 mm"')
@@ -324,12 +348,16 @@ class Builder:
             return None
         return t.clearance
 
-    def law(self, raw: dict, key: str, laws: dict, where: str, required: bool = False,
-            default: dict | None = None) -> dict | None:
-        value = raw.get(key)
-        location = join(where, key)
+    def law(self, raw: dict, param: p.Param, where: str) -> dict | None:
+        """The core's dict of the law ``raw[param.key]`` (its default when absent), or None after adding
+        problems (a missing required law is reported by pydantic)."""
+        laws = s.LAWS[param.of]
+        value = raw.get(param.key)
+        location = join(where, param.key)
         if value is None:
-            return None if required else dict(default)  # a missing contact is reported by pydantic
+            if param.required:
+                return None
+            value = param.default
         if isinstance(value, str):  # law = "hertz" shorthand: contact = "hertz"
             value = {"law": value}
         if not isinstance(value, dict):
@@ -341,7 +369,8 @@ class Builder:
         table = self.validate(laws[law], value, location, hint=f"{law}: ")
         if table is None:
             return None
-        return {k: (float(v) if isinstance(v, float) else v) for k, v in table.model_dump(exclude_none=True).items()}
+        return p.core_law({k: (float(v) if isinstance(v, float) else v)
+                          for k, v in table.model_dump(exclude_none=True).items()})
 
     def drivers(self) -> None:
         for name, where, raw in self.entries("drivers"):
@@ -370,31 +399,9 @@ class Builder:
             if kind is None:
                 continue
             t = self.validate(s.FORCES[kind], raw, where, hint=f"{kind}: ")
-            if t is None:
-                continue
-            force = self.force(kind, name, where, t)
+            force = None if t is None else self.element_spec(p.FORCES[kind], name, where, t, raw)
             if force is not None:
                 self.spec["forces"].append(force)
-
-    def force(self, kind: str, name: str, where: str, t) -> dict | None:
-        if kind == "spring_damper":
-            self.point(t.first, join(where, "first"))
-            self.point(t.second, join(where, "second"))
-            return {"type": kind, "name": name, "first": t.first, "second": t.second, "stiffness": float(t.stiffness),
-                    "damping": float(t.damping), "free_length": float(t.free_length)}
-        if kind == "rotational_spring_damper":
-            self.body(t.first, join(where, "first"))
-            self.body(t.second, join(where, "second"))
-            return {"type": kind, "name": name, "first": t.first, "second": t.second, "stiffness": float(t.stiffness),
-                    "damping": float(t.damping), "free_angle": float(t.free_angle)}
-        if kind == "point_force":
-            self.point(t.point, join(where, "point"))
-            fx = function_spec(t.fx, "force", join(where, "fx"), self.problems)
-            fy = function_spec(t.fy, "force", join(where, "fy"), self.problems)
-            return None if fx is None or fy is None else {"type": kind, "name": name, "point": t.point, "fx": fx, "fy": fy}
-        self.body(t.body, join(where, "body"))
-        torque = function_spec(t.torque, "torque", join(where, "torque"), self.problems)
-        return None if torque is None else {"type": kind, "name": name, "body": t.body, "torque": torque}
 
     def simulation_table(self) -> None:
         table = self.validate(s.SimulationTable, self.table("simulation"), "simulation")

@@ -10,40 +10,22 @@ from __future__ import annotations
 from functools import lru_cache
 from typing import Any
 
-from pydantic import ValidationError, create_model
+from pydantic import ValidationError
 
+from .. import parameters as p
 from ..errors import Problem
 from ..units import KINDS, per_time
-from .fields import Strict, convert, did_you_mean, join, problems_from, quantity
-from .schema import _req
+from .fields import Strict, convert, did_you_mean, join, problems_from
+from .schema import table_class
 
-ALIASES = {"constant_speed": "constant_rate", "constant_velocity": "constant_rate", "spline": "table"}
-KINDS_OF_FUNCTION = ("constant", "constant_rate", "polynomial", "cubic_step", "sine", "table")
+KINDS_OF_FUNCTION = tuple(t.name for t in p.variants(p.FUNCTIONS))
+ALIASES = {alias: t.name for t in p.variants(p.FUNCTIONS) for alias in t.aliases}
 
 
 @lru_cache(maxsize=None)
 def function_tables(kind_name: str) -> dict[str, type[Strict]]:
     """The pydantic class of each kind of function whose value is a ``kind_name``."""
-    kind = KINDS[kind_name]
-    value, rate, time = quantity(kind), quantity(per_time(kind, 1)), quantity("time")
-    example = f'a {kind.name}, e.g. "{kind.example}"'
-    zero = 0.0
-
-    def table(name, **fields):
-        return create_model(f"{name}_{kind_name.replace(' ', '_')}", __base__=Strict, kind=(str, ...), **fields)
-
-    return {
-        "constant": table("Constant", value=(value, _req(example))),
-        "constant_rate": table("ConstantRate", initial=(value, zero),
-                               rate=(rate, _req(f'a rate, e.g. "{per_time(kind, 1).example}"'))),
-        "polynomial": table("Polynomial", coefficients=(Any, _req("a list, constant term first"))),
-        "cubic_step": table("CubicStep", t_start=(time, _req("a time")), t_end=(time, _req("a time")),
-                            value_start=(value, _req(example)), value_end=(value, _req(example))),
-        "sine": table("Sine", offset=(value, zero), amplitude=(value, _req(example)),
-                      frequency=(quantity("frequency"), _req('a frequency, e.g. "10 Hz"')),
-                      phase=(quantity("angle"), zero)),
-        "table": table("Table", times=(Any, _req("a list of times")), values=(Any, _req(f"a list of values ({kind.name})"))),
-    }
+    return {name: table_class(t, KINDS[kind_name]) for name, t in p.FUNCTIONS.items() if name == t.name}
 
 
 def function_spec(raw: Any, kind_name: str, where: str, problems: list[Problem]) -> dict | None:

@@ -41,6 +41,7 @@ import math
 import warnings
 from statistics import median
 
+from .. import parameters as p
 from ..errors import JointplayWarning, Problem
 from .fields import join
 
@@ -166,7 +167,7 @@ def contact_stiffness(joint: dict) -> float:
                        for m in (joint["bearing_material"], joint["journal_material"]))
     rb, c = joint["bearing_radius"], joint["clearance"]
     r_star = rb * (rb - c) / c
-    exponent = (joint.get("stiffness") or {}).get("exponent", 1.5)
+    exponent = (joint.get("stiffness") or {}).get("exponent", p.HERTZ_EXPONENT)
     k = 4.0 / 3.0 * e_star * math.sqrt(r_star)
     return exponent * k * (0.01 * c) ** (exponent - 1.0)
 
@@ -216,7 +217,7 @@ def _onset_floors(spec: dict, size: float) -> list[Problem]:
         return []  # moved by forces only (or not at all): no speed to compare with
     out = []
     for j in _clearance_joints(spec):
-        floor = j.get("onset_velocity_floor", 1e-4)
+        floor = j.get("onset_velocity_floor", p.CLEARANCE_REVOLUTE.default("onset_velocity_floor"))
         if floor > speed:
             out.append(Problem(join("joints", j["name"], "onset_velocity_floor"),
                                f"{floor:.3g} m/s is above the speeds in the model (about {speed:.3g} m/s from the "

@@ -11,6 +11,7 @@ import math
 import re
 from typing import Any
 
+from .. import parameters as p
 from ..units import KINDS, per_time
 
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
@@ -62,8 +63,9 @@ def _value(value: Any) -> str:
         return _string(value)
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(_value(v) for v in value) + "]"
-    if isinstance(value, dict):
-        return "{ " + ", ".join(f"{_key(k)} = {_value(v)}" for k, v in value.items()) + " }" if value else "{}"
+    if isinstance(value, dict):  # keys without a value are left out
+        given = {k: v for k, v in value.items() if v is not None}
+        return "{ " + ", ".join(f"{_key(k)} = {_value(v)}" for k, v in given.items()) + " }" if given else "{}"
     raise TypeError(f"cannot write {value!r} to TOML")
 
 
@@ -81,107 +83,89 @@ def _points(points: list[dict]) -> dict:
 
 
 def function(f: dict, kind: str) -> dict:
-    """A function of time with the units of what it prescribes."""
+    """A function of time with the units of what it prescribes (its keys' kinds from the definitions)."""
+    table = p.FUNCTIONS[f["kind"]]
     out: dict[str, Any] = {"kind": f["kind"]}
-    time = "time"
     for key, value in f.items():
         if key == "kind":
             continue
-        if key in ("value", "initial", "offset", "amplitude", "value_start", "value_end"):
-            out[key] = quantity(value, kind)
-        elif key == "rate":
-            out[key] = quantity(value, per_time(kind, 1))
-        elif key in ("t_start", "t_end"):
-            out[key] = quantity(value, time)
-        elif key == "frequency":
-            out[key] = quantity(value, "frequency")
-        elif key == "phase":
-            out[key] = quantity(value, "angle")
-        elif key == "coefficients":
-            out[key] = [quantity(c, per_time(kind, k)) for k, c in enumerate(value)]
-        elif key == "times":
-            out[key] = [quantity(t, time) for t in value]
-        elif key == "values":
-            out[key] = [quantity(v, kind) for v in value]
+        param = table[key]
+        if param.kind == "list":
+            of = param.of
+            out[key] = [quantity(v, per_time(kind, k) if of == "powers" else kind if of == "value" else of)
+                        for k, v in enumerate(value)]
         else:
-            out[key] = value
-    if out["kind"] == "constant":
-        return out
+            out[key] = quantity(value, {"value": kind, "rate": per_time(kind, 1)}.get(param.kind, param.kind))
     return out
 
 
-LAW_KINDS = {"restitution": "dimensionless", "exponent": "dimensionless", "coefficient": "dimensionless",
-             "static_coefficient": "dimensionless", "kinetic_coefficient": "dimensionless",
-             "velocity_tolerance": "velocity", "v0": "velocity", "v1": "velocity",
-             "stiction_velocity": "velocity", "transition_velocity": "velocity"}
-
-
-def _law(law: dict) -> dict:
-    out = dict(law)
-    if out.get("law") == "hertz_cylinder_exponent":
-        out["law"] = "hertz_cylinder"
-    return {k: (quantity(v, LAW_KINDS[k]) if k in LAW_KINDS else v) for k, v in out.items()}
-
-
-def _material(m: dict) -> dict:
-    return {"youngs_modulus": quantity(m["youngs_modulus"], "pressure"),
-            "poisson_ratio": quantity(m["poisson_ratio"], "dimensionless")}
-
-
-def _joint(j: dict) -> dict:
-    if j["type"] != "clearance_revolute":
-        out = {"type": j["type"], "first": j["first"], "second": j["second"]}
-        if "axis" in j:
-            out["axis"] = [float(a) for a in j["axis"]]
-        return out
-    return {
-        "type": j["type"], "bearing": j["bearing"], "journal": j["journal"],
-        "bearing_radius": quantity(j["bearing_radius"], "length"), "clearance": quantity(j["clearance"], "length"),
-        "length": None if j.get("length") is None else quantity(j["length"], "length"),
-        "contact": _law(j["contact"]), "stiffness": _law(j.get("stiffness") or {"law": "hertz_cylinder"}),
-        "friction": _law(j.get("friction") or {"law": "none"}),
-        "bearing_material": _material(j["bearing_material"]), "journal_material": _material(j["journal_material"]),
-        "initial_eccentricity": vec(j.get("initial_eccentricity", (0.0, 0.0)), "length"),
-        "lock_at_assembly": bool(j.get("lock_at_assembly", True)),
-        "onset_velocity_floor": quantity(j.get("onset_velocity_floor", 1e-4), "velocity"),
-        "max_penetration": None if j.get("max_penetration") is None else quantity(j["max_penetration"], "length"),
-        "lubrication": None if j.get("lubrication") is None else _lubrication(j["lubrication"]),
-    }
+def _law(law: dict | str | None, laws: dict[str, p.Table]) -> dict:
+    """A law's table; the core's ``hertz_cylinder_exponent`` is ``hertz_cylinder`` with ``exponent``."""
+    law = {"law": law} if isinstance(law, str) else dict(law)
+    table = laws[law["law"]]
+    law["law"] = table.name
+    return {key: (value if key == "law" else _value_of(table[key], value)) for key, value in law.items()}
 
 
 def _lubrication(lub: dict) -> dict:
-    transition = dict(lub.get("transition") or {"law": "wang_improved"})
-    if transition.get("safe_film_thickness") is not None:
-        transition["safe_film_thickness"] = quantity(transition["safe_film_thickness"], "length")
-    out = {"model": lub["model"], "viscosity": quantity(lub["viscosity"], "viscosity"),
-           "transition": {k: v for k, v in transition.items() if v is not None}}
+    """The lubrication table: the core's ``reynolds`` options are keys of the table (the grid a pair)."""
+    table = p.LUBRICATION
+    out = {key: _value_of(table[key], lub.get(key, table.default(key))) for key in ("model", "viscosity", "transition")}
     reynolds = lub.get("reynolds")
-    if lub["model"].startswith("reynolds") and reynolds:
-        out["cavitation"] = reynolds.get("cavitation", "swift_stieber")
-        if reynolds.get("n_circumferential") is not None and reynolds.get("n_axial") is not None:
-            out["grid"] = [int(reynolds["n_circumferential"]), int(reynolds["n_axial"])]
-        out["ambient_pressure"] = quantity(reynolds.get("ambient_pressure", 0.0), "pressure")
-        if reynolds.get("groove_supply_pressure") is not None:
-            out["groove_supply_pressure"] = quantity(reynolds["groove_supply_pressure"], "pressure")
+    if lub["model"] in p.REYNOLDS_MODELS and reynolds:
+        n = (reynolds.get("n_circumferential"), reynolds.get("n_axial"))
+        given = {**reynolds, "grid": None if None in n else [int(n[0]), int(n[1])]}
+        for key in p.REYNOLDS_ONLY_KEYS:
+            out[key] = _value_of(table[key], given.get(key, table.default(key)))
     return out
 
 
-def _force(f: dict) -> dict:
-    t = f["type"]
-    if t == "spring_damper":
-        return {"type": t, "first": f["first"], "second": f["second"], "stiffness": quantity(f["stiffness"], "stiffness"),
-                "damping": quantity(f["damping"], "damping"), "free_length": quantity(f["free_length"], "length")}
-    if t == "rotational_spring_damper":
-        return {"type": t, "first": f["first"], "second": f["second"],
-                "stiffness": quantity(f["stiffness"], "rotational stiffness"),
-                "damping": quantity(f["damping"], "rotational damping"), "free_angle": quantity(f["free_angle"], "angle")}
-    if t == "point_force":
-        return {"type": t, "point": f["point"], "fx": function(f["fx"], "force"), "fy": function(f["fy"], "force")}
-    return {"type": t, "body": f["body"], "torque": function(f["torque"], "torque")}
+def _value_of(param: p.Param, value: Any) -> Any:
+    """The TOML value of one key of the core's spec (None: the key is left out)."""
+    if param.kind == "law":
+        return _law(param.default if value is None else value, p.LAWS[param.of])
+    if value is None:
+        return None
+    if param.kind == "vector":
+        return vec(value, param.of)
+    if param.kind in KINDS:
+        return quantity(value, param.kind)
+    if param.kind == "function":
+        return function(value, param.of) if isinstance(value, dict) else quantity(value, param.of)
+    if param.kind == "table" and param.of is p.LUBRICATION:
+        return _lubrication(value)
+    if param.kind == "table":
+        return {sub.key: _value_of(sub, value.get(sub.key, sub.default)) for sub in param.of.params}
+    if param.kind == "points":
+        return _points(value)
+    if param.kind == "flag":
+        return bool(value)
+    return value
 
 
-SIMULATION_KINDS = {"t_end": "time", "t0": "time", "max_step": "time", "output_step": "time", "initial_step": "time",
-                    "min_step": "time", "rtol": "dimensionless", "atol": "dimensionless"}
+def _element(table: p.Table, entry: dict) -> dict:
+    """The table of an element of the core's spec: every key of its definition that the core reads, in
+    order; a key the spec lacks is written with its default."""
+    out: dict[str, Any] = {table.tag: table.name} if table.tag else {}
+    for param in table.params:
+        if param.in_spec:
+            value = entry[param.key] if param.required else entry.get(param.key, param.default)
+            out[param.key] = _value_of(param, value)
+    return out
+
+
+def _referenced_bodies(spec: dict) -> set[str]:
+    """The bodies that a joint or force element refers to (by a point or by name)."""
+    out = set()
+    for section, tables in (("joints", p.JOINTS), ("forces", p.FORCES)):
+        for entry in spec.get(section, []):
+            for param in tables[entry["type"]].params:
+                value = entry.get(param.key)
+                if param.kind == "point" and isinstance(value, str):
+                    out.add(value.partition(".")[0])
+                elif param.kind == "body" and isinstance(value, str):
+                    out.add(value)
+    return out
 
 
 def to_toml(spec: dict, simulation: dict | None = None, header: str | None = None) -> str:
@@ -189,27 +173,22 @@ def to_toml(spec: dict, simulation: dict | None = None, header: str | None = Non
     blocks = []
     if header:
         blocks.append("\n".join(f"# {line}".rstrip() for line in header.splitlines()))
-    blocks.append(_table("model", {"name": spec.get("name", "mechanism"), "gravity": vec(spec.get("gravity", (0, 0)), "acceleration")}))
+    blocks.append(_table("model", _element(p.MODEL, {"name": p.DEFAULT_NAME, **spec})))
     if spec.get("ground_points"):
         blocks.append(_table("ground", {"points": _points(spec["ground_points"])}))
+    referenced = _referenced_bodies(spec)
     for b in spec.get("bodies", []):
-        blocks.append(_table(f"bodies.{_key(b['name'])}", {
-            "mass": quantity(b["mass"], "mass"), "inertia": quantity(b["inertia"], "inertia"),
-            "position": vec(b.get("position", (0, 0)), "length"), "angle": quantity(b.get("angle", 0.0), "angle"),
-            "velocity": vec(b.get("velocity", (0, 0)), "velocity"),
-            "angular_velocity": quantity(b.get("angular_velocity", 0.0), "angular velocity"),
-            "points": _points(b.get("points", [])),
-        }))
+        free = {"free": True} if b["name"] not in referenced else {}  # not in the spec: read from the elements
+        blocks.append(_table(f"bodies.{_key(b['name'])}", {**_element(p.BODY, b), **free}))
     joint_types = {j["name"]: j["type"] for j in spec.get("joints", [])}
     for j in spec.get("joints", []):
-        blocks.append(_table(f"joints.{_key(j['name'])}", _joint(j)))
+        blocks.append(_table(f"joints.{_key(j['name'])}", _element(p.JOINTS[j["type"]], j)))
     for d in spec.get("drivers", []):
         kind = FUNCTION_VALUE.get(joint_types.get(d["joint"], "revolute"), "angle")
         blocks.append(_table(f"drivers.{_key(d['name'])}", {"joint": d["joint"], "function": function(d["function"], kind)}))
     for f in spec.get("forces", []):
-        blocks.append(_table(f"forces.{_key(f['name'])}", _force(f)))
-    sim = {k: (quantity(v, SIMULATION_KINDS[k]) if k in SIMULATION_KINDS else v)
-           for k, v in (simulation or {}).items() if v is not None}
-    if sim:
+        blocks.append(_table(f"forces.{_key(f['name'])}", _element(p.FORCES[f["type"]], f)))
+    sim = {key: _value_of(p.SIMULATION[key], value) for key, value in (simulation or {}).items()}
+    if any(v is not None for v in sim.values()):
         blocks.append(_table("simulation", sim))
     return "\n\n".join(blocks) + "\n"

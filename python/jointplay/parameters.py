@@ -1,0 +1,555 @@
+"""Every table of a model file and its keys, defined once: name, kind, default with its reason, range, doc.
+
+A :class:`Table` lists the :class:`Param`\\ s of one table of a model file (``[bodies.NAME]``), of one
+variant of a tagged table (``type = "spring_damper"``, ``law = "ambrosio"``, ``kind = "sine"``) or of a
+nested table (a material). Everything else follows from these definitions:
+
+- the pydantic classes that validate model files (:mod:`jointplay.modelfile.schema`);
+- the core's spec built from a file or from the Python builder (:mod:`jointplay.modelfile.build`), so the
+  front end sends every value explicitly;
+- the defaults of the builder (:class:`jointplay.Model`), of the law helpers (:mod:`jointplay.laws`) and of
+  the functions of time (:mod:`jointplay.functions`), and the key lists in their docstrings;
+- the TOML writer (:mod:`jointplay.modelfile.writer`);
+- the reference of every key, ``docs/model-file-reference.md`` (:mod:`jointplay.modelfile.reference`).
+
+Defaults are in SI units. ``import jointplay`` reads this module, so it loads neither pint nor pydantic.
+
+To add an element (a force element, say): define its :class:`Table` here (``tag="type"``, its keys in the
+order of the core's spec) and add it to :data:`FORCES`; add one builder line to :class:`jointplay.Model`
+(``add_x = _adds(p.X, "forces", positional=2)``); the core's ``ForceSpec`` gets a variant with the same keys.
+A new law family goes into :data:`LAWS`, with one helper line per law in :mod:`jointplay.laws`. Then
+regenerate ``docs/model-file-reference.md`` and use every new key in ``tests/fixtures/every_key.toml``
+(``tests/test_parameters.py`` says what is missing).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from ._core import MAX_REYNOLDS_GRID_NODES as _MAX_GRID_NODES
+from .resultsfile import DEFAULT_MAX_FILE_BYTES, DEFAULT_MAX_MEMORY_BYTES, format_size
+
+
+class _Required:
+    def __repr__(self) -> str:
+        return "REQUIRED"
+
+
+#: The default of a key that must be given.
+REQUIRED: Any = _Required()
+
+#: Kinds of value that are not a physical quantity of :data:`jointplay.units.KINDS` (``"length"``, ...):
+#: ``vector`` (a pair of quantities of kind ``of``), ``point`` (``"body.point"``), ``body``, ``joint``,
+#: ``text`` (a name, ``of`` says of what), ``flag`` (true/false), ``count`` (a positive whole number),
+#: ``choice`` (one of the words ``of``), ``function`` (a function of time whose values are of kind ``of``),
+#: ``law`` (a table of the law family ``of``), ``table`` (a nested table defined by the Table ``of``),
+#: ``points`` (named points), ``grid`` (cells of the Reynolds solver), ``size`` (bytes), ``list`` (a list of
+#: quantities; ``of`` is their kind, or ``"powers"`` for polynomial coefficients). Inside a function of time,
+#: ``value`` and ``rate`` stand for the kind the function prescribes and its rate per second.
+STRUCTURED = ("vector", "point", "body", "joint", "text", "flag", "count", "choice", "function", "law", "table",
+              "points", "grid", "size", "list", "value", "rate")
+
+
+@dataclass(frozen=True, eq=False)
+class Param:
+    """One key of a table."""
+
+    key: str
+    #: a kind of physical quantity (``"length"``, ``"angular velocity"``, ``"dimensionless"``) or one of
+    #: :data:`STRUCTURED`
+    kind: str
+    #: what the key means, one sentence or two; units follow from the kind
+    doc: str
+    #: value when the key is absent, in SI units; :data:`REQUIRED` when it must be given; None when absent
+    #: means "not given" (``default_text`` then says what that means)
+    default: Any = REQUIRED
+    #: why the default is what it is (shown in the reference)
+    why: str = ""
+    #: what an absent optional key means, when that is not a value (``"5 % of the journal radius"``)
+    default_text: str = ""
+    #: the allowed range: bounds (``gt``: greater than...) and, when given, how messages write it
+    gt: float | None = None
+    ge: float | None = None
+    lt: float | None = None
+    le: float | None = None
+    interval: str | None = None
+    #: the kind of the items of a ``vector``, ``function`` or ``list``, the words of a ``choice``, the family
+    #: of a ``law``, the :class:`Table` of a ``table``, what a ``text`` names
+    of: Any = None
+    #: other words accepted for a ``choice``, each mapped to one of its words
+    aliases: tuple[tuple[str, str], ...] = ()
+    #: what the message of a missing required key shows, e.g. ``a mass, e.g. "0.3 kg"``
+    example: str = ""
+    #: False for keys that only the front end reads (``free``, ``journal_radius``): not in the core's spec
+    in_spec: bool = True
+    #: True for a ``table`` checked on its own, after its parent (lubrication)
+    apart: bool = False
+
+    @property
+    def required(self) -> bool:
+        return self.default is REQUIRED
+
+    @property
+    def bounds(self) -> dict[str, Any]:
+        """The range as keyword arguments of :func:`jointplay.modelfile.fields.quantity`."""
+        names = ("gt", "ge", "lt", "le", "interval")
+        return {n: getattr(self, n) for n in names if getattr(self, n) is not None}
+
+
+@dataclass(frozen=True, eq=False)
+class Table:
+    """The keys of one table, or of one variant of a table tagged by ``type``, ``law`` or ``kind``."""
+
+    #: the word of the variant (``"spring_damper"``), or the table's own name (``"bodies"``)
+    name: str
+    #: what it is, one or two sentences (the builder's and the reference's text)
+    doc: str
+    params: tuple[Param, ...] = ()
+    #: the key that names the variant: ``"type"``, ``"law"``, ``"kind"``; None for a plain table
+    tag: str | None = None
+    #: other words for the variant, accepted in files (``hertz_cylinder_exponent``)
+    aliases: tuple[str, ...] = ()
+    #: True when absent keys stay absent (``[simulation]``: the defaults apply when a run starts)
+    sparse: bool = False
+
+    def __getitem__(self, key: str) -> Param:
+        for p in self.params:
+            if p.key == key:
+                return p
+        raise KeyError(f"{self.name} has no key {key!r}")
+
+    def keys(self) -> list[str]:
+        return [p.key for p in self.params]
+
+    def default(self, key: str) -> Any:
+        """The default of ``key`` (:data:`REQUIRED` when it has none)."""
+        return self[key].default
+
+
+def family(*tables: Table) -> dict[str, Table]:
+    """Variants by the word that names them, aliases after their table (the order of messages)."""
+    out: dict[str, Table] = {}
+    for t in tables:
+        out[t.name] = t
+        for alias in t.aliases:
+            out[alias] = t
+    return out
+
+
+def variants(tables: dict[str, Table]) -> list[Table]:
+    """The distinct tables of a family, aliases left out."""
+    return [t for name, t in tables.items() if name == t.name]
+
+
+POINT = 'a point "body.point", e.g. "crank.A" or "ground.O"'
+
+
+def _point(key: str, doc: str, example: str = POINT) -> Param:
+    return Param(key, "point", doc, example=example)
+
+
+# model, ground, bodies ------------------------------------------------------
+
+MODEL = Table("model", "Name, description and gravity of the mechanism.", (
+    Param("name", "text", "name of the mechanism, written into the results", None, of="the model",
+          default_text="the file name"),
+    Param("description", "text", "free text (not used by the engine)", "", of="the model", in_spec=False),
+    Param("gravity", "vector", 'gravitational acceleration, e.g. `[0, "-9.81 m/s^2"]`', (0.0, 0.0),
+          of="acceleration"),
+))
+
+GROUND = Table("ground", "Named points of the fixed frame, in global coordinates.", (
+    Param("points", "points", 'named points: `points = { O = ["0 mm", "0 mm"] }`', {}),
+))
+
+BODY = Table("bodies", "A rigid body; its frame is at its centre of mass.", (
+    Param("mass", "mass", "mass of the body", gt=0, example='a mass, e.g. "0.3 kg"'),
+    Param("inertia", "inertia", "moment of inertia about the centre of mass", gt=0,
+          example='a moment of inertia about the centre of mass, e.g. "1e-4 kg m^2"'),
+    Param("position", "vector", "approximate initial position of the centre of mass (assembly makes the "
+          "configuration consistent)", (0.0, 0.0), of="length"),
+    Param("angle", "angle", "approximate initial orientation", 0.0),
+    Param("velocity", "vector", "approximate initial velocity of the centre of mass", (0.0, 0.0), of="velocity"),
+    Param("angular_velocity", "angular velocity", "approximate initial angular velocity", 0.0),
+    Param("points", "points", 'named points in body coordinates: `points = { O = ["-25 mm", 0], A = ["25 mm", 0] }`',
+          {}),
+    Param("free", "flag", "allow a body that no joint or force element refers to (otherwise an error)", False,
+          in_spec=False),
+))
+
+
+# laws of a clearance joint --------------------------------------------------
+
+MATERIAL = Table("material", "An elastic material.", (
+    Param("youngs_modulus", "pressure", "Young's modulus E", gt=0, example='a Young\'s modulus, e.g. "207 GPa"'),
+    Param("poisson_ratio", "dimensionless", "Poisson's ratio nu", gt=-1, lt=0.5, interval="(-1, 0.5)",
+          example="a number, e.g. 0.3"),
+))
+
+#: Structural steel, E = 207 GPa, nu = 0.3: the default material of a clearance joint.
+STEEL = {"youngs_modulus": 207e9, "poisson_ratio": 0.3}
+
+RESTITUTION = Param("restitution", "dimensionless", "coefficient of restitution e", gt=0, le=1, interval="(0, 1]",
+                    example="a coefficient of restitution in (0, 1], e.g. 0.9")
+
+
+def _damped(name: str, doc: str) -> Table:
+    return Table(name, doc, (RESTITUTION,), tag="law")
+
+
+CONTACT_LAWS = family(
+    Table("hertz", "Elastic Hertz contact, no dissipation.", tag="law"),
+    _damped("hunt_crossley", "Hunt-Crossley, D = 3(1-e)/2."),
+    _damped("lankarani_nikravesh", "Lankarani-Nikravesh, D = 3(1-e^2)/4 (accurate for e near 1)."),
+    _damped("flores", "Flores et al. 2011, D = 8(1-e)/(5e) (for any e)."),
+    _damped("gonthier", "Gonthier et al. 2004."),
+    _damped("hu_guo", "Hu and Guo 2015."),
+)
+
+#: The exponent n of the Hertz-type law K delta^n when none is given: 1.5, for metals (the core's
+#: ``hertz_cylinder``; the plausibility check uses it too).
+HERTZ_EXPONENT = 1.5
+
+STIFFNESS_LAWS = family(
+    Table("hertz_cylinder", "K delta^n with K = (4/3) E* sqrt(R*), the Hertz-type law of a cylinder in a bore.", (
+        Param("exponent", "dimensionless", "exponent n", None, gt=0, default_text=f"{HERTZ_EXPONENT} (metals)"),
+    ), tag="law", aliases=("hertz_cylinder_exponent",)),
+    Table("johnson_line", "Johnson / ESDU line contact of a cylinder in a bore (needs the joint's `length`).",
+          tag="law"),
+    Table("rogers_andrews", "Rogers-Andrews logarithmic law (needs the joint's `length`).", tag="law"),
+)
+
+COEFFICIENT = Param("coefficient", "dimensionless", "friction coefficient mu", ge=0,
+                    example="a friction coefficient, e.g. 0.01")
+FLORES_BAND = "the values of the Flores-Ambrosio slider-crank, examples/flores_slider_crank_dry"
+
+FRICTION_LAWS = family(
+    Table("none", "No friction.", tag="law"),
+    Table("coulomb", "Coulomb friction regularised by tanh(v / velocity_tolerance).", (
+        COEFFICIENT,
+        Param("velocity_tolerance", "velocity", "regularisation velocity", 1e-3, gt=0),
+    ), tag="law"),
+    Table("ambrosio", "Modified Coulomb law of Ambrosio: no friction below v0, full above v1, linear between.", (
+        COEFFICIENT,
+        Param("v0", "velocity", "end of the dead band", 1e-4, ge=0, why=FLORES_BAND),
+        Param("v1", "velocity", "speed of full friction (> v0)", 1e-3, gt=0, why=FLORES_BAND),
+    ), tag="law"),
+    Table("threlfall", "Threlfall: mu F_n (1 - exp(-3|v|/v0)).", (
+        COEFFICIENT,
+        Param("v0", "velocity", "speed at which 95 % of mu F_n is reached", 1e-3, gt=0),
+    ), tag="law"),
+    Table("stiction", "Static and kinetic coefficients with velocity tolerances.", (
+        Param("static_coefficient", "dimensionless", "static coefficient (>= kinetic_coefficient)", ge=0,
+              example="a friction coefficient, e.g. 0.15"),
+        Param("kinetic_coefficient", "dimensionless", "kinetic coefficient", ge=0,
+              example="a friction coefficient, e.g. 0.1"),
+        Param("stiction_velocity", "velocity", "velocity at which the static coefficient is reached", 1e-4, gt=0),
+        Param("transition_velocity", "velocity", "velocity from which the kinetic coefficient holds", 1e-3, gt=0),
+    ), tag="law"),
+)
+
+TRANSITION_LAWS = family(
+    Table("switch", "Film force until contact, contact force after (paper 000's squeeze-film joint).", tag="law"),
+    Table("flores", "Flores et al.: squeeze film only, faded out between eccentricity ratio `lubricated_limit` "
+          "and contact.", (
+              Param("lubricated_limit", "dimensionless", "eccentricity ratio where the fading starts", 0.95,
+                    gt=0, lt=1, why="the Flores default, for want of the source value; "
+                                    "docs/theory/lubricated-contact-transition.md"),
+          ), tag="law"),
+    Table("wang_improved", "Paper 001's transition: squeeze and wedge film faded out from the safe film thickness "
+          "to contact.", (
+              Param("safe_film_thickness", "length", "film thickness where the fading starts", None, gt=0,
+                    default_text="0.00015 of the diameter (paper 001's design rule; set by the core)"),
+          ), tag="law"),
+)
+
+def core_law(law: dict) -> dict:
+    """A law's dict as the core reads it: the Hertz-type law with a chosen exponent is
+    ``hertz_cylinder_exponent`` there (``hertz_cylinder`` with ``exponent`` in a model file)."""
+    if law["law"] in ("hertz_cylinder", "hertz_cylinder_exponent"):
+        exponent = law.get("exponent")
+        return {"law": "hertz_cylinder"} if exponent is None else {"law": "hertz_cylinder_exponent",
+                                                                   "exponent": exponent}
+    return law
+
+
+#: Law families by the key of a clearance joint (or lubrication table) that holds them.
+LAWS = {"contact": CONTACT_LAWS, "stiffness": STIFFNESS_LAWS, "friction": FRICTION_LAWS,
+        "transition": TRANSITION_LAWS}
+
+FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamrock_long", "frene_short",
+               "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
+REYNOLDS_MODELS = ("reynolds_exact", "reynolds_table")
+#: The Reynolds solver's grid when none is given, cells around x cells along the axis: the core's default
+#: (Python sends no grid then); the steady-bearing tool (``jointplay bearing``) uses it too.
+REYNOLDS_GRID = (120, 16)
+CAVITATIONS = ("gumbel", "swift_stieber", "elrod_adams")
+#: Keys of a lubrication table that only the Reynolds solver reads (the closed forms have no grid,
+#: cavitation condition or boundary pressures).
+REYNOLDS_ONLY_KEYS = ("cavitation", "grid", "ambient_pressure", "groove_supply_pressure")
+
+LUBRICATION = Table("lubrication", "A lubricant film in the clearance (docs/theory/lubricated-clearance-joint.md); "
+                    "the film uses the journal radius, the joint's `length` and its clearance.", (
+    Param("model", "choice", "film model: closed forms, or `reynolds_exact` (finite-difference Reynolds solve at "
+          "every evaluation) and `reynolds_table` (tables precomputed by the same solver)", of=FILM_MODELS,
+          example=f"a film model, one of {', '.join(FILM_MODELS)}"),
+    Param("viscosity", "viscosity", 'dynamic viscosity: `"400 cP"`, `"0.4 Pa s"`', gt=0,
+          example='a viscosity, e.g. "400 cP"'),
+    Param("transition", "law", "hand-over from the film force to dry contact", "wang_improved", of="transition",
+          why="paper 001's improved law keeps the wedge effect, which the dynamic film models carry"),
+    Param("cavitation", "choice", "Reynolds models only: cavitation condition (`elrod_adams` needs a supply: a "
+          "groove)", "swift_stieber", of=CAVITATIONS,
+          aliases=(("reynolds", "swift_stieber"), ("half_sommerfeld", "gumbel"), ("jfo", "elrod_adams"))),
+    Param("grid", "grid", "Reynolds models only: `[cells around, cells along the axis]`, whole numbers >= 4; the "
+          f"axial count must be even; at most {f'{_MAX_GRID_NODES:,}'.replace(',', ' ')} nodes "
+          "`around x (along/2 + 1)` (solver memory and time)", None,
+          default_text=f"the solver's, `[{REYNOLDS_GRID[0]}, {REYNOLDS_GRID[1]}]`"),
+    Param("ambient_pressure", "pressure", "Reynolds models only: gauge pressure at the bearing ends", 0.0),
+    Param("groove_supply_pressure", "pressure", "Reynolds models only, `reynolds_exact` only: a circumferential "
+          "groove at mid-length held at this pressure (paper 000)", None, default_text="no groove"),
+))
+
+
+# joints ---------------------------------------------------------------------
+
+_ENDS = (_point("first", "point on the first body"), _point("second", "point on the second body"))
+
+REVOLUTE = Table("revolute", "Ideal pin: the points `first` and `second` coincide.", _ENDS, tag="type")
+TRANSLATIONAL = Table("translational", "Ideal slider: no relative rotation; `second` moves on the line through "
+                      "`first` along `axis`.", (
+    *_ENDS,
+    Param("axis", "vector", "sliding direction in the first body's frame (normalised)", (1.0, 0.0),
+          of="dimensionless"),
+), tag="type")
+FIXED = Table("fixed", "Ideal weld: the points coincide and the relative angle is held.", _ENDS, tag="type")
+
+CLEARANCE_REVOLUTE = Table("clearance_revolute", "A revolute joint with radial clearance: a bore on the bearing's "
+                           "body, a pin on the journal's body, contact and friction between them, and optionally "
+                           "a lubricant film (docs/theory/clearance-revolute-joint.md).", (
+    _point("bearing", "centre of the bore", POINT + " (centre of the bore)"),
+    _point("journal", "centre of the pin", POINT + " (centre of the pin)"),
+    Param("bearing_radius", "length", "bore radius R_b", gt=0, example='the bore radius, a length, e.g. "10 mm"'),
+    Param("clearance", "length", "radial clearance c = R_b - R_j, smaller than `bearing_radius`; give exactly one of "
+          "`clearance` and `journal_radius`", None, gt=0, default_text="from `journal_radius`"),
+    Param("journal_radius", "length", "pin radius R_j, instead of `clearance`", None, gt=0,
+          default_text="from `clearance`", in_spec=False),
+    Param("length", "length", "axial length of the bearing; needed by the `johnson_line` and `rogers_andrews` "
+          "stiffness laws and by lubrication", None, gt=0, default_text="none"),
+    Param("bearing_material", "table", "elastic material of the bearing", STEEL, of=MATERIAL,
+          why="structural steel, the value the Flores papers use"),
+    Param("journal_material", "table", "elastic material of the journal", STEEL, of=MATERIAL,
+          why="structural steel, the value the Flores papers use"),
+    Param("contact", "law", "normal force law (dissipation)", of="contact",
+          example='a table such as { law = "lankarani_nikravesh", restitution = 0.9 }'),
+    Param("stiffness", "law", "contact stiffness law", "hertz_cylinder", of="stiffness",
+          why="the law the Flores papers use"),
+    Param("friction", "law", "friction law", "none", of="friction"),
+    Param("initial_eccentricity", "vector", "journal centre from bearing centre at the start (global frame), "
+          "within the clearance", (0.0, 0.0), of="length"),
+    Param("lock_at_assembly", "flag", "assembly holds the journal at `initial_eccentricity` and gives the bodies the "
+          "velocities of the ideal mechanism; `false` keeps the journal where the bodies' approximate positions put "
+          "it, with their own velocities (a free journal, e.g. a single-impact test)", True,
+          why="a clearance joint starts as the ideal mechanism"),
+    Param("onset_velocity_floor", "velocity", "smallest contact-onset velocity used in the damping term; guards "
+          "grazing entries", 1e-4, gt=0,
+          why="small against the impact velocities of machinery, 0.01-1 m/s, yet it keeps "
+              "delta_dot / delta_dot_minus bounded for grazing entries"),
+    Param("max_penetration", "length", "penetration at which the run stops as unphysical", None, gt=0,
+          default_text="5 % of the journal radius (set by the core)"),
+    Param("lubrication", "table", "lubricant film; dry contact still acts once the journal touches the bore",
+          None, of=LUBRICATION, apart=True, default_text="none (a dry joint)"),
+), tag="type")
+
+JOINTS = family(REVOLUTE, TRANSLATIONAL, FIXED, CLEARANCE_REVOLUTE)
+
+
+# functions of time ----------------------------------------------------------
+
+_VALUE = 'a {kind}, e.g. "{example}"'
+
+FUNCTIONS = family(
+    Table("constant", "A constant value.", (
+        Param("value", "value", "the value", example=_VALUE),
+    ), tag="kind"),
+    Table("constant_rate", "`initial + rate t`: a crank at constant speed, a slider at constant velocity.", (
+        Param("initial", "value", "value at t = 0", 0.0),
+        Param("rate", "rate", 'value per second, e.g. `"5000 rpm"`', example='a rate, e.g. "{rate_example}"'),
+    ), tag="kind", aliases=("constant_speed", "constant_velocity")),
+    Table("polynomial", "`sum c_k t^k`.", (
+        Param("coefficients", "list", "coefficients, constant term first; coefficient k has the unit value/s^k",
+              of="powers", example="a list, constant term first"),
+    ), tag="kind"),
+    Table("cubic_step", "Smooth step `v0 + (v1 - v0) s^2 (3 - 2 s)`, `s = (t - t_start)/(t_end - t_start)`, "
+          "constant outside.", (
+        Param("t_start", "time", "start of the step", example="a time"),
+        Param("t_end", "time", "end of the step (> t_start)", example="a time"),
+        Param("value_start", "value", "value before the step", example=_VALUE),
+        Param("value_end", "value", "value after the step", example=_VALUE),
+    ), tag="kind"),
+    Table("sine", "`offset + amplitude sin(2 pi frequency t + phase)`.", (
+        Param("offset", "value", "mean value", 0.0),
+        Param("amplitude", "value", "amplitude", example=_VALUE),
+        Param("frequency", "frequency", "frequency", example='a frequency, e.g. "10 Hz"'),
+        Param("phase", "angle", "phase", 0.0),
+    ), tag="kind"),
+    Table("table", "Natural cubic spline through `(times, values)`; linear beyond the ends.", (
+        Param("times", "list", "times, strictly increasing, at least 2", of="time", example="a list of times"),
+        Param("values", "list", "values, as many as times", of="value", example="a list of values ({kind})"),
+    ), tag="kind", aliases=("spline",)),
+)
+
+
+# drivers and forces ---------------------------------------------------------
+
+DRIVER = Table("drivers", "Prescribes a joint coordinate over time: the relative angle of a revolute joint (second "
+               "body minus first) or the displacement along a translational joint.", (
+    Param("joint", "joint", "a revolute or translational joint",
+          example="the name of a revolute or translational joint"),
+    Param("function", "function", "the prescribed coordinate: an angle (revolute) or a length (translational)",
+          of="coordinate", example='a function of time, e.g. { kind = "constant_speed", rate = "5000 rpm" }'),
+))
+
+SPRING_DAMPER = Table("spring_damper", "Linear spring and damper between two points, tension positive.", (
+    *_ENDS,
+    Param("stiffness", "stiffness", "spring stiffness", 0.0, ge=0, why="no spring: a pure damper"),
+    Param("damping", "damping", "damping coefficient", 0.0, ge=0, why="no damper: a pure spring"),
+    Param("free_length", "length", "length at which the spring is relaxed", ge=0, example='a length, e.g. "100 mm"'),
+), tag="type")
+
+ROTATIONAL_SPRING_DAMPER = Table("rotational_spring_damper", "Torsional spring and damper on the relative angle of "
+                                 "two bodies.", (
+    Param("first", "body", 'first body (`"ground"` allowed)', example='a body name (or "ground")'),
+    Param("second", "body", "second body", example="a body name"),
+    Param("stiffness", "rotational stiffness", "spring stiffness", 0.0, ge=0, why="no spring: a pure damper"),
+    Param("damping", "rotational damping", "damping coefficient", 0.0, ge=0, why="no damper: a pure spring"),
+    Param("free_angle", "angle", "relative angle (second minus first) at which the spring is relaxed", 0.0),
+), tag="type")
+
+POINT_FORCE = Table("point_force", "A force at a point, global components (numbers or functions of time).", (
+    _point("point", "point of application"),
+    Param("fx", "function", "x component", 0.0, of="force"),
+    Param("fy", "function", "y component", 0.0, of="force"),
+), tag="type")
+
+TORQUE = Table("torque", "A torque on a body, counter-clockwise positive.", (
+    Param("body", "body", "the body it acts on", example="a body name"),
+    Param("torque", "function", "the torque (a quantity or a function of time)", of="torque",
+          example='a torque or a function of time, e.g. "2 N m"'),
+), tag="type")
+
+FORCES = family(SPRING_DAMPER, ROTATIONAL_SPRING_DAMPER, POINT_FORCE, TORQUE)
+
+
+# simulation -----------------------------------------------------------------
+
+METHODS = ("dopri5", "adams", "bdf")
+METHOD_ALIASES = (("rk45", "dopri5"), ("dormand_prince", "dopri5"), ("adams_pc", "adams"), ("ndf", "bdf"))
+STABILIZATIONS = ("projection", "baumgarte", "none")
+
+SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Model.simulate(**model.simulation)`; "
+                   "all optional.", (
+    Param("t_end", "time", "end time", None, gt=0, default_text="none (`jointplay run` then needs `--t-end`)"),
+    Param("t0", "time", "start time", 0.0),
+    Param("method", "choice", "Dormand-Prince 5(4) with located contact onsets; Adams predictor-corrector; implicit "
+          "NDF/BDF for stiff models such as lubricated joints", "dopri5", of=METHODS, aliases=METHOD_ALIASES),
+    Param("rtol", "dimensionless", "relative error tolerance", 1e-6, gt=0),
+    Param("atol", "dimensionless", "absolute error tolerance", 1e-9, ge=0),
+    Param("max_step", "time", "largest step", None, gt=0, default_text="none"),
+    Param("output_step", "time", "spacing of the saved samples (`jointplay run --output-step` overrides it); the "
+          "summary's peaks and extrema come from every accepted step whatever it is", None, gt=0,
+          default_text="every accepted step"),
+    Param("initial_step", "time", "first step", None, gt=0, default_text="automatic"),
+    Param("min_step", "time", "smallest step", None, gt=0, default_text="automatic"),
+    Param("max_steps", "count", "most attempted (accepted + rejected) steps; a run that exceeds it stops with an "
+          "error naming this key, keeping what was computed", None, default_text="10 000 000 (set by the core)"),
+    Param("stabilization", "choice", "constraint drift control", "projection", of=STABILIZATIONS),
+    Param("max_output_bytes", "size", 'budget of samples x channels x 8 bytes, a whole number of bytes or `"500 MB"`, '
+          '`"2 GiB"`: checked before the run when `output_step` makes the sample count known, otherwise the run stops '
+          "when it reaches it, keeping what was computed", None,
+          default_text=f"{format_size(DEFAULT_MAX_FILE_BYTES)} with a results file, "
+                       f"{format_size(DEFAULT_MAX_MEMORY_BYTES)} in memory"),
+), sparse=True)
+
+
+#: The sections of a model file, in the order they are written; the tables of each, by variant.
+SECTIONS = ("model", "units", "ground", "bodies", "joints", "drivers", "forces", "simulation")
+
+#: The name of a mechanism built in Python without one (a model file's default is its file name).
+DEFAULT_NAME = "mechanism"
+
+
+# text for docstrings and the reference --------------------------------------
+
+def unit(param: Param) -> str:
+    """The SI unit of a key's values (``"m/s"``), ``""`` for plain numbers and non-quantities."""
+    from .units import KINDS
+
+    kind = param.of if param.kind in ("vector", "function", "list") else param.kind
+    spec = KINDS.get(kind) if isinstance(kind, str) else None
+    return spec.si.replace("*", " ") if spec is not None else ""
+
+
+def range_text(param: Param) -> str:
+    """``> 0``, ``(0, 1]``: the allowed range, ``""`` when any value of its kind goes."""
+    if param.interval:
+        return param.interval
+    parts = [f"{op} {value:g}" for op, value in ((">", param.gt), (">=", param.ge), ("<", param.lt),
+                                                   ("<=", param.le)) if value is not None]
+    return " and ".join(parts)
+
+
+def default_text(param: Param) -> str:
+    """The default as the reference writes it, in SI units without the unit: ``required``, ``0.0001``,
+    ``[0, 0]``, ``{ law = "none" }``, or what an absent key means."""
+    if param.required:
+        return "required"
+    if param.default_text:
+        return param.default_text
+    d = param.default
+    if param.kind == "law":
+        return f'{{ law = "{d}" }}'
+    if isinstance(d, bool):
+        return str(d).lower()
+    if isinstance(d, str):
+        return f'"{d}"'
+    if isinstance(d, tuple):
+        return "[" + ", ".join(f"{v:g}" for v in d) + "]"
+    if isinstance(d, dict) and param.kind == "table":
+        return "{ " + ", ".join(f"{k} = {_number(v, unit(param.of[k]))}" for k, v in d.items()) + " }"
+    if isinstance(d, dict):
+        return "{}"
+    return f"{d:g}"
+
+
+def _number(value: float, si: str) -> str:
+    return f'"{value:g} {si}"' if si else f"{value:g}"
+
+
+def docstring(table: Table, summary: str = "") -> str:
+    """A docstring: ``summary`` (the table's doc by default), then its :func:`key_list`."""
+    return f"{summary or table.doc}\n\n{key_list(table)}"
+
+
+def key_list(table: Table) -> str:
+    """One line per key that the core reads, with its unit, range, default and doc, from the definition."""
+    lines = ["Keys, as in a model file (numbers in SI units, strings with units, pint quantities; "
+             "docs/model-file-reference.md):", ""]
+    for param in table.params:
+        if not param.in_spec:
+            continue
+        si, allowed = unit(param), range_text(param)
+        head = f"- ``{param.key}``" + (f" [{si}]" if si else "")
+        tail = f"; {allowed}" if allowed else ""
+        default = "required" if param.required else f"default {default_text(param)}"
+        reason = f" ({param.why})" if param.why else ""
+        lines.append(f"{head}: {param.doc}{tail}; {default}{reason}.")
+    return "\n".join(lines)
+
+
+def all_tables() -> list[Table]:
+    """Every table defined here, each variant once (the tests check each against the schema, the builder
+    and the writer)."""
+    laws = [t for tables in LAWS.values() for t in variants(tables)]
+    return [MODEL, GROUND, BODY, *variants(JOINTS), MATERIAL, LUBRICATION, *laws, DRIVER, *variants(FUNCTIONS),
+            *variants(FORCES), SIMULATION]
