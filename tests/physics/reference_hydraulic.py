@@ -14,9 +14,9 @@ System (one translational degree of freedom along the cylinder axis):
 * chambers: V_cap = V_cd + A1 s, V_rod = V_rd + A2 (L - s); mass continuity
   with a constant effective bulk modulus beta and no leakage gives
   dp_cap/dt = beta (Q_cap - A1 u) / V_cap, dp_rod/dt = beta (Q_rod + A2 u) / V_rod;
-* seal (LuGre, damping fading with speed):
+* seal (LuGre, damping fading with speed over v_D):
   g(u) = Fc + (Fs - Fc) exp(-(u/vs)^2),  dz/dt = u - sigma0 |u| z / g(u),
-  F_f = sigma0 z + sigma1 exp(-(u/vs)^2) dz/dt + sigma2 u;
+  F_f = sigma0 z + sigma1 exp(-(u/v_D)^2) dz/dt + sigma2 u;
 * Newton: m du/dt = p_cap A1 - p_rod A2 - F_f + F(t) - c u + m g_axial,
   F(t) the applied force along the extension, c an optional viscous damper
   on the mass (not part of the cylinder: it lets a loaded mass settle), and
@@ -72,6 +72,7 @@ class CylinderParameters:
     bristle_stiffness: float = 1.0e7  # sigma0 [N/m] (chosen)
     bristle_damping: float = 1.0e4  # sigma1 [N s/m] (chosen)
     viscous_coefficient: float = 0.0  # sigma2 [N s/m] (paper 002's law has none)
+    damping_velocity: float = 1.0e-3  # v_D [m/s] (chosen)
     damper: float = 0.0  # c [N s/m] on the mass, outside the cylinder
     axial_gravity: float = 0.0  # g_axial [m/s^2], gravity along the extension (0: horizontal)
 
@@ -150,10 +151,10 @@ def seal_friction(p: CylinderParameters, u: float, z: float):
     (0, 0) without a seal law."""
     if p.seal == "none":
         return 0.0, 0.0
-    fade = math.exp(-((u / p.stribeck_velocity) ** 2))
-    g = p.kinetic_force + (p.static_force - p.kinetic_force) * fade
+    g = p.kinetic_force + (p.static_force - p.kinetic_force) * math.exp(-((u / p.stribeck_velocity) ** 2))
     zdot = u - p.bristle_stiffness * abs(u) * z / g
-    force = p.bristle_stiffness * z + p.bristle_damping * fade * zdot + p.viscous_coefficient * u
+    damping = p.bristle_damping * math.exp(-((u / p.damping_velocity) ** 2))
+    force = p.bristle_stiffness * z + damping * zdot + p.viscous_coefficient * u
     return force, zdot
 
 

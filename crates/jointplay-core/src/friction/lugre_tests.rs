@@ -2,11 +2,12 @@
 //! the exponential bristle transient at constant velocity, a mass held by
 //! stiction below F_S and sliding above it, and the dissipation bound.
 //! Seal numbers: F_S = 385 N, F_C = 340 N from paper 002; v_S, σ0, σ1 chosen
-//! (docs/theory/friction-lugre.md).
+//! (docs/theory/friction-lugre.md); v_D and v_stick at their defaults.
 
 use super::*;
 
-/// Paper-002 seal with the chosen v_S = 0.03 mm/s, σ0 = 1e7 N/m, σ1 = 1e4 N s/m, no viscous term.
+/// Paper-002 seal with the chosen v_S = 0.03 mm/s, σ0 = 1e7 N/m, σ1 = 1e4 N s/m, no viscous term
+/// (v_D = 1 mm/s, v_stick = 0.01 mm/s).
 fn seal() -> LugreFriction {
     LugreFriction::new(385.0, 340.0, 3.0e-5, 1.0e7, 1.0e4, 0.0).unwrap()
 }
@@ -62,7 +63,9 @@ fn test_lugre_stribeck_curve_runs_from_static_to_kinetic_force() {
     assert!((law.stribeck_force(3.0e-5) - (340.0 + 45.0 / std::f64::consts::E)).abs() < 1e-12);
     assert!((law.stribeck_force(-3.0e-5) - law.stribeck_force(3.0e-5)).abs() < 1e-12);
     assert_eq!(law.stribeck_force(1.0), 340.0);
-    assert!((law.damping_at(3.0e-5) - 1.0e4 / std::f64::consts::E).abs() < 1e-9);
+    // damping fades over v_D = 1 mm/s: σ1/e there
+    assert!((law.damping_at(-1.0e-3) - 1.0e4 / std::f64::consts::E).abs() < 1e-9);
+    assert_eq!(law.damping_at(0.0), 1.0e4);
     assert!((law.deflection_limit() - 38.5e-6).abs() < 1e-18);
 }
 
@@ -183,7 +186,7 @@ fn test_lugre_bristle_stays_below_the_deflection_limit() {
 #[test]
 fn test_lugre_dissipates_energy_within_the_bound_and_not_beyond() {
     let at_bound = {
-        let bound = 4.0 * (2.0 * std::f64::consts::E).sqrt() * 340.0 / 3.0e-5;
+        let bound = 4.0 * (2.0 * std::f64::consts::E).sqrt() * 340.0 / DEFAULT_DAMPING_VELOCITY;
         LugreFriction::new(385.0, 340.0, 3.0e-5, 1.0e7, bound, 0.0).unwrap()
     };
     // the bound makes F v - d/dt(σ0 z²/2) >= 0 for every z, reachable or not:
@@ -239,7 +242,10 @@ fn test_lugre_constructor_messages() {
     );
     assert_eq!(
         err(LugreFriction::new(385.0, 340.0, 3e-5, 1e7, 1e9, 0.0)),
-        "bristle damping must be <= 4 sqrt(2e) F_C / v_S = 1.057012e8 N s/m for the law to dissipate energy, got 1000000000"
+        "bristle damping must be <= 4 sqrt(2e) F_C / v_D = 3.171036e6 N s/m for the law to dissipate energy, got 1000000000"
     );
     assert_eq!(err(seal().with_stick_velocity(0.0)), "stick velocity must be finite and > 0 m/s, got 0");
+    assert_eq!(err(seal().with_damping_velocity(-1.0)), "damping velocity must be finite and > 0 m/s, got -1");
+    // a larger v_D lowers the bound: σ1 = 1e4 N s/m fails beyond v_D = 0.317 m/s
+    assert!(seal().with_damping_velocity(0.3).is_ok() && seal().with_damping_velocity(0.33).is_err());
 }

@@ -12,7 +12,7 @@ mod threlfall;
 
 pub use ambrosio::AmbrosioCoulomb;
 pub use coulomb::RegularisedCoulomb;
-pub use lugre::{LugreFriction, LugreOutput, DEFAULT_STICK_VELOCITY};
+pub use lugre::{LugreFriction, LugreOutput, DEFAULT_DAMPING_VELOCITY, DEFAULT_STICK_VELOCITY};
 pub use stiction::StictionFriction;
 pub use threlfall::Threlfall;
 
