@@ -30,10 +30,11 @@
 pub const DEFAULT_STICK_VELOCITY: f64 = 1.0e-5;
 
 /// Default damping velocity v_D [m/s]: 1 mm/s. The bristle damping then
-/// adds at most 0.91 σ1 v_D to the friction in a transient (9 N for σ1 =
-/// 1e4 N s/m, under 3 % of the seal's 340 N), yet still damps presliding
-/// vibrations up to mm/s (a fade at v_S would leave the oil-spring
-/// vibrations of a cylinder undamped above ~0.03 mm/s).
+/// adds at most (1 + F_S/F_C) σ1 v_D / sqrt(2e) to the friction in a
+/// transient (9 N for paper 002's seal with σ1 = 1e4 N s/m, under 3 % of
+/// its 340 N), yet still damps presliding vibrations up to mm/s (a fade at
+/// v_S would leave the oil-spring vibrations of a cylinder undamped above
+/// ~0.03 mm/s).
 pub const DEFAULT_DAMPING_VELOCITY: f64 = 1.0e-3;
 
 /// LuGre friction law with velocity-dependent bristle damping.
