@@ -31,6 +31,7 @@ pub mod dynamics;
 pub mod error;
 pub mod force;
 pub mod friction;
+pub mod hydraulic;
 pub mod integrate;
 pub mod joint;
 pub mod linalg;

@@ -6,11 +6,13 @@
 
 mod ambrosio;
 mod coulomb;
+mod lugre;
 mod stiction;
 mod threlfall;
 
 pub use ambrosio::AmbrosioCoulomb;
 pub use coulomb::RegularisedCoulomb;
+pub use lugre::{LugreFriction, LugreOutput, DEFAULT_DAMPING_VELOCITY, DEFAULT_STICK_VELOCITY};
 pub use stiction::StictionFriction;
 pub use threlfall::Threlfall;
 
