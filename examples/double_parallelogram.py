@@ -39,9 +39,10 @@ from pathlib import Path
 import numpy as np
 
 import jointplay as jp
-from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS
+from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS, simulate
+from parallelogram_four_bar import flat_passages as bar_flat_passages
 
-T_END = 10.0  # s
+from parallelogram_four_bar import T_END  # noqa: E402  (s, as the four-bar)
 COUPLER_MASS = 2 * MASS  # kg: a 2 m bar of the same section
 COUPLER_INERTIA = COUPLER_MASS * (2 * LENGTH)**2 / 12  # kg m^2
 BARS = {"left": ("A0", "B0"), "middle": ("A1", "B1"), "right": ("A2", "B2")}
@@ -66,15 +67,9 @@ def build_model() -> jp.Model:
     return m
 
 
-def simulate(model: jp.Model, t_end: float = T_END) -> jp.Results:
-    """Runs the model (rtol 1e-8, atol 1e-10, samples every 10 ms), as the model file's [simulation]."""
-    return model.simulate(t_end, method="dopri5", rtol=1e-8, atol=1e-10, output_step=0.01)
-
-
 def flat_passages(results: jp.Results) -> int:
-    """How many times the left bar passed the ground line (sin of its angle changed sign)."""
-    s = np.sign(np.sin(results["left.angle"]))
-    return int(np.count_nonzero(s[1:] * s[:-1] < 0))
+    """How many times the left bar passed the ground line."""
+    return bar_flat_passages(results, "left")
 
 
 def write_figure(results: jp.Results, path: Path) -> Path:

@@ -84,9 +84,9 @@ def simulate(model: jp.Model, t_end: float = T_END) -> jp.Results:
     return model.simulate(t_end, method="dopri5", rtol=1e-8, atol=1e-10, output_step=0.01)
 
 
-def flat_passages(results: jp.Results) -> int:
-    """How many times the crank passed the ground line (sin(theta) changed sign)."""
-    s = np.sign(np.sin(results["crank.angle"]))
+def flat_passages(results: jp.Results, bar: str = "crank") -> int:
+    """How many times `bar` passed the ground line (the sine of its angle changed sign)."""
+    s = np.sign(np.sin(results[f"{bar}.angle"]))
     return int(np.count_nonzero(s[1:] * s[:-1] < 0))
 
 

@@ -143,3 +143,12 @@ def state_from_results(results, bodies: list[Body], k: int):
     q = np.concatenate([[results[f"{b.name}.{c}"][k] for c in ("x", "y", "angle")] for b in bodies])
     qd = np.concatenate([[results[f"{b.name}.{c}"][k] for c in ("vx", "vy", "omega")] for b in bodies])
     return q, qd
+
+
+def run_model_file(path):
+    """The model file's own run: its [simulation] settings to its t_end."""
+    import jointplay as jp
+
+    model = jp.load(path)
+    options = dict(model.simulation)
+    return model.simulate(options.pop("t_end"), **options)

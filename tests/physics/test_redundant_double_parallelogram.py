@@ -69,9 +69,7 @@ def absolute_model() -> ref.AbsoluteModel:
 
 @functools.cache
 def run() -> jp.Results:
-    model = jp.load(MODEL)
-    options = dict(model.simulation)
-    return model.simulate(options.pop("t_end"), **options)
+    return ref.run_model_file(MODEL)
 
 
 @functools.cache

@@ -48,9 +48,7 @@ ENERGY_TOLERANCE = 1e-6
 
 @functools.cache
 def run() -> jp.Results:
-    model = jp.load(MODEL)
-    options = dict(model.simulation)
-    return model.simulate(options.pop("t_end"), **options)
+    return ref.run_model_file(MODEL)
 
 
 @functools.cache
