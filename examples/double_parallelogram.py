@@ -39,10 +39,9 @@ from pathlib import Path
 import numpy as np
 
 import jointplay as jp
-from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS, simulate
+from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS, T_END, simulate
 from parallelogram_four_bar import flat_passages as bar_flat_passages
 
-from parallelogram_four_bar import T_END  # noqa: E402  (s, as the four-bar)
 COUPLER_MASS = 2 * MASS  # kg: a 2 m bar of the same section
 COUPLER_INERTIA = COUPLER_MASS * (2 * LENGTH)**2 / 12  # kg m^2
 BARS = {"left": ("A0", "B0"), "middle": ("A1", "B1"), "right": ("A2", "B2")}
