@@ -7,6 +7,7 @@
 //!
 //! The folders read as a table of contents of the physics:
 //!
+//! - [`body`]: kinds of bodies behind one contract (the planar rigid body);
 //! - [`contact`]: normal contact force laws and contact stiffness laws;
 //! - [`friction`]: tangential friction laws;
 //! - [`motion`]: prescribed functions of time for drivers and loads;
@@ -26,6 +27,7 @@
 // units are written in brackets, `[m]`, `[N]`: they are not links
 #![allow(rustdoc::broken_intra_doc_links)]
 
+pub mod body;
 pub mod contact;
 pub mod dynamics;
 pub mod error;

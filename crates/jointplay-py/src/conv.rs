@@ -1,6 +1,7 @@
 //! All conversions between Python objects and core types live here.
 
 use jointplay_core::dynamics::{ChannelInfo, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
+use jointplay_core::body::BodyKind;
 use jointplay_core::integrate::Method;
 use jointplay_core::SimulationError;
 use numpy::{PyArray1, PyArrayMethods};
@@ -175,8 +176,13 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
     for b in &m.bodies {
         let e = PyDict::new(py);
         e.set_item("name", &b.name)?;
-        e.set_item("mass", b.mass)?;
-        e.set_item("inertia", b.inertia)?;
+        match &b.kind {
+            BodyKind::PlanarRigid(rigid) => {
+                e.set_item("kind", "planar_rigid")?;
+                e.set_item("mass", rigid.mass)?;
+                e.set_item("inertia", rigid.inertia)?;
+            }
+        }
         bodies.append(e)?;
     }
     d.set_item("bodies", bodies)?;
@@ -194,7 +200,8 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
     d.set_item("elements", elements)?;
     d.set_item("clearance_joints", m.clearance_names.clone())?;
     d.set_item("forces", m.force_names.clone())?;
-    d.set_item("n_coordinates", m.n_coordinates())?;
+    d.set_item("n_coordinates", m.n_velocities())?;
+    d.set_item("n_element_states", m.layout.nz)?;
     d.set_item("n_equations", m.n_dynamic_equations())?;
     d.set_item("degrees_of_freedom", m.degrees_of_freedom())?;
     channel_infos(py, &d, &m.channel_infos())?;

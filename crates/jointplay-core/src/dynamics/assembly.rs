@@ -5,7 +5,7 @@
 //! mechanism.
 
 use super::projection::{project_positions, project_velocities, velocity_residuals};
-use super::state::{ContactMemory, State};
+use super::state::State;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 
@@ -22,7 +22,6 @@ const ASSEMBLY_ITERATIONS: usize = 50;
 
 /// Consistent initial state at time `t0` from the model's approximate input.
 pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, SimulationError> {
-    let n = model.n_coordinates();
     let all = model.constraints.len();
     let mut q = model.initial_coordinates.clone();
     let mut qdot = model.initial_velocities.clone();
@@ -41,8 +40,9 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
             ),
         });
     }
-    let mut y = Vec::with_capacity(2 * n);
+    let mut y = Vec::with_capacity(model.layout.len());
     y.extend_from_slice(&q);
     y.extend_from_slice(&qdot);
-    Ok(State { time: t0, y, contacts: vec![ContactMemory::default(); model.clearance_joints.len()] })
+    y.extend_from_slice(&model.initial_element_states);
+    Ok(State::new(model, t0, y))
 }

@@ -4,7 +4,6 @@
 use super::frame::cross;
 use super::model::ElementKind;
 use super::{Model, Workspace};
-use crate::force::gravity_potential_energy;
 
 /// Name, unit and meaning of one channel.
 #[derive(Clone, Debug, PartialEq)]
@@ -59,10 +58,9 @@ pub(crate) fn append_sample(model: &Model, y: &[f64], ws: &mut Workspace, out: &
 
 /// The value of one channel; `energy` is `[kinetic, potential]` [J] of the sample.
 pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, energy: [f64; 2]) -> f64 {
-    let n = model.n_coordinates();
     match source {
         Source::Coordinate(k) => y[k],
-        Source::Velocity(k) => y[n + k],
+        Source::Velocity(k) => y[model.layout.nq + k],
         Source::Acceleration(k) => ws.accelerations[k],
         Source::Reaction(e, which) => reaction_value(model, e, which, ws),
         Source::DriverEffort(e) => driver_effort(model, e, ws),
@@ -91,11 +89,11 @@ pub(crate) fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
 fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 3] {
     let element = &model.elements[e];
     let (body, sign) = if element.second.is_ground() { (element.first, -1.0) } else { (element.second, 1.0) };
-    let Some(c) = body.coordinate() else { return [0.0; 3] };
+    let Some(address) = model.layout.body(body) else { return [0.0; 3] };
     let mut g = [0.0; 3];
     for k in element.constraints.clone() {
         for r in model.row_offsets[k]..model.row_offsets[k + 1] {
-            for (block, _) in ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, triple)| triple == c / 3) {
+            for (block, _) in ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, first)| first == address.v) {
                 for (gi, ji) in g.iter_mut().zip(block) {
                     *gi -= sign * ji * ws.multipliers[r];
                 }
@@ -177,17 +175,11 @@ fn relative_radial_velocity(model: &Model, j: usize, ws: &Workspace) -> f64 {
 
 /// Kinetic and potential energy [J] of the state y (gravity, force elements, contact).
 fn kinetic_and_potential_energy(model: &Model, y: &[f64], ws: &Workspace) -> [f64; 2] {
-    let n = model.n_coordinates();
-    let kinetic: f64 = model
-        .bodies
-        .iter()
-        .enumerate()
-        .map(|(k, b)| {
-            let v = &y[n + 3 * k..n + 3 * k + 3];
-            0.5 * (b.mass * (v[0] * v[0] + v[1] * v[1]) + b.inertia * v[2] * v[2])
-        })
-        .sum();
-    let potential = gravity_potential_energy(&model.masses, model.gravity, &y[..n])
+    let (q, v, _) = model.layout.split(y);
+    let bodies = model.bodies.iter().zip(&model.layout.bodies);
+    let kinetic: f64 = bodies.clone().map(|(b, a)| b.kind.kinetic_energy(&v[a.v_range()])).sum();
+    let gravity: f64 = bodies.map(|(b, a)| b.kind.gravity_potential_energy(model.gravity, &q[a.q_range()])).sum();
+    let potential = gravity
         + ws.force_outputs.iter().map(|f| f.potential_energy).sum::<f64>()
         + model.clearance_joints.iter().zip(&ws.contacts).map(|(j, c)| j.stiffness.elastic_energy(c.penetration.max(0.0))).sum::<f64>();
     [kinetic, potential]

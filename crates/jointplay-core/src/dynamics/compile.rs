@@ -4,8 +4,9 @@
 use std::collections::HashMap;
 
 use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES, FILM_QUANTITIES};
-use super::frame::{perp, BodyIndex, BodyPoint, Vec2};
+use super::frame::{perp, BodyIndex, Marker, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm};
+use crate::body::{BodyKind, MassBlock, PlanarRigidBody};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
@@ -39,7 +40,7 @@ struct Compiler<'s> {
     spec: &'s ModelSpec,
     errors: ModelErrors,
     body_index: HashMap<&'s str, BodyIndex>,
-    points: HashMap<String, BodyPoint>,
+    points: HashMap<String, Marker>,
     model: Model,
     /// joint name -> (kind, element index) for drivers
     joint_index: HashMap<&'s str, (ElementKind, usize)>,
@@ -55,7 +56,7 @@ impl<'s> Compiler<'s> {
             bodies: Vec::new(),
             points: Vec::new(),
             gravity: Vec2::new(spec.gravity[0], spec.gravity[1]),
-            masses: Vec::new(),
+            layout: Default::default(),
             inverse_mass: Vec::new(),
             constraints: Vec::new(),
             n_dynamic_constraints: 0,
@@ -71,6 +72,7 @@ impl<'s> Compiler<'s> {
             force_names: Vec::new(),
             initial_coordinates: Vec::new(),
             initial_velocities: Vec::new(),
+            initial_element_states: Vec::new(),
             channels: Vec::new(),
         };
         Self {
@@ -112,11 +114,13 @@ impl<'s> Compiler<'s> {
             self.positive(b.inertia, format!("{loc}.inertia"), "inertia");
             let index = BodyIndex(k + 1);
             self.body_index.insert(&b.name, index);
-            self.model.bodies.push(Body { name: b.name.clone(), mass: b.mass, inertia: b.inertia });
-            self.model.masses.push(b.mass);
-            self.model.inverse_mass.extend([1.0 / b.mass, 1.0 / b.mass, 1.0 / b.inertia]);
+            let kind = BodyKind::PlanarRigid(PlanarRigidBody::new(b.mass, b.inertia));
+            self.model.layout.push_body(kind.nq(), kind.nv());
+            let MassBlock::ConstantDiagonal(inverse_mass) = kind.mass_block();
+            self.model.inverse_mass.extend_from_slice(inverse_mass);
             self.model.initial_coordinates.extend([b.position[0], b.position[1], b.angle]);
             self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity]);
+            self.model.bodies.push(Body { name: b.name.clone(), kind });
             for (i, p) in b.points.iter().enumerate() {
                 self.add_point(index, &b.name, &p.name, p.position, format!("{loc}.points[{i}]"));
             }
@@ -131,14 +135,14 @@ impl<'s> Compiler<'s> {
         } else if position.iter().any(|v| !v.is_finite()) {
             self.errors.push(format!("{location}.position"), format!("must be finite, got {position:?}"));
         }
-        let point = BodyPoint { body, local: Vec2::new(position[0], position[1]) };
+        let point = Marker { body, local: Vec2::new(position[0], position[1]) };
         if self.points.insert(full.clone(), point).is_some() {
             self.errors.push(format!("{location}.name"), format!("point {full:?} is defined twice"));
         }
         self.model.points.push((full, body, point.local));
     }
 
-    fn point(&mut self, reference: &str, location: String) -> Option<BodyPoint> {
+    fn point(&mut self, reference: &str, location: String) -> Option<Marker> {
         let found = self.points.get(reference).copied();
         if found.is_none() {
             let hint = match reference.split_once('.') {
@@ -160,11 +164,11 @@ impl<'s> Compiler<'s> {
     }
 
     fn initial_angle(&self, body: BodyIndex) -> f64 {
-        body.coordinate().map_or(0.0, |c| self.model.initial_coordinates[c + 2])
+        if body.is_ground() { 0.0 } else { self.spec.bodies[body.0 - 1].angle }
     }
 
     /// Adds an element owning `kinds`; returns its index.
-    fn add_element(&mut self, name: &str, kind: ElementKind, first: BodyPoint, second: BodyPoint, axis: Vec2, kinds: Vec<ConstraintKind>) -> usize {
+    fn add_element(&mut self, name: &str, kind: ElementKind, first: Marker, second: Marker, axis: Vec2, kinds: Vec<ConstraintKind>) -> usize {
         let owner = self.model.elements.len();
         let start = self.model.constraints.len();
         for k in kinds {
@@ -172,7 +176,8 @@ impl<'s> Compiler<'s> {
             let last = *self.model.row_offsets.last().unwrap();
             self.model.row_offsets.push(last + rows);
             self.model.row_owner.extend(std::iter::repeat_n(owner, rows));
-            let bodies = k.bodies().map(|b| b.coordinate().map_or(usize::MAX, |c| c / 3));
+            let layout = &self.model.layout;
+            let bodies = k.bodies().map(|b| layout.body(b).map_or(usize::MAX, |address| address.v));
             self.model.row_bodies.extend(std::iter::repeat_n(bodies, rows));
             self.model.constraints.push(Constraint { kind: k, owner });
         }
@@ -202,7 +207,7 @@ impl<'s> Compiler<'s> {
         }
     }
 
-    fn distinct_bodies(&mut self, loc: &str, a: BodyPoint, b: BodyPoint) -> bool {
+    fn distinct_bodies(&mut self, loc: &str, a: Marker, b: Marker) -> bool {
         if a.body == b.body {
             self.errors.push(loc.to_string(), format!("connects body {:?} to itself", self.model.body_name(a.body)));
             return false;
@@ -321,7 +326,7 @@ impl<'s> Compiler<'s> {
         let Some(function) = function else { return };
         let element = self.model.elements[joint].clone();
         let first_point = self.joint_first_point(joint);
-        let second = BodyPoint { body: element.second, local: element.second_point };
+        let second = Marker { body: element.second, local: element.second_point };
         let (driver_kind, constraint, unit, quantity) = match kind {
             ElementKind::RevoluteJoint => (
                 ElementKind::AngleDriver,
@@ -346,7 +351,7 @@ impl<'s> Compiler<'s> {
     }
 
     /// The first point of an ideal joint, recovered from its constraints.
-    fn joint_first_point(&self, element: usize) -> BodyPoint {
+    fn joint_first_point(&self, element: usize) -> Marker {
         for k in self.model.elements[element].constraints.clone() {
             match &self.model.constraints[k].kind {
                 ConstraintKind::PointCoincidence(c) => return c.first,
@@ -354,7 +359,7 @@ impl<'s> Compiler<'s> {
                 ConstraintKind::RelativeAngle(_) => {}
             }
         }
-        BodyPoint { body: self.model.elements[element].first, local: Vec2::zeros() }
+        Marker { body: self.model.elements[element].first, local: Vec2::zeros() }
     }
 
     fn forces(&mut self) {
@@ -473,21 +478,17 @@ impl<'s> Compiler<'s> {
         self.model.channels.push(Channel { info, source });
     }
 
+    /// The position, velocity and acceleration channels the kind of body `k` declares.
     fn body_channels(&mut self, k: usize, name: &str) {
-        let c = 3 * k;
-        let quantities: [(&str, &'static str, &str, Source); 9] = [
-            ("x", "m", "centre of mass x", Source::Coordinate(c)),
-            ("y", "m", "centre of mass y", Source::Coordinate(c + 1)),
-            ("angle", "rad", "orientation", Source::Coordinate(c + 2)),
-            ("vx", "m/s", "centre of mass velocity x", Source::Velocity(c)),
-            ("vy", "m/s", "centre of mass velocity y", Source::Velocity(c + 1)),
-            ("omega", "rad/s", "angular velocity", Source::Velocity(c + 2)),
-            ("ax", "m/s^2", "centre of mass acceleration x", Source::Acceleration(c)),
-            ("ay", "m/s^2", "centre of mass acceleration y", Source::Acceleration(c + 1)),
-            ("alpha", "rad/s^2", "angular acceleration", Source::Acceleration(c + 2)),
-        ];
-        for (quantity, unit, description, source) in quantities {
-            self.channel(name, quantity, unit, description.to_string(), source);
+        let address = self.model.layout.bodies[k];
+        let coordinates = self.model.bodies[k].kind.coordinate_channels();
+        let sources = [Source::Coordinate as fn(usize) -> Source, Source::Velocity, Source::Acceleration];
+        for (which, source) in sources.into_iter().enumerate() {
+            for (i, c) in coordinates.iter().enumerate() {
+                let (quantity, unit, description) = [c.position, c.velocity, c.acceleration][which];
+                let first = if which == 0 { address.q } else { address.v };
+                self.channel(name, quantity, unit, description.to_string(), source(first + i));
+            }
         }
     }
 

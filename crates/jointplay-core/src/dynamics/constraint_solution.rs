@@ -59,8 +59,9 @@ pub(crate) enum FactorKind {
 
 /// Value of one precomputed term of `S` from the Jacobian blocks.
 #[inline]
-fn term_value(term: &SchurTerm, blocks: &[[f64; 3]], inverse_mass: &[[f64; 3]]) -> f64 {
-    let (ra, rb, w) = (&blocks[term.first as usize], &blocks[term.second as usize], &inverse_mass[term.body as usize]);
+fn term_value(term: &SchurTerm, blocks: &[[f64; 3]], inverse_mass: &[f64]) -> f64 {
+    let (ra, rb) = (&blocks[term.first as usize], &blocks[term.second as usize]);
+    let w = &inverse_mass[term.body as usize..term.body as usize + 3];
     ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2]
 }
 
@@ -69,7 +70,7 @@ fn form_dense(model: &Model, rows: usize, ws_jacobian: &[[[f64; 3]; 2]], out: &m
     let out = &mut out[..rows * rows];
     out.fill(0.0);
     let blocks = ws_jacobian.as_flattened();
-    let inverse_mass = model.inverse_mass.as_chunks::<3>().0;
+    let inverse_mass = model.inverse_mass.as_slice();
     for term in model.schur_terms.iter().take_while(|term| (term.row as usize) < rows) {
         out[term.row as usize * rows + term.column as usize] += term_value(term, blocks, inverse_mass);
     }
@@ -97,7 +98,7 @@ fn factor_regular(model: &Model, rows: usize, ws: &mut Workspace) -> Result<Fact
         let schur = &mut ws.schur[..rows * (rows + 1)];
         schur.fill(0.0);
         let blocks = ws.jacobian.as_flattened();
-        let inverse_mass = model.inverse_mass.as_chunks::<3>().0;
+        let inverse_mass = model.inverse_mass.as_slice();
         for term in model.schur_terms.iter().take_while(|term| (term.row as usize) < rows) {
             schur[term.entry as usize] += term_value(term, blocks, inverse_mass);
         }

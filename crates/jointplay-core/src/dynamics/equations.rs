@@ -9,12 +9,12 @@
 //! small system `(Phi_q M^-1 Phi_q^T) lambda = Phi_q M^-1 Q - gamma` and
 //! then `q_ddot = M^-1 (Q - Phi_q^T lambda)`.
 
-use super::frame::{add_point_force, Frame};
+use super::frame::Frame;
+use super::generalised_force::GeneralisedForces;
 use super::state::ContactMemory;
 use super::constraint_solution;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::force::gravity_generalised_force;
 use crate::joint::{ConstraintRows, Lubrication, RowJacobian};
 use crate::linalg::RankDeficiency;
 
@@ -34,11 +34,11 @@ pub enum Stabilization {
     None,
 }
 
-/// Computes the frames of all bodies from `q` and `q_dot` (reusing the
-/// cos and sin of a body whose angle did not change).
-pub fn update_frames(model: &Model, q: &[f64], qdot: &[f64], frames: &mut [Frame]) {
-    for k in 0..model.bodies.len() {
-        frames[k + 1] = Frame::from_coordinates_after(&frames[k + 1], &q[3 * k..3 * k + 3], &qdot[3 * k..3 * k + 3]);
+/// Computes the frames of all bodies from the positions `q` and velocities
+/// `v` (reusing the trigonometry of a body whose orientation did not change).
+pub fn update_frames(model: &Model, q: &[f64], v: &[f64], frames: &mut [Frame]) {
+    for ((body, address), frame) in model.bodies.iter().zip(&model.layout.bodies).zip(&mut frames[1..]) {
+        *frame = body.kind.frame(&q[address.q_range()], &v[address.v_range()], frame);
     }
 }
 
@@ -64,32 +64,20 @@ pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, 
     ws.residual[..rows].iter().enumerate().fold((0.0, 0), |(m, i), (r, v)| if v.abs() > m { (v.abs(), r) } else { (m, i) })
 }
 
-/// Splits a buffer whose coordinates come in `(x, y, phi)` triples into those triples.
+/// The velocity coordinates of a Jacobian block starting at `address`.
 #[inline]
-fn body_blocks(values: &[f64]) -> &[[f64; 3]] {
-    values.as_chunks::<3>().0
-}
-
-/// Mutable [`body_blocks`].
-#[inline]
-fn body_blocks_mut(values: &mut [f64]) -> &mut [[f64; 3]] {
-    values.as_chunks_mut::<3>().0
-}
-
-/// `a . b` for two coordinate triples, summed in the order x, y, phi.
-#[inline]
-fn dot3(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+fn block_of(v: &[f64], address: usize) -> &[f64; 3] {
+    v[address..address + 3].try_into().expect("a Jacobian block spans three velocity coordinates")
 }
 
 /// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's bodies.
 pub(crate) fn jacobian_times(model: &Model, rows: usize, jacobian: &[RowJacobian], v: &[f64], out: &mut [f64]) {
-    let x = body_blocks(v);
     for ((o, bodies), row) in out[..rows].iter_mut().zip(&model.row_bodies).zip(jacobian) {
         let mut sum = 0.0;
-        for (block, &k) in row.iter().zip(bodies) {
-            if k != usize::MAX {
-                sum += dot3(block, &x[k]);
+        for (block, &address) in row.iter().zip(bodies) {
+            if address != usize::MAX {
+                let x = block_of(v, address);
+                sum += block[0] * x[0] + block[1] * x[1] + block[2] * x[2];
             }
         }
         *o = sum;
@@ -99,11 +87,10 @@ pub(crate) fn jacobian_times(model: &Model, rows: usize, jacobian: &[RowJacobian
 /// `out = Phi_q^T w` over the first `rows` rows, touching only each row's bodies.
 pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &[RowJacobian], w: &[f64], out: &mut [f64]) {
     out.fill(0.0);
-    let o = body_blocks_mut(out);
     for ((&wr, bodies), row) in w[..rows].iter().zip(&model.row_bodies).zip(jacobian) {
-        for (block, &k) in row.iter().zip(bodies) {
-            if k != usize::MAX {
-                for (oi, ji) in o[k].iter_mut().zip(block) {
+        for (block, &address) in row.iter().zip(bodies) {
+            if address != usize::MAX {
+                for (oi, ji) in out[address..address + 3].iter_mut().zip(block) {
                     *oi += ji * wr;
                 }
             }
@@ -143,20 +130,24 @@ fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> 
     }
 }
 
-/// Applied generalised forces: gravity, force elements and clearance
-/// contacts (whose evaluations are kept in the workspace).
-fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, ws: &mut Workspace) -> Result<(), SimulationError> {
+/// Applied generalised forces: velocity-dependent inertial forces, gravity,
+/// force elements and clearance contacts (whose evaluations are kept in the workspace).
+fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, q: &[f64], v: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
     ws.generalised_force.fill(0.0);
-    gravity_generalised_force(&model.masses, model.gravity, &mut ws.generalised_force);
+    for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
+        body.kind.add_inertial_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
+    }
+    let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout);
+    forces.add_gravity(model.gravity);
     for (k, element) in model.forces.iter().enumerate() {
-        ws.force_outputs[k] = element.apply(&ws.frames, t, &mut ws.generalised_force);
+        ws.force_outputs[k] = element.apply(&ws.frames, t, &mut forces);
     }
     for (k, joint) in model.clearance_joints.iter().enumerate() {
         let c = joint.evaluate(&ws.frames, memory[k].onset_velocity);
         let (bi, bj) = (joint.bearing.body, joint.journal.body);
         if c.in_contact {
-            add_point_force(&mut ws.generalised_force, &ws.frames[bj.0], bj, c.journal_contact_point, c.force_on_journal);
-            add_point_force(&mut ws.generalised_force, &ws.frames[bi.0], bi, c.bearing_contact_point, -c.force_on_journal);
+            forces.add_point_force(bj, &ws.frames[bj.0], c.journal_contact_point, c.force_on_journal);
+            forces.add_point_force(bi, &ws.frames[bi.0], c.bearing_contact_point, -c.force_on_journal);
         }
         ws.contacts[k] = c;
         if let Some(lubrication) = &joint.lubrication {
@@ -168,28 +159,29 @@ fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, ws: &mut Work
                 element: model.clearance_names[k].clone(),
                 cause,
             })?;
-            Lubrication::apply(&film, &mut ws.generalised_force, (&ws.frames[bi.0], bi, pi), (&ws.frames[bj.0], bj, pj));
+            Lubrication::apply(&film, &mut forces, (&ws.frames[bi.0], bi, pi), (&ws.frames[bj.0], bj, pj));
             ws.films[k] = film;
         }
     }
     Ok(())
 }
 
-/// Evaluates the accelerations `ws.accelerations` and multipliers
-/// `ws.multipliers` at `(t, q, q_dot)`. Never allocates.
+/// Evaluates the accelerations `ws.accelerations` (of the velocity
+/// coordinates) and multipliers `ws.multipliers` at `(t, y)`, `y = [q, v, z]`.
+/// Never allocates.
 pub fn accelerations(
     model: &Model,
     memory: &[ContactMemory],
     t: f64,
-    q: &[f64],
-    qdot: &[f64],
+    y: &[f64],
     stabilization: Stabilization,
     ws: &mut Workspace,
 ) -> Result<(), SimulationError> {
+    let (q, qdot, _) = model.layout.split(y);
     // the factor depends on the positions only: kept from a projection at the same (t, q)
     let factored = holds_factor(ws, model.row_offsets[model.n_dynamic_constraints], t, q);
     update_frames(model, q, qdot, &mut ws.frames);
-    applied_forces(model, memory, t, ws)?;
+    applied_forces(model, memory, t, q, qdot, ws)?;
     let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
     if let Stabilization::Baumgarte { alpha, beta } = stabilization {
         constraint_residuals(model, model.n_dynamic_constraints, t, ws);

@@ -1,4 +1,5 @@
-//! Position and velocity of a body frame, evaluated once per right-hand side.
+//! Position and velocity of a body frame, evaluated once per right-hand side,
+//! and markers (points with a frame on a body).
 
 use nalgebra::Vector2;
 
@@ -17,21 +18,17 @@ impl BodyIndex {
     pub fn is_ground(self) -> bool {
         self.0 == 0
     }
-
-    /// Index of the body's first generalised coordinate `x`, or `None` for
-    /// the ground. Planar rigid bodies own `(x, y, phi)` in that order.
-    #[inline]
-    pub fn coordinate(self) -> Option<usize> {
-        if self.0 == 0 { None } else { Some(3 * (self.0 - 1)) }
-    }
 }
 
-/// A point fixed in a body, in body coordinates [m].
+/// A marker: a point of a body and the body's frame at that point; what
+/// joints, force elements, sensors and channels attach to (they never index
+/// coordinates: a body kind turns a marker into a pose, a velocity and a
+/// Jacobian, see [`crate::body::BodyKind`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BodyPoint {
+pub struct Marker {
     /// The body it belongs to.
     pub body: BodyIndex,
-    /// Coordinates in the body frame [m].
+    /// Coordinates of the point in the body frame [m].
     pub local: Vec2,
 }
 
@@ -127,18 +124,6 @@ impl Frame {
     #[inline]
     pub fn material_velocity_at(&self, p: Vec2) -> Vec2 {
         self.velocity + perp(p - self.position) * self.angular_velocity
-    }
-}
-
-/// Adds a force `f` [N] acting at the global point `p` [m] of `body` to the
-/// generalised force vector (force on `x, y`, moment about the centre of
-/// mass on `phi`).
-#[inline]
-pub fn add_point_force(generalised: &mut [f64], frame: &Frame, body: BodyIndex, p: Vec2, f: Vec2) {
-    if let Some(c) = body.coordinate() {
-        generalised[c] += f.x;
-        generalised[c + 1] += f.y;
-        generalised[c + 2] += cross(p - frame.position, f);
     }
 }
 

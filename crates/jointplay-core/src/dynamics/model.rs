@@ -2,19 +2,19 @@
 
 use super::channels::Channel;
 use super::frame::{BodyIndex, Vec2};
+use super::layout::StateLayout;
+use crate::body::BodyKind;
 use crate::force::ForceElement;
 use crate::joint::{ClearanceRevolute, Constraint};
 use crate::linalg::PatternLdl;
 
-/// A planar rigid body with its frame at the centre of mass.
+/// A body: its name and its kind (which holds its mass properties).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Body {
     /// Name.
     pub name: String,
-    /// Mass [kg].
-    pub mass: f64,
-    /// Moment of inertia about the centre of mass [kg m^2].
-    pub inertia: f64,
+    /// Kind and mass properties.
+    pub kind: BodyKind,
 }
 
 /// What an element owning constraint equations is.
@@ -62,11 +62,12 @@ pub struct Model {
     pub bodies: Vec<Body>,
     /// Names of the named points of every body (`"crank.A"`) and their body-frame coordinates.
     pub points: Vec<(String, BodyIndex, Vec2)>,
+    /// Where every body's coordinates and every element's states sit in `y = [q, v, z]`.
+    pub layout: StateLayout,
     /// Gravitational acceleration [m/s^2].
     pub gravity: Vec2,
-    /// Masses of the bodies in order [kg].
-    pub masses: Vec<f64>,
-    /// Diagonal of `M^-1` in coordinate order [1/kg, 1/kg, 1/(kg m^2)].
+    /// Diagonal of `M^-1` over all velocity coordinates, from the bodies'
+    /// constant diagonal mass blocks [1/kg, 1/(kg m^2)].
     pub inverse_mass: Vec<f64>,
     /// Constraints: the dynamic ones first, then the assembly locks of the clearance joints.
     pub constraints: Vec<Constraint>,
@@ -76,8 +77,8 @@ pub struct Model {
     pub row_offsets: Vec<usize>,
     /// Owner (index into `elements`) of every equation row.
     pub row_owner: Vec<usize>,
-    /// For each equation row, the coordinate triple (body index - 1) of its first and of its
-    /// second body, in the order of the row's Jacobian blocks; `usize::MAX` for the ground.
+    /// For each equation row, the first velocity coordinate (see [`StateLayout`]) of its first
+    /// and of its second body, in the order of the row's Jacobian blocks; `usize::MAX` for the ground.
     pub row_bodies: Vec<[usize; 2]>,
     /// The terms of `Phi_q M^-1 Phi_q^T` over all rows, rows in ascending order (see [`SchurTerm`]).
     pub schur_terms: Vec<SchurTerm>,
@@ -97,13 +98,15 @@ pub struct Model {
     pub initial_coordinates: Vec<f64>,
     /// Approximate initial velocities from the description.
     pub initial_velocities: Vec<f64>,
+    /// Initial continuous element states `z` (chamber pressures [Pa], ...).
+    pub initial_element_states: Vec<f64>,
     /// Output channels, in recording order.
     pub(crate) channels: Vec<Channel>,
 }
 
 /// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)`, `a >= b`, of
-/// `Phi_q M^-1 Phi_q^T`, by indices of Jacobian blocks and coordinate triples
-/// (32-bit: the terms are read at every evaluation).
+/// `Phi_q M^-1 Phi_q^T`, by indices of Jacobian blocks and the body's first
+/// velocity coordinate (32-bit: the terms are read at every evaluation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SchurTerm {
     /// Row a.
@@ -116,14 +119,14 @@ pub struct SchurTerm {
     pub first: u32,
     /// Row b's block for the body: `2 b + slot`.
     pub second: u32,
-    /// The body's coordinate triple (in `M^-1`).
+    /// The body's first velocity coordinate (in `M^-1`).
     pub body: u32,
 }
 
 impl Model {
-    /// Number of generalised coordinates.
-    pub fn n_coordinates(&self) -> usize {
-        3 * self.bodies.len()
+    /// Number of velocity coordinates (the size of `M`, of `Q` and of `q_ddot`).
+    pub fn n_velocities(&self) -> usize {
+        self.layout.nv
     }
 
     /// Number of constraint equations active during the simulation.
@@ -136,10 +139,10 @@ impl Model {
         *self.row_offsets.last().unwrap_or(&0)
     }
 
-    /// Degrees of freedom (coordinates minus simulation equations; the two
-    /// relative freedoms of each clearance joint are counted).
+    /// Degrees of freedom (velocity coordinates minus simulation equations; the
+    /// two relative freedoms of each clearance joint are counted).
     pub fn degrees_of_freedom(&self) -> i64 {
-        self.n_coordinates() as i64 - self.n_dynamic_equations() as i64
+        self.n_velocities() as i64 - self.n_dynamic_equations() as i64
     }
 
     /// Whether some clearance joint carries a film (its samples need the detailed film outputs).

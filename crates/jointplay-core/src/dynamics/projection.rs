@@ -29,7 +29,6 @@ pub(crate) fn project_positions(
     max_iterations: usize,
     ws: &mut Workspace,
 ) -> Result<usize, SimulationError> {
-    let n = model.n_coordinates();
     let rows = model.row_offsets[n_constraints];
     if rows == 0 {
         return Ok(0);
@@ -60,8 +59,12 @@ pub(crate) fn project_positions(
         ws.multipliers[..rows].copy_from_slice(&ws.residual[..rows]);
         solve_in_multipliers(model, rows, ws);
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
-        for k in 0..n {
-            q[k] -= model.inverse_mass[k] * ws.scratch[k];
+        // the step -M^-1 Phi_q^T lambda in velocity coordinates, taken by each body
+        for (s, w) in ws.scratch.iter_mut().zip(&model.inverse_mass) {
+            *s *= -w;
+        }
+        for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
+            body.kind.displace(&mut q[address.q_range()], &ws.scratch[address.v_range()]);
         }
         if ws.factor_kind == FactorKind::Spectral {
             // at a singular position Newton converges only linearly (by about half per step)
@@ -91,7 +94,6 @@ pub(crate) fn project_velocities(
     tolerance: f64,
     ws: &mut Workspace,
 ) -> Result<(), SimulationError> {
-    let n = model.n_coordinates();
     let rows = model.row_offsets[n_constraints];
     if rows == 0 {
         return Ok(());
@@ -103,8 +105,8 @@ pub(crate) fn project_velocities(
     factor_constraint_matrix_at(model, rows, t, q, ws)?;
     solve_in_multipliers(model, rows, ws);
     jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
-    for k in 0..n {
-        qdot[k] -= model.inverse_mass[k] * ws.scratch[k];
+    for ((v, w), s) in qdot.iter_mut().zip(&model.inverse_mass).zip(&ws.scratch) {
+        *v -= w * s;
     }
     Ok(())
 }

@@ -38,9 +38,9 @@ impl ConstraintRank {
 
 /// Rank of the dynamic constraint equations of `model` at `state`.
 pub fn constraint_rank(model: &Model, state: &State, ws: &mut Workspace) -> ConstraintRank {
-    let n = model.n_coordinates();
-    let (q, qdot) = state.y[..2 * n].split_at(n);
-    update_frames(model, q, qdot, &mut ws.frames);
+    let n = model.n_velocities();
+    let (q, v, _) = model.layout.split(&state.y);
+    update_frames(model, q, v, &mut ws.frames);
     let rows = linearise_constraints(model, model.n_dynamic_constraints, state.time, ws);
     if rows == 0 {
         return ConstraintRank::default();
@@ -69,8 +69,9 @@ pub fn constraint_rank(model: &Model, state: &State, ws: &mut Workspace) -> Cons
 }
 
 /// Entry (r, k) of the constraint Jacobian, from the row's body blocks.
-fn jacobian_entry(model: &Model, ws: &Workspace, r: usize, k: usize) -> f64 {
-    ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, body)| body == k / 3).map(|(block, _)| block[k % 3]).sum()
+pub(crate) fn jacobian_entry(model: &Model, ws: &Workspace, r: usize, k: usize) -> f64 {
+    // (a block covers the three velocity coordinates from its body's first one)
+    ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, first)| first != usize::MAX && (first..first + 3).contains(&k)).map(|(block, first)| block[k - first]).sum()
 }
 
 #[cfg(test)]

@@ -138,7 +138,7 @@ pub fn simulate_with_sink(
 /// acceleration of every named point of a moving body and of every clearance joint.
 fn new_tracking(model: &Model, len: usize) -> Tracking {
     let channels: Vec<usize> = (0..model.channels.len()).filter(|&c| is_peak_unit(model.channels[c].info.unit)).collect();
-    let points: Vec<(BodyIndex, Vec2)> = model.points.iter().filter(|p| p.1.coordinate().is_some()).map(|p| (p.1, p.2)).collect();
+    let points: Vec<(BodyIndex, Vec2)> = model.points.iter().filter(|p| !p.1.is_ground()).map(|p| (p.1, p.2)).collect();
     Tracking {
         tracker: ExtremaTracker::new(channels.len() + points.len(), model.clearance_joints.len()),
         channels,
@@ -150,7 +150,7 @@ fn new_tracking(model: &Model, len: usize) -> Tracking {
 
 /// The tracked summary with the names of its channels and joints.
 fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], impacts: &[usize]) -> Extrema {
-    let points = model.points.iter().filter(|p| p.1.coordinate().is_some()).map(|p| (p.0.clone(), "m/s^2"));
+    let points = model.points.iter().filter(|p| !p.1.is_ground()).map(|p| (p.0.clone(), "m/s^2"));
     let names: Vec<(String, &'static str)> =
         channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).chain(points).collect();
     let joints: Vec<(String, usize, bool, f64)> = (0..model.clearance_joints.len())

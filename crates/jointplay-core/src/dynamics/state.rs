@@ -16,20 +16,37 @@ pub struct ContactMemory {
 pub struct State {
     /// Time [s].
     pub time: f64,
-    /// `[q, q_dot]`: coordinates `(x, y, phi)` per body [m, rad] then their rates [m/s, rad/s].
+    /// `[q, v, z]` laid out as [`super::StateLayout`] says: position coordinates
+    /// (`(x, y, phi)` per planar body [m, rad]), velocity coordinates [m/s, rad/s],
+    /// continuous element states (chamber pressures [Pa], ...).
     pub y: Vec<f64>,
     /// Memory of each clearance joint, in model order.
     pub contacts: Vec<ContactMemory>,
+    /// Lengths of `q` and `v` in `y`.
+    split: (usize, usize),
 }
 
 impl State {
-    /// Coordinates `q`.
-    pub fn coordinates(&self) -> &[f64] {
-        &self.y[..self.y.len() / 2]
+    /// State of `model` at time `t` [s] with `y` laid out as its [`super::StateLayout`]
+    /// and every clearance joint free of contact memory.
+    pub fn new(model: &super::Model, time: f64, y: Vec<f64>) -> Self {
+        debug_assert_eq!(y.len(), model.layout.len());
+        let contacts = vec![ContactMemory::default(); model.clearance_joints.len()];
+        Self { time, y, contacts, split: (model.layout.nq, model.layout.nv) }
     }
 
-    /// Velocities `q_dot`.
+    /// Position coordinates `q`.
+    pub fn coordinates(&self) -> &[f64] {
+        &self.y[..self.split.0]
+    }
+
+    /// Velocity coordinates `v`.
     pub fn velocities(&self) -> &[f64] {
-        &self.y[self.y.len() / 2..]
+        &self.y[self.split.0..self.split.0 + self.split.1]
+    }
+
+    /// Continuous element states `z`.
+    pub fn element_states(&self) -> &[f64] {
+        &self.y[self.split.0 + self.split.1..]
     }
 }

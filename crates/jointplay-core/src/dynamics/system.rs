@@ -6,7 +6,7 @@ use super::channels::{update_constraint_forces, value};
 use super::extrema::{ExtremaTracker, StepProbe};
 use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
-use super::frame::{perp, BodyIndex, Frame, Vec2};
+use super::frame::{BodyIndex, Vec2};
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::state::ContactMemory;
@@ -98,10 +98,10 @@ impl MechanismSystem<'_> {
     /// Latches or clears the onset velocity from the accepted state and checks
     /// the penetration bound; true when some onset velocity was latched or cleared.
     pub(crate) fn update_contact_memory(&mut self, t: f64, y: &[f64]) -> Result<bool, SimulationError> {
-        let n = self.model.n_coordinates();
         if !self.step_end.holds_evaluation(t, y) {
             // (the frames of the evaluation at this very state are already there)
-            update_frames(self.model, &y[..n], &y[n..], &mut self.ws.frames);
+            let (q, v, _) = self.model.layout.split(y);
+            update_frames(self.model, q, v, &mut self.ws.frames);
         }
         let mut changed = false;
         for (k, joint) in self.model.clearance_joints.iter().enumerate() {
@@ -137,9 +137,8 @@ impl MechanismSystem<'_> {
     /// workspace no longer holds the last evaluation afterwards).
     fn project_state(&mut self, t: f64, y: &mut [f64]) -> Result<(), SimulationError> {
         self.step_end.evaluated_at = None;
-        let n = self.model.n_coordinates();
         let m = self.model.n_dynamic_constraints;
-        let (q, qdot) = y.split_at_mut(n);
+        let (q, qdot, _) = self.model.layout.split_mut(y);
         let iterations = project_positions(self.model, m, t, q, self.options.position_tolerance, PROJECTION_ITERATIONS, self.ws)?;
         self.diagnostics.max_projection_iterations = self.diagnostics.max_projection_iterations.max(iterations);
         project_velocities(self.model, m, t, q, qdot, self.options.position_tolerance, self.ws)
@@ -151,12 +150,13 @@ impl MechanismSystem<'_> {
     /// only frames the event functions read), in their own buffer so that
     /// the workspace keeps the last evaluation.
     fn update_clearance_frames(&mut self, y: &[f64]) {
-        let n = self.model.n_coordinates();
+        let (q, v, _) = self.model.layout.split(y);
         for joint in &self.model.clearance_joints {
             for body in [joint.bearing.body, joint.journal.body] {
-                if let Some(c) = body.coordinate() {
+                if let Some(address) = self.model.layout.body(body) {
                     // (at a step end the evaluation there has the same angle)
-                    self.ws.event_frames[body.0] = Frame::from_coordinates_after(&self.ws.frames[body.0], &y[c..c + 3], &y[n + c..n + c + 3]);
+                    let kind = &self.model.bodies[body.0 - 1].kind;
+                    self.ws.event_frames[body.0] = kind.frame(&q[address.q_range()], &v[address.v_range()], &self.ws.frames[body.0]);
                 }
             }
         }
@@ -165,23 +165,36 @@ impl MechanismSystem<'_> {
 
 impl OdeSystem for MechanismSystem<'_> {
     fn len(&self) -> usize {
-        2 * self.model.n_coordinates()
+        self.model.layout.len()
     }
 
     fn rhs(&mut self, t: f64, y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError> {
-        let n = self.model.n_coordinates();
         // the state of the evaluation the workspace still holds (a sample just recorded
         // there, or a restart at the state just evaluated): reuse it
         if !self.step_end.holds_evaluation(t, y) {
             self.step_end.evaluated_at = None;
-            accelerations(self.model, self.memory, t, &y[..n], &y[n..], self.options.stabilization, self.ws)?;
+            accelerations(self.model, self.memory, t, y, self.options.stabilization, self.ws)?;
         }
-        dydt[..n].copy_from_slice(&y[n..]);
-        dydt[n..].copy_from_slice(&self.ws.accelerations);
+        let layout = &self.model.layout;
+        let (q, v, _) = layout.split(y);
+        let (qdot, vdot, zdot) = layout.split_mut(dydt);
+        for (body, address) in self.model.bodies.iter().zip(&layout.bodies) {
+            body.kind.position_rates(&q[address.q_range()], &v[address.v_range()], &mut qdot[address.q_range()]);
+        }
+        vdot.copy_from_slice(&self.ws.accelerations);
+        zdot.copy_from_slice(&self.ws.element_state_rates);
         if self.step_end.evaluated_at.is_none() {
             self.step_end.remember_evaluation(t, y, false);
         }
         Ok(())
+    }
+
+    fn absolute_tolerance_scales(&self, scales: &mut [f64]) {
+        let layout = &self.model.layout;
+        let (q, v, _) = layout.split_mut(scales);
+        for (body, address) in self.model.bodies.iter().zip(&layout.bodies) {
+            body.kind.tolerance_scales(&mut q[address.q_range()], &mut v[address.v_range()]);
+        }
     }
 
     fn n_events(&self) -> usize {
@@ -206,8 +219,8 @@ impl OdeSystem for MechanismSystem<'_> {
 
     fn on_event(&mut self, _t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {
         self.step_end.evaluated_at = None;
-        let n = self.model.n_coordinates();
-        update_frames(self.model, &y[..n], &y[n..], &mut self.ws.frames);
+        let (q, v, _) = self.model.layout.split(y);
+        update_frames(self.model, q, v, &mut self.ws.frames);
         let joint = &self.model.clearance_joints[event];
         self.memory[event].onset_velocity = Some(joint.onset_velocity(&self.ws.frames));
         self.memory[event].impacts += 1;
@@ -279,7 +292,6 @@ impl MechanismSystem<'_> {
     /// holds the evaluation and `ws.sample` the state it was made at.
     fn evaluate_sample(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         self.step_end.evaluated_at = None;
-        let n = self.model.n_coordinates();
         // samples between steps come from dense output: project them like the steps
         // (a sample at the step just accepted was projected by accept())
         let mut sample = std::mem::take(&mut self.ws.sample);
@@ -290,7 +302,7 @@ impl MechanismSystem<'_> {
         }
         if evaluated.is_ok() {
             self.ws.detailed = true;
-            evaluated = accelerations(self.model, self.memory, t, &sample[..n], &sample[n..], self.options.stabilization, self.ws);
+            evaluated = accelerations(self.model, self.memory, t, &sample, self.options.stabilization, self.ws);
             self.ws.detailed = false;
         }
         if evaluated.is_ok() {
@@ -326,7 +338,7 @@ impl MechanismSystem<'_> {
             *v = value(self.model, self.model.channels[c].source, state, ws, [f64::NAN; 2]);
         }
         for (v, &(body, local)) in points.iter_mut().zip(&self.tracking.points) {
-            *v = point_acceleration(ws, body, local);
+            *v = point_acceleration(self.model, ws, body, local);
         }
     }
 }
@@ -396,13 +408,10 @@ impl MechanismSystem<'_> {
     }
 }
 
-/// Acceleration magnitude [m/s^2] of the point `local` [m] (body frame) of a
-/// moving body from an evaluated workspace: `|a_G + alpha perp(r) - omega^2 r|`.
-fn point_acceleration(ws: &Workspace, body: BodyIndex, local: Vec2) -> f64 {
-    let Some(c) = body.coordinate() else { return 0.0 };
-    let frame = &ws.frames[body.0];
-    let r = frame.rotate(local);
-    let a = ws.accelerations.as_slice();
-    let omega = frame.angular_velocity;
-    (Vec2::new(a[c], a[c + 1]) + perp(r) * a[c + 2] - r * (omega * omega)).norm()
+/// Acceleration magnitude [m/s^2] of the marker point `local` [m] (body frame)
+/// of a moving body from an evaluated workspace.
+fn point_acceleration(model: &Model, ws: &Workspace, body: BodyIndex, local: Vec2) -> f64 {
+    let Some(address) = model.layout.body(body) else { return 0.0 };
+    let kind = &model.bodies[body.0 - 1].kind;
+    kind.marker_acceleration(&ws.frames[body.0], &ws.accelerations[address.v_range()], local).norm()
 }

@@ -7,6 +7,12 @@ use crate::integrate::IntegratorOptions;
 use crate::spec::ModelSpec;
 use std::f64::consts::PI;
 
+/// [`accelerations`] at positions `q` and velocities `v` (no element states).
+fn accelerations_at(model: &Model, memory: &[ContactMemory], t: f64, q: &[f64], v: &[f64], stabilization: Stabilization, ws: &mut Workspace) -> Result<(), crate::SimulationError> {
+    let y: Vec<f64> = q.iter().chain(v).chain(&model.initial_element_states).copied().collect();
+    accelerations(model, memory, t, &y, stabilization, ws)
+}
+
 fn model(json: &str) -> Model {
     let spec: ModelSpec = serde_json::from_str(json).expect("valid json spec");
     compile(&spec).unwrap_or_else(|e| panic!("{e}"))
@@ -312,9 +318,9 @@ fn a_redundant_pin_runs_and_shares_the_reaction_by_minimum_norm() {
     for (a, b) in s1.y.iter().zip(&s2.y) {
         assert!((a - b).abs() < 1e-12, "{a} vs {b}");
     }
-    let n = single.n_coordinates();
-    accelerations(&single, &[], 0.0, &s1.y[..n], &s1.y[n..], Stabilization::Projection, &mut ws1).unwrap();
-    accelerations(&double, &[], 0.0, &s2.y[..n], &s2.y[n..], Stabilization::Projection, &mut ws2).unwrap();
+    let n = single.n_velocities();
+    accelerations_at(&single, &[], 0.0, &s1.y[..n], &s1.y[n..], Stabilization::Projection, &mut ws1).unwrap();
+    accelerations_at(&double, &[], 0.0, &s2.y[..n], &s2.y[n..], Stabilization::Projection, &mut ws2).unwrap();
     assert!(ws2.singular_solves > 0, "the dependent rows take the singular path");
     // same motion; the single pin's reaction split equally (the minimum-norm multipliers)
     for k in 0..n {
@@ -401,7 +407,7 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
     let outcome = simulate(&model, &mut state, 0.012, &SimulationOptions::default(), None);
     assert!(outcome.error.is_none(), "{:?}", outcome.error);
     let trajectory = &outcome.trajectory;
-    let n = model.n_coordinates();
+    let n = model.n_velocities();
     let contact_channel = trajectory.channels.iter().position(|c| c.name == "B.contact").expect("B.contact");
     let (mut checked, mut in_contact) = (0, 0);
     for k in 0..trajectory.time.len() {
@@ -409,7 +415,7 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
             in_contact += 1; // the contact force depends on the latched onset velocity, not recorded
             continue;
         }
-        let mut y = vec![0.0; 2 * n];
+        let mut y = vec![0.0; model.layout.len()];
         for (c, channel) in model.channels.iter().enumerate() {
             match channel.source {
                 channels::Source::Coordinate(i) => y[i] = trajectory.value(c, k),
@@ -420,7 +426,7 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
         let t = trajectory.time[k];
         let mut fresh_ws = Workspace::new(&model);
         let memory = vec![ContactMemory::default(); model.clearance_joints.len()];
-        accelerations(&model, &memory, t, &y[..n], &y[n..], Stabilization::Projection, &mut fresh_ws).unwrap();
+        accelerations(&model, &memory, t, &y, Stabilization::Projection, &mut fresh_ws).unwrap();
         let mut fresh = Trajectory::new(&model);
         fresh.push(&model, t, &y, &mut fresh_ws).unwrap();
         for (c, info) in trajectory.channels.iter().enumerate() {
@@ -439,13 +445,13 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
 #[test]
 fn a_kept_constraint_factor_is_reused_only_at_the_same_time_and_positions() {
     let model = clearance_slider_crank();
-    let n = model.n_coordinates();
+    let n = model.n_velocities();
     let mut ws = Workspace::new(&model);
     let state = assemble(&model, 0.0, &mut ws).unwrap();
     let memory = vec![ContactMemory::default(); model.clearance_joints.len()];
     let fresh = |t: f64, q: &[f64], v: &[f64]| {
         let mut ws = Workspace::new(&model);
-        accelerations(&model, &memory, t, q, v, Stabilization::Projection, &mut ws).unwrap();
+        accelerations_at(&model, &memory, t, q, v, Stabilization::Projection, &mut ws).unwrap();
         ws.accelerations
     };
     let (q, v) = (state.y[..n].to_vec(), state.y[n..].to_vec());
@@ -453,21 +459,17 @@ fn a_kept_constraint_factor_is_reused_only_at_the_same_time_and_positions() {
     moved[3] += 1e-3; // the rod's x: another configuration at the same time
     let slower: Vec<f64> = v.iter().map(|x| 0.5 * x).collect();
     // same time and positions, other velocities: the factor is reused, and the result is exact
-    accelerations(&model, &memory, 1e-3, &q, &v, Stabilization::Projection, &mut ws).unwrap();
-    accelerations(&model, &memory, 1e-3, &q, &slower, Stabilization::Projection, &mut ws).unwrap();
+    accelerations_at(&model, &memory, 1e-3, &q, &v, Stabilization::Projection, &mut ws).unwrap();
+    accelerations_at(&model, &memory, 1e-3, &q, &slower, Stabilization::Projection, &mut ws).unwrap();
     assert_eq!(ws.factored_at, Some((1e-3, model.row_offsets[model.n_dynamic_constraints])));
     assert_eq!(ws.accelerations, fresh(1e-3, &q, &slower));
     // same time, other positions: factored anew
-    accelerations(&model, &memory, 1e-3, &moved, &v, Stabilization::Projection, &mut ws).unwrap();
+    accelerations_at(&model, &memory, 1e-3, &moved, &v, Stabilization::Projection, &mut ws).unwrap();
     assert_eq!(ws.accelerations, fresh(1e-3, &moved, &v));
     assert_eq!(ws.factored_positions, moved);
 }
 
 /// Entry (r, k) of the dense constraint Jacobian, from the row's body blocks.
-fn jacobian_entry(model: &Model, ws: &Workspace, r: usize, k: usize) -> f64 {
-    ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, triple)| triple == k / 3).map(|(block, _)| block[k % 3]).sum()
-}
-
 #[test]
 fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_the_dense_kernel() {
     // rows O (2), A (2) and the driver share the crank; the guide's two rows only the slider
@@ -478,8 +480,8 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     assert!(matches!(model.schur_factor, crate::linalg::PatternLdl::Groups(_)), "a group of 5 rows and one of 2");
     let mut ws = Workspace::new(&model);
     let state = assemble(&model, 0.0, &mut ws).unwrap();
-    let n = model.n_coordinates();
-    update_frames(&model, &state.y[..n], &state.y[n..], &mut ws.frames);
+    let n = model.n_velocities();
+    update_frames(&model, state.coordinates(), state.velocities(), &mut ws.frames);
     equations::linearise_constraints(&model, model.n_dynamic_constraints, 0.0, &mut ws);
     assert_eq!(super::constraint_solution::factor(&model, rows, &mut ws).unwrap(), super::constraint_solution::FactorKind::Pattern);
     let sparse = ws.schur[..rows * (rows + 1)].to_vec();
@@ -487,7 +489,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     let mut dense = vec![0.0; rows * rows];
     for a in 0..rows {
         for b in 0..=a {
-            dense[a * rows + b] = (0..n).map(|k| jacobian_entry(&model, &ws, a, k) * model.inverse_mass[k] * jacobian_entry(&model, &ws, b, k)).sum();
+            dense[a * rows + b] = (0..n).map(|k| redundancy::jacobian_entry(&model, &ws, a, k) * model.inverse_mass[k] * redundancy::jacobian_entry(&model, &ws, b, k)).sum();
         }
     }
     crate::linalg::cholesky_factor(&mut dense, rows).unwrap();

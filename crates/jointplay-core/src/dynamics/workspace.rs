@@ -14,7 +14,7 @@ pub struct Workspace {
     pub frames: Vec<Frame>,
     /// Frames the event functions work in (only the clearance joints' bodies are kept current).
     pub event_frames: Vec<Frame>,
-    /// Generalised applied force `Q`.
+    /// Generalised applied force `Q` over the velocity coordinates.
     pub generalised_force: Vec<f64>,
     /// Constraint Jacobian `Phi_q` by rows and bodies (all rows including assembly locks).
     pub jacobian: Vec<RowJacobian>,
@@ -43,9 +43,11 @@ pub struct Workspace {
     pub factored_positions: Vec<f64>,
     /// Lagrange multipliers `lambda`.
     pub multipliers: Vec<f64>,
-    /// Generalised accelerations `q_ddot`.
+    /// Accelerations of the velocity coordinates `v_dot`.
     pub accelerations: Vec<f64>,
-    /// Scratch vector of coordinate length.
+    /// Rates of the continuous element states `z_dot` [Pa/s, ...].
+    pub element_state_rates: Vec<f64>,
+    /// Scratch vector of velocity length.
     pub scratch: Vec<f64>,
     /// Copy of the state for an output sample, projected before it is recorded.
     pub sample: Vec<f64>,
@@ -67,7 +69,7 @@ pub struct Workspace {
 impl Workspace {
     /// Buffers for `model`.
     pub fn new(model: &Model) -> Self {
-        let n = model.n_coordinates();
+        let n = model.n_velocities();
         let m = model.n_assembly_equations();
         Self {
             frames: vec![Frame::GROUND; model.bodies.len() + 1],
@@ -84,11 +86,12 @@ impl Workspace {
             solve_scratch: vec![0.0; m],
             singular_solves: 0,
             factored_at: None,
-            factored_positions: vec![0.0; n],
+            factored_positions: vec![0.0; model.layout.nq],
             multipliers: vec![0.0; m],
             accelerations: vec![0.0; n],
             scratch: vec![0.0; n],
-            sample: vec![0.0; 2 * n],
+            sample: vec![0.0; model.layout.len()],
+            element_state_rates: vec![0.0; model.layout.nz],
             contacts: vec![ContactEvaluation::default(); model.clearance_joints.len()],
             films: vec![FilmEvaluation::default(); model.clearance_joints.len()],
             film_solvers: model.clearance_joints.iter().map(|j| j.lubrication.as_ref().and_then(|l| l.new_solver())).collect(),

@@ -1,19 +1,19 @@
-//! Force elements: gravity, springs and dampers, prescribed loads. Each
-//! adds its generalised force to `Q` and reports a few outputs.
+//! Force elements: springs and dampers, prescribed loads. Each adds its
+//! generalised force to `Q` through [`GeneralisedForces`] (it never indexes
+//! coordinates) and reports a few outputs. Gravity is a body load (`crate::body`).
 
-mod gravity;
 mod point_force;
 mod rotational_spring_damper;
 mod spring_damper;
 mod torque;
 
-pub use gravity::{gravity_generalised_force, gravity_potential_energy};
 pub use point_force::PointForce;
 pub use rotational_spring_damper::RotationalSpringDamper;
 pub use spring_damper::SpringDamper;
 pub use torque::AppliedTorque;
 
 use crate::dynamics::frame::Frame;
+use crate::dynamics::GeneralisedForces;
 
 /// Outputs of one force element at one evaluation.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -40,13 +40,13 @@ pub enum ForceElement {
 }
 
 impl ForceElement {
-    /// Adds the element's generalised force to `generalised` and returns its outputs.
-    pub fn apply(&self, frames: &[Frame], t: f64, generalised: &mut [f64]) -> ForceOutput {
+    /// Adds the element's generalised force to `forces` and returns its outputs.
+    pub fn apply(&self, frames: &[Frame], t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
         match self {
-            Self::SpringDamper(e) => e.apply(frames, generalised),
-            Self::RotationalSpringDamper(e) => e.apply(frames, generalised),
-            Self::PointForce(e) => e.apply(frames, t, generalised),
-            Self::Torque(e) => e.apply(t, generalised),
+            Self::SpringDamper(e) => e.apply(frames, forces),
+            Self::RotationalSpringDamper(e) => e.apply(frames, forces),
+            Self::PointForce(e) => e.apply(frames, t, forces),
+            Self::Torque(e) => e.apply(t, forces),
         }
     }
 }

@@ -1,14 +1,15 @@
 //! A prescribed force at a body point, global components as functions of time.
 
 use super::ForceOutput;
-use crate::dynamics::frame::{add_point_force, BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{Frame, Marker, Vec2};
+use crate::dynamics::GeneralisedForces;
 use crate::motion::TimeFunction;
 
 /// Force `(f_x(t), f_y(t))` [N] applied at a point.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PointForce {
     /// Point of application.
-    pub point: BodyPoint,
+    pub point: Marker,
     /// x component [N].
     pub fx: TimeFunction,
     /// y component [N].
@@ -17,10 +18,10 @@ pub struct PointForce {
 
 impl PointForce {
     /// Applies the force; outputs its components [N].
-    pub fn apply(&self, frames: &[Frame], t: f64, generalised: &mut [f64]) -> ForceOutput {
+    pub fn apply(&self, frames: &[Frame], t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
         let frame = &frames[self.point.body.0];
         let f = Vec2::new(self.fx.sample(t).value, self.fy.sample(t).value);
-        add_point_force(generalised, frame, self.point.body, frame.point(self.point.local), f);
+        forces.add_point_force(self.point.body, frame, frame.point(self.point.local), f);
         ForceOutput { primary: f.x, secondary: f.y, potential_energy: 0.0 }
     }
 }

@@ -4,6 +4,7 @@
 
 use super::ForceOutput;
 use crate::dynamics::frame::{BodyIndex, Frame};
+use crate::dynamics::GeneralisedForces;
 
 /// Torsional spring and damper.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,17 +23,13 @@ pub struct RotationalSpringDamper {
 
 impl RotationalSpringDamper {
     /// Applies the torque pair; outputs torque on the second body [N m] and relative angle [rad].
-    pub fn apply(&self, frames: &[Frame], generalised: &mut [f64]) -> ForceOutput {
+    pub fn apply(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
         let (fi, fj) = (&frames[self.first.0], &frames[self.second.0]);
         let theta = fj.angle - fi.angle - self.free_angle;
         let theta_dot = fj.angular_velocity - fi.angular_velocity;
         let torque = -self.stiffness * theta - self.damping * theta_dot;
-        if let Some(c) = self.second.coordinate() {
-            generalised[c + 2] += torque;
-        }
-        if let Some(c) = self.first.coordinate() {
-            generalised[c + 2] -= torque;
-        }
+        forces.add_moment(self.second, torque);
+        forces.add_moment(self.first, -torque);
         ForceOutput { primary: torque, secondary: theta + self.free_angle, potential_energy: 0.5 * self.stiffness * theta * theta }
     }
 }

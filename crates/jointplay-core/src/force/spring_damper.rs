@@ -2,15 +2,16 @@
 //! tension `F = k (l - l0) + c l_dot`, pulling the points together.
 
 use super::ForceOutput;
-use crate::dynamics::frame::{add_point_force, BodyPoint, Frame};
+use crate::dynamics::frame::{Frame, Marker};
+use crate::dynamics::GeneralisedForces;
 
 /// Point-to-point spring and damper.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SpringDamper {
     /// Point on the first body.
-    pub first: BodyPoint,
+    pub first: Marker,
     /// Point on the second body.
-    pub second: BodyPoint,
+    pub second: Marker,
     /// Stiffness k [N/m].
     pub stiffness: f64,
     /// Damping coefficient c [N s/m].
@@ -21,7 +22,7 @@ pub struct SpringDamper {
 
 impl SpringDamper {
     /// Applies the tension to both points; outputs tension [N] and length [m].
-    pub fn apply(&self, frames: &[Frame], generalised: &mut [f64]) -> ForceOutput {
+    pub fn apply(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
         let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
         let (pi, pj) = (fi.point(self.first.local), fj.point(self.second.local));
         let d = pj - pi;
@@ -34,8 +35,8 @@ impl SpringDamper {
         let u = d / length;
         let length_rate = u.dot(&(fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local)));
         let tension = self.stiffness * stretch + self.damping * length_rate;
-        add_point_force(generalised, fi, self.first.body, pi, u * tension);
-        add_point_force(generalised, fj, self.second.body, pj, -u * tension);
+        forces.add_point_force(self.first.body, fi, pi, u * tension);
+        forces.add_point_force(self.second.body, fj, pj, -u * tension);
         ForceOutput { primary: tension, secondary: length, potential_energy }
     }
 }

@@ -2,6 +2,7 @@
 
 use super::ForceOutput;
 use crate::dynamics::frame::BodyIndex;
+use crate::dynamics::GeneralisedForces;
 use crate::motion::TimeFunction;
 
 /// Torque `T(t)` [N m], counter-clockwise positive.
@@ -15,11 +16,9 @@ pub struct AppliedTorque {
 
 impl AppliedTorque {
     /// Applies the torque; outputs it [N m].
-    pub fn apply(&self, t: f64, generalised: &mut [f64]) -> ForceOutput {
+    pub fn apply(&self, t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
         let torque = self.torque.sample(t).value;
-        if let Some(c) = self.body.coordinate() {
-            generalised[c + 2] += torque;
-        }
+        forces.add_moment(self.body, torque);
         ForceOutput { primary: torque, secondary: 0.0, potential_energy: 0.0 }
     }
 }

@@ -13,7 +13,7 @@
 //! After a (re)start the order ramps from 1 up to [`MAX_ORDER`] as history
 //! accumulates; two rejections in a row drop the history back to order 1.
 
-use super::control::{error_norm, eval, eval_start, starting_step, StartScratch, StepController};
+use super::control::{error_norm, Tolerances, eval, eval_start, starting_step, StartScratch, StepController};
 use super::polynomial::{integral, lagrange_basis, node_product_integral, Poly, MAX_NODES};
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
@@ -28,6 +28,8 @@ const REJECTIONS_BEFORE_ORDER_DROP: usize = 2;
 /// Adams PECE stepper with its derivative history and dense-output data.
 pub(crate) struct Adams {
     opts: IntegratorOptions,
+    /// Relative and per-component absolute tolerances.
+    tol: Tolerances,
     /// Past derivatives, index 0 the most recent (at the current time).
     history_f: Vec<Vec<f64>>,
     /// Times of the past derivatives [s].
@@ -53,10 +55,11 @@ pub(crate) struct Adams {
 
 impl Adams {
     /// Allocates every buffer for a state of `n` components.
-    pub(crate) fn new(n: usize, opts: &IntegratorOptions) -> Self {
+    pub(crate) fn new(n: usize, opts: &IntegratorOptions, tol: Tolerances) -> Self {
         let v = || vec![0.0; n];
         Self {
             opts: opts.clone(),
+            tol,
             history_f: (0..MAX_ORDER).map(|_| v()).collect(),
             history_t: [0.0; MAX_ORDER],
             history_len: 0,
@@ -146,7 +149,7 @@ impl Stepper for Adams {
         }
         // order-1 starting step (local error O(h^2)), capped by the caller's proposal
         let (f0, _) = self.history_f.split_at(1);
-        let h = starting_step(system, stats, t, y, &f0[0], 2.0, &self.opts, &mut self.scratch)?;
+        let h = starting_step(system, stats, t, y, &f0[0], 2.0, &self.opts, &self.tol, &mut self.scratch)?;
         Ok(h_hint.map_or(h, |hint| hint.min(h)))
     }
 
@@ -173,7 +176,7 @@ impl Stepper for Adams {
             self.y_pred[i] = self.y_new[i] - self.y_pred[i];
         }
         let milne = (cc / (cc - cp)).abs();
-        let err = error_norm(milne, &self.y_pred, y, &self.y_new, &self.opts);
+        let err = error_norm(milne, &self.y_pred, y, &self.y_new, &self.tol);
         let q = (k + 1) as f64;
         if err <= 1.0 {
             self.rejections_in_a_row = 0;

@@ -21,7 +21,7 @@
 //! Source: Shampine & Reichelt, "The MATLAB ODE Suite", SIAM J. Sci. Comput.
 //! 18 (1997) 1-22, Sections 2.1-2.3 (`docs/theory/integrator-ndf.md`).
 
-use super::control::{error_norm, eval, eval_start, starting_step, StartScratch};
+use super::control::{error_norm, Tolerances, eval, eval_start, starting_step, StartScratch};
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
 use crate::linalg::{lu_factor, lu_solve};
@@ -80,6 +80,8 @@ enum Newton {
 /// NDF stepper: difference array, Jacobian, iteration matrix and dense-output data.
 pub(crate) struct Ndf {
     opts: IntegratorOptions,
+    /// Relative and per-component absolute tolerances.
+    tol: Tolerances,
     n: usize,
     coefficients: Coefficients,
     /// Backward differences D_0..D_(k+2), row j at `j * n`.
@@ -116,10 +118,11 @@ pub(crate) struct Ndf {
 
 impl Ndf {
     /// Allocates every buffer for a state of `n` components.
-    pub(crate) fn new(n: usize, opts: &IntegratorOptions) -> Self {
+    pub(crate) fn new(n: usize, opts: &IntegratorOptions, tol: Tolerances) -> Self {
         let v = || vec![0.0; n];
         Self {
             opts: opts.clone(),
+            tol,
             n,
             coefficients: Coefficients::new(),
             differences: vec![0.0; DIFFERENCE_ROWS * n],
@@ -195,9 +198,9 @@ impl Ndf {
         let n = self.n;
         eval(system, stats, t, y, &mut self.f)?;
         // increments of sqrt(eps) relative to |y_j|, floored at the scale where atol takes over from rtol
-        let floor = (self.opts.atol / self.opts.rtol).max(f64::MIN_POSITIVE);
         self.delta.copy_from_slice(y);
         for j in 0..n {
+            let floor = (self.tol.atol[j] / self.tol.rtol).max(f64::MIN_POSITIVE);
             let step = f64::EPSILON.sqrt() * y[j].abs().max(floor);
             self.delta[j] = y[j] + step;
             let step = self.delta[j] - y[j];
@@ -250,7 +253,7 @@ impl Ndf {
                 self.delta[i] = c * self.f[i] - self.psi[i] - self.correction[i];
             }
             lu_solve(&self.iteration_matrix, n, &self.pivots, &mut self.delta);
-            let norm = error_norm(1.0, &self.delta, &self.y_predict, &self.y_predict, &self.opts);
+            let norm = error_norm(1.0, &self.delta, &self.y_predict, &self.y_predict, &self.tol);
             if !norm.is_finite() {
                 return Ok(Newton::Failed);
             }
@@ -322,7 +325,7 @@ impl Ndf {
     /// the largest next step, and that step's ratio to h.
     fn choose_order_and_step(&mut self, error: f64, safety: f64) -> f64 {
         let k = self.order;
-        let weighted = |this: &Self, j: usize, constant: f64| error_norm(constant, this.row(j), &this.y_new, &this.y_new, &this.opts);
+        let weighted = |this: &Self, j: usize, constant: f64| error_norm(constant, this.row(j), &this.y_new, &this.y_new, &this.tol);
         let lower = if k > 1 { weighted(self, k, self.coefficients.error_constant[k - 1]) } else { f64::INFINITY };
         let higher = if k < MAX_ORDER { weighted(self, k + 2, self.coefficients.error_constant[k + 1]) } else { f64::INFINITY };
         let candidates = [(k - 1, lower.powf(-1.0 / k as f64)), (k, error.powf(-1.0 / (k + 1) as f64)), (k + 1, higher.powf(-1.0 / (k + 2) as f64))];
@@ -364,7 +367,7 @@ impl Stepper for Ndf {
         started?;
         let h = match h_hint {
             Some(h) => h,
-            None => starting_step(system, stats, t, y, &self.f, 2.0, &self.opts, &mut self.scratch)?,
+            None => starting_step(system, stats, t, y, &self.f, 2.0, &self.opts, &self.tol, &mut self.scratch)?,
         };
         let n = self.n;
         self.differences.fill(0.0);
@@ -402,7 +405,7 @@ impl Stepper for Ndf {
         for i in 0..self.n {
             self.delta[i] = self.coefficients.error_constant[k] * self.correction[i];
         }
-        let error = error_norm(1.0, &self.delta, y, &self.y_new, &self.opts);
+        let error = error_norm(1.0, &self.delta, y, &self.y_new, &self.tol);
         if !(error <= 1.0) {
             let factor = if error.is_finite() { (safety * error.powf(-1.0 / (k + 1) as f64)).max(SHRINK_LIMIT) } else { SHRINK_LIMIT };
             return Ok(Attempt { accepted: false, h_next: h * factor.min(1.0) });

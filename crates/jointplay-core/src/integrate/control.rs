@@ -37,23 +37,46 @@ pub(crate) fn eval_start<S: OdeSystem>(
     Ok(())
 }
 
-/// RMS of `scale * err_i / (atol + rtol * max(|y_old_i|, |y_new_i|))`; 0 for an empty state.
-pub(crate) fn error_norm(scale: f64, err: &[f64], y_old: &[f64], y_new: &[f64], opts: &IntegratorOptions) -> f64 {
+/// The tolerances of the error norm: one relative tolerance, an absolute
+/// tolerance per component (the option's atol times the component's scale,
+/// [`OdeSystem::absolute_tolerance_scales`]).
+#[derive(Clone, Debug)]
+pub(crate) struct Tolerances {
+    /// Relative tolerance [-].
+    pub rtol: f64,
+    /// Absolute tolerance of each component [unit of the component].
+    pub atol: Vec<f64>,
+}
+
+impl Tolerances {
+    /// The tolerances of `opts` for `system`'s components.
+    pub(crate) fn new<S: OdeSystem>(system: &S, opts: &IntegratorOptions) -> Self {
+        let mut atol = vec![1.0; system.len()];
+        system.absolute_tolerance_scales(&mut atol);
+        for a in &mut atol {
+            *a *= opts.atol;
+        }
+        Self { rtol: opts.rtol, atol }
+    }
+}
+
+/// RMS of `scale * err_i / (atol_i + rtol * max(|y_old_i|, |y_new_i|))`; 0 for an empty state.
+pub(crate) fn error_norm(scale: f64, err: &[f64], y_old: &[f64], y_new: &[f64], tol: &Tolerances) -> f64 {
     if err.is_empty() {
         return 0.0;
     }
     let mut sum = 0.0;
     for i in 0..err.len() {
-        let sk = opts.atol + opts.rtol * y_old[i].abs().max(y_new[i].abs());
+        let sk = tol.atol[i] + tol.rtol * y_old[i].abs().max(y_new[i].abs());
         let r = scale * err[i] / sk;
         sum += r * r;
     }
     (sum / err.len() as f64).sqrt()
 }
 
-/// RMS of `v_i / (atol + rtol |y_i|)`.
-fn weighted_rms(v: &[f64], y: &[f64], opts: &IntegratorOptions) -> f64 {
-    error_norm(1.0, v, y, y, opts)
+/// RMS of `v_i / (atol_i + rtol |y_i|)`.
+fn weighted_rms(v: &[f64], y: &[f64], tol: &Tolerances) -> f64 {
+    error_norm(1.0, v, y, y, tol)
 }
 
 /// Scratch buffers of the starting-step heuristic, allocated once.
@@ -80,11 +103,12 @@ pub(crate) fn starting_step<S: OdeSystem>(
     f0: &[f64],
     q: f64,
     opts: &IntegratorOptions,
+    tol: &Tolerances,
     scratch: &mut StartScratch,
 ) -> Result<f64, SimulationError> {
     // first guess from the size of y and of f
-    let d0 = weighted_rms(y, y, opts);
-    let d1 = weighted_rms(f0, y, opts);
+    let d0 = weighted_rms(y, y, tol);
+    let d1 = weighted_rms(f0, y, tol);
     let mut h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
     h0 = h0.min(opts.max_step);
     // explicit Euler probe for the second derivative
@@ -95,7 +119,7 @@ pub(crate) fn starting_step<S: OdeSystem>(
     for i in 0..y.len() {
         scratch.f1[i] = (scratch.f1[i] - f0[i]) / h0;
     }
-    let d2 = weighted_rms(&scratch.f1, y, opts);
+    let d2 = weighted_rms(&scratch.f1, y, tol);
     // step whose local error would be about 1 % of the tolerance
     let dmax = d1.max(d2);
     let h1 = if !dmax.is_finite() {

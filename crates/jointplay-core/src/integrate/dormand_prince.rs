@@ -7,7 +7,7 @@
 //! Hairer, Nørsett & Wanner, Solving ODEs I, 2nd ed., Table II.5.2 and
 //! Section II.6 (Shampine 1986), checked against the published `dopri5` code.
 
-use super::control::{error_norm, eval, eval_start, starting_step, StartScratch, StepController};
+use super::control::{error_norm, Tolerances, eval, eval_start, starting_step, StartScratch, StepController};
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
 
@@ -63,6 +63,8 @@ const ERROR_ORDER: f64 = 5.0;
 /// Dormand-Prince stepper with its stage and dense-output buffers.
 pub(crate) struct DormandPrince {
     opts: IntegratorOptions,
+    /// Relative and per-component absolute tolerances.
+    tol: Tolerances,
     k: [Vec<f64>; 7],
     y_stage: Vec<f64>,
     y_new: Vec<f64>,
@@ -82,10 +84,11 @@ pub(crate) struct DormandPrince {
 
 impl DormandPrince {
     /// Allocates every buffer for a state of `n` components.
-    pub(crate) fn new(n: usize, opts: &IntegratorOptions) -> Self {
+    pub(crate) fn new(n: usize, opts: &IntegratorOptions, tol: Tolerances) -> Self {
         let v = || vec![0.0; n];
         Self {
             opts: opts.clone(),
+            tol,
             k: [v(), v(), v(), v(), v(), v(), v()],
             y_stage: v(),
             y_new: v(),
@@ -149,7 +152,7 @@ impl Stepper for DormandPrince {
             Some(h) => Ok(h),
             None => {
                 let (k0, _) = self.k.split_at(1);
-                starting_step(system, stats, t, y, &k0[0], ERROR_ORDER, &self.opts, &mut self.scratch)
+                starting_step(system, stats, t, y, &k0[0], ERROR_ORDER, &self.opts, &self.tol, &mut self.scratch)
             }
         }
     }
@@ -184,7 +187,7 @@ impl Stepper for DormandPrince {
             self.y_stage[i] =
                 E1 * k[0][i] + E3 * k[2][i] + E4 * k[3][i] + E5 * k[4][i] + E6 * k[5][i] + E7 * k[6][i];
         }
-        let err = error_norm(h, &self.y_stage, y, &self.y_new, &self.opts);
+        let err = error_norm(h, &self.y_stage, y, &self.y_new, &self.tol);
         if err <= 1.0 {
             self.keep_step_start(y, t, h);
             Ok(Attempt { accepted: true, h_next: self.control.accepted(h, err, ERROR_ORDER) })

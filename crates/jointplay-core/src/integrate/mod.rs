@@ -47,6 +47,12 @@ pub trait OdeSystem {
     /// dy/dt at (t, y). Called many times per step, at trial stages; must not allocate. May fail.
     fn rhs(&mut self, t: f64, y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError>;
 
+    /// Scale of each component's absolute tolerance, into `scales` (filled with 1
+    /// beforehand): component i is held to `atol * scales[i] + rtol |y_i|`. A
+    /// system whose components have different units (metres and pascals) scales
+    /// each by its kind, so that one atol means the same for all (default: all 1).
+    fn absolute_tolerance_scales(&self, _scales: &mut [f64]) {}
+
     /// Number of event functions (default 0).
     fn n_events(&self) -> usize {
         0
@@ -189,15 +195,15 @@ pub fn integrate<S: OdeSystem>(
     let n = y.len();
     let result = match options.method {
         Method::DormandPrince45 => {
-            let mut stepper = dormand_prince::DormandPrince::new(n, options);
+            let mut stepper = dormand_prince::DormandPrince::new(n, options, control::Tolerances::new(system, options));
             driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
         }
         Method::AdamsPredictorCorrector => {
-            let mut stepper = adams::Adams::new(n, options);
+            let mut stepper = adams::Adams::new(n, options, control::Tolerances::new(system, options));
             driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
         }
         Method::NumericalDifferentiation => {
-            let mut stepper = bdf::Ndf::new(n, options);
+            let mut stepper = bdf::Ndf::new(n, options, control::Tolerances::new(system, options));
             driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
         }
     };

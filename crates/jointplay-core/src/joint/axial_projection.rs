@@ -4,15 +4,15 @@
 //! along the axis it is the displacement driver of that joint.
 
 use super::{ConstraintRows, Target};
-use crate::dynamics::frame::{perp, BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{perp, Marker, Frame, Vec2};
 
 /// Projection of the point-to-point vector on a body-fixed direction is prescribed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AxialProjection {
     /// Point on the first body (on the sliding line).
-    pub first: BodyPoint,
+    pub first: Marker,
     /// Point on the second body.
-    pub second: BodyPoint,
+    pub second: Marker,
     /// Unit direction `u'` in the first body's frame [-].
     pub direction: Vec2,
     /// Prescribed projection [m].

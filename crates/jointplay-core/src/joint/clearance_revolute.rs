@@ -11,16 +11,16 @@
 //! the opposite force at `Q_i`.
 
 use crate::contact::{ContactStiffness, NormalForceLaw};
-use crate::dynamics::frame::{perp, BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{perp, Marker, Frame, Vec2};
 use crate::friction::FrictionLaw;
 
 /// A dry revolute clearance joint.
 #[derive(Clone, Debug)]
 pub struct ClearanceRevolute {
     /// Bearing centre on the first body.
-    pub bearing: BodyPoint,
+    pub bearing: Marker,
     /// Journal centre on the second body.
-    pub journal: BodyPoint,
+    pub journal: Marker,
     /// Bore radius R_b [m].
     pub bearing_radius: f64,
     /// Journal radius R_j [m].

@@ -116,20 +116,15 @@ impl Lubrication {
     /// Generalised forces of the film on bearing body `bi` and journal body `bj`.
     pub fn apply(
         evaluation: &FilmEvaluation,
-        generalised: &mut [f64],
+        forces: &mut crate::dynamics::GeneralisedForces,
         bearing: (&Frame, crate::dynamics::frame::BodyIndex, Vec2),
         journal: (&Frame, crate::dynamics::frame::BodyIndex, Vec2),
     ) {
-        use crate::dynamics::frame::add_point_force;
         let f = evaluation.force_on_journal;
         let e = journal.2 - bearing.2;
-        add_point_force(generalised, journal.0, journal.1, journal.2, f);
-        add_point_force(generalised, bearing.0, bearing.1, bearing.2, -f);
-        if let Some(c) = journal.1.coordinate() {
-            generalised[c + 2] += evaluation.journal_torque;
-        }
-        if let Some(c) = bearing.1.coordinate() {
-            generalised[c + 2] -= evaluation.journal_torque + cross(e, f);
-        }
+        forces.add_point_force(journal.1, journal.0, journal.2, f);
+        forces.add_point_force(bearing.1, bearing.0, bearing.2, -f);
+        forces.add_moment(journal.1, evaluation.journal_torque);
+        forces.add_moment(bearing.1, -(evaluation.journal_torque + cross(e, f)));
     }
 }

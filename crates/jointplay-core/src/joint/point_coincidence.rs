@@ -2,15 +2,15 @@
 //! the fixed joint, and the temporary lock of a clearance joint at assembly.
 
 use super::ConstraintRows;
-use crate::dynamics::frame::{BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{Marker, Frame, Vec2};
 
 /// Two body points held at a constant global offset (zero for a revolute joint).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PointCoincidence {
     /// Point on the first body.
-    pub first: BodyPoint,
+    pub first: Marker,
     /// Point on the second body.
-    pub second: BodyPoint,
+    pub second: Marker,
     /// Required `P_j - P_i` in the global frame [m].
     pub offset: Vec2,
 }

@@ -3,7 +3,7 @@
 //! second time derivative of `Phi` along a smooth trajectory.
 
 use super::*;
-use crate::dynamics::frame::{BodyIndex, BodyPoint, Frame, Vec2};
+use crate::dynamics::frame::{BodyIndex, Marker, Frame, Vec2};
 use crate::motion::{Sine, TimeFunction};
 
 const N: usize = 6; // two bodies
@@ -13,9 +13,9 @@ fn frames_at(q: &[f64], qdot: &[f64]) -> Vec<Frame> {
 }
 
 fn primitives() -> Vec<ConstraintKind> {
-    let a = BodyPoint { body: BodyIndex(1), local: Vec2::new(0.3, -0.1) };
-    let b = BodyPoint { body: BodyIndex(2), local: Vec2::new(-0.2, 0.25) };
-    let g = BodyPoint { body: BodyIndex::GROUND, local: Vec2::new(0.1, 0.05) };
+    let a = Marker { body: BodyIndex(1), local: Vec2::new(0.3, -0.1) };
+    let b = Marker { body: BodyIndex(2), local: Vec2::new(-0.2, 0.25) };
+    let g = Marker { body: BodyIndex::GROUND, local: Vec2::new(0.1, 0.05) };
     let sine = Target::Driven(TimeFunction::Sine(Sine { offset: 0.2, amplitude: 0.3, frequency: 1.3, phase: 0.4 }));
     vec![
         ConstraintKind::PointCoincidence(PointCoincidence { first: a, second: b, offset: Vec2::new(0.01, -0.02) }),
@@ -52,7 +52,9 @@ fn dense(c: &ConstraintKind, blocks: &[RowJacobian]) -> DenseJacobian {
     let mut jac = DenseJacobian(vec![[0.0; N]; blocks.len()]);
     for (r, row) in blocks.iter().enumerate() {
         for (slot, body) in c.bodies().iter().enumerate() {
-            if let Some(col) = body.coordinate() {
+            // (the test bodies are planar and laid out in order, three coordinates each)
+            if !body.is_ground() {
+                let col = 3 * (body.0 - 1);
                 for i in 0..3 {
                     jac.0[r][col + i] += row[slot][i];
                 }

@@ -119,3 +119,45 @@ fn adams_error_falls_as_fourth_power_of_step_count() {
     println!("Adams observed order {order}");
     assert!((order - 4.0).abs() < 0.5, "observed order {order}");
 }
+
+/// `y' = cos t` in one component whose unit is `scale` times smaller (pascals next to metres).
+struct ScaledSine {
+    scale: f64,
+    last: f64,
+}
+
+impl OdeSystem for ScaledSine {
+    fn len(&self) -> usize {
+        1
+    }
+    fn rhs(&mut self, t: f64, _y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError> {
+        dydt[0] = self.scale * t.cos();
+        Ok(())
+    }
+    fn absolute_tolerance_scales(&self, scales: &mut [f64]) {
+        scales[0] = self.scale;
+    }
+    fn record(&mut self, _t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        self.last = y[0];
+        Ok(())
+    }
+}
+
+#[test]
+fn a_component_in_smaller_units_with_its_tolerance_scaled_takes_the_same_steps() {
+    // the same motion in metres and in micrometres: with atol scaled by the unit the
+    // error control sees the same problem, so the steps and the relative error agree
+    for method in METHODS {
+        let opts = IntegratorOptions { rtol: 1e-13, atol: 1e-8, ..options(method, 1e-8) };
+        let run = |scale: f64| {
+            let mut system = ScaledSine { scale, last: 0.0 };
+            let mut y = [0.0];
+            let (stats, result) = integrate(&mut system, 0.0, 3.0, &mut y, &opts);
+            result.unwrap();
+            (stats.accepted_steps, (system.last / scale - 3.0_f64.sin()).abs())
+        };
+        let (metres, micrometres) = (run(1.0), run(1e6));
+        assert_eq!(metres.0, micrometres.0, "{method:?}: steps");
+        assert!(micrometres.1 < 1e-6 && metres.1 < 1e-6, "{method:?}: errors {metres:?} {micrometres:?}");
+    }
+}

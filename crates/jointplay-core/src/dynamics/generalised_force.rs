@@ -1,0 +1,46 @@
+//! The generalised applied force `Q` being assembled, seen by elements:
+//! they add point forces and moments on bodies and never index coordinates.
+
+use super::frame::{BodyIndex, Frame, Vec2};
+use super::layout::StateLayout;
+use super::model::Body;
+
+/// `Q` over the velocity coordinates, with the bodies that say where a force goes.
+pub struct GeneralisedForces<'a> {
+    /// Values in velocity-coordinate order [N, N m].
+    values: &'a mut [f64],
+    /// The bodies, body `k` has [`BodyIndex`]`(k + 1)`.
+    bodies: &'a [Body],
+    /// Their addresses.
+    layout: &'a StateLayout,
+}
+
+impl<'a> GeneralisedForces<'a> {
+    /// `values` (velocity length) for the bodies of `layout`.
+    pub fn new(values: &'a mut [f64], bodies: &'a [Body], layout: &'a StateLayout) -> Self {
+        Self { values, bodies, layout }
+    }
+
+    /// Adds the force `f` [N] at the global point `p` [m] of `body` (nothing on the ground).
+    #[inline]
+    pub fn add_point_force(&mut self, body: BodyIndex, frame: &Frame, p: Vec2, f: Vec2) {
+        if let Some(address) = self.layout.body(body) {
+            self.bodies[body.0 - 1].kind.add_point_force(frame, p, f, &mut self.values[address.v_range()]);
+        }
+    }
+
+    /// Adds the moment `m` [N m] (counter-clockwise) on `body` (nothing on the ground).
+    #[inline]
+    pub fn add_moment(&mut self, body: BodyIndex, m: f64) {
+        if let Some(address) = self.layout.body(body) {
+            self.bodies[body.0 - 1].kind.add_moment(m, &mut self.values[address.v_range()]);
+        }
+    }
+
+    /// Adds uniform gravity `g` [m/s^2] on every body.
+    pub fn add_gravity(&mut self, g: Vec2) {
+        for (body, address) in self.bodies.iter().zip(&self.layout.bodies) {
+            body.kind.add_gravity(g, &mut self.values[address.v_range()]);
+        }
+    }
+}

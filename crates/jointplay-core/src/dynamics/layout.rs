@@ -1,0 +1,121 @@
+//! Where every body's coordinates and every element's states sit in the
+//! state vector `y = [q, v, z]`: position coordinates `q`, velocity
+//! coordinates `v`, continuous element states `z` (as MuJoCo's `nq`/`nv`/`na`
+//! and Drake's `q`/`v`/`z`). Addresses are assigned once at compile time;
+//! nothing else computes an index from a body number.
+
+use std::ops::Range;
+
+use super::frame::BodyIndex;
+
+/// Addresses of one body's coordinates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BodyAddress {
+    /// First position coordinate, in `q`.
+    pub q: usize,
+    /// Number of position coordinates.
+    pub nq: usize,
+    /// First velocity coordinate, in `v` (and in every velocity-length vector:
+    /// generalised forces, accelerations, Jacobian columns).
+    pub v: usize,
+    /// Number of velocity coordinates.
+    pub nv: usize,
+}
+
+impl BodyAddress {
+    /// The body's position coordinates within `q`.
+    #[inline]
+    pub fn q_range(&self) -> Range<usize> {
+        self.q..self.q + self.nq
+    }
+
+    /// The body's velocity coordinates within `v`.
+    #[inline]
+    pub fn v_range(&self) -> Range<usize> {
+        self.v..self.v + self.nv
+    }
+}
+
+/// The layout of `y = [q, v, z]`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StateLayout {
+    /// Addresses of body `k` (its [`BodyIndex`] is `k + 1`; the ground has none).
+    pub bodies: Vec<BodyAddress>,
+    /// States of force element `k`, within `z`.
+    pub force_states: Vec<Range<usize>>,
+    /// Number of position coordinates.
+    pub nq: usize,
+    /// Number of velocity coordinates.
+    pub nv: usize,
+    /// Number of continuous element states.
+    pub nz: usize,
+}
+
+impl StateLayout {
+    /// Appends a body of `nq` position and `nv` velocity coordinates.
+    pub fn push_body(&mut self, nq: usize, nv: usize) {
+        self.bodies.push(BodyAddress { q: self.nq, nq, v: self.nv, nv });
+        self.nq += nq;
+        self.nv += nv;
+    }
+
+    /// Appends the `nz` states of the next force element.
+    pub fn push_force_states(&mut self, nz: usize) {
+        self.force_states.push(self.nz..self.nz + nz);
+        self.nz += nz;
+    }
+
+    /// Length of `y`.
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.nq + self.nv + self.nz
+    }
+
+    /// True when there is no state at all.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Addresses of a body, `None` for the ground.
+    #[inline]
+    pub fn body(&self, body: BodyIndex) -> Option<&BodyAddress> {
+        if body.is_ground() { None } else { self.bodies.get(body.0 - 1) }
+    }
+
+    /// `(q, v, z)` of a state vector.
+    #[inline]
+    pub fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], &'y [f64], &'y [f64]) {
+        let (q, rest) = y.split_at(self.nq);
+        let (v, z) = rest.split_at(self.nv);
+        (q, v, z)
+    }
+
+    /// Mutable [`Self::split`].
+    #[inline]
+    pub fn split_mut<'y>(&self, y: &'y mut [f64]) -> (&'y mut [f64], &'y mut [f64], &'y mut [f64]) {
+        let (q, rest) = y.split_at_mut(self.nq);
+        let (v, z) = rest.split_at_mut(self.nv);
+        (q, v, z)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn addresses_follow_the_declared_sizes() {
+        let mut layout = StateLayout::default();
+        layout.push_body(3, 3);
+        layout.push_body(7, 6);
+        layout.push_force_states(0);
+        layout.push_force_states(3);
+        assert_eq!(layout.body(BodyIndex(2)), Some(&BodyAddress { q: 3, nq: 7, v: 3, nv: 6 }));
+        assert_eq!(layout.body(BodyIndex::GROUND), None);
+        assert_eq!((layout.nq, layout.nv, layout.nz, layout.len()), (10, 9, 3, 22));
+        assert_eq!(layout.force_states, vec![0..0, 0..3]);
+        let y: Vec<f64> = (0..22).map(f64::from).collect();
+        let (q, v, z) = layout.split(&y);
+        assert_eq!((q.len(), v[0], z), (10, 10.0, &[19.0, 20.0, 21.0][..]));
+    }
+}
