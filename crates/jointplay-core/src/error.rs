@@ -127,6 +127,17 @@ pub enum SimulationError {
         /// What went wrong.
         cause: String,
     },
+    /// An element's state left the range where its law holds (a cylinder's
+    /// stroke beyond its ends, a chamber pressure below absolute zero).
+    #[error("{element} left the range of its law at t = {time:.6e} s: {cause}")]
+    ElementOutOfRange {
+        /// Time of the accepted step [s].
+        time: f64,
+        /// Element.
+        element: String,
+        /// What is out of range, with the values.
+        cause: String,
+    },
     /// The integration was asked for something it cannot do (bad options, t_end before t0, wrong state length).
     #[error("invalid integration input at t = {time:.6e} s: {message}")]
     InvalidInput {
@@ -182,6 +193,7 @@ impl SimulationError {
             | Self::ExcessivePenetration { time, .. }
             | Self::InvalidInput { time, .. }
             | Self::FilmModel { time, .. }
+            | Self::ElementOutOfRange { time, .. }
             | Self::OutputBudgetExceeded { time, .. }
             | Self::OutputSink { time, .. }
             | Self::Interrupted { time } => *time,
@@ -196,7 +208,8 @@ impl SimulationError {
             | Self::SingularConfiguration { element, .. }
             | Self::ConstraintViolation { element, .. }
             | Self::ExcessivePenetration { element, .. }
-            | Self::FilmModel { element, .. } => Some(element),
+            | Self::FilmModel { element, .. }
+            | Self::ElementOutOfRange { element, .. } => Some(element),
             Self::TooManySteps { .. }
             | Self::InvalidInput { .. }
             | Self::OutputBudgetExceeded { .. }

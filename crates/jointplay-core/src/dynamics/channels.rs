@@ -33,7 +33,7 @@ pub(crate) enum Source {
     Clearance(usize, u8),
     /// Film of a lubricated clearance joint (see `film_value`).
     Film(usize, u8),
-    /// Force element: 0 primary, 1 secondary.
+    /// Force element: the index of the output among its channels.
     Force(usize, u8),
     /// 0 kinetic, 1 potential, 2 total mechanical energy.
     Energy(u8),
@@ -66,8 +66,7 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
         Source::DriverEffort(e) => driver_effort(model, e, ws),
         Source::Clearance(j, which) => clearance_value(model, j, which, ws),
         Source::Film(j, which) => film_value(j, which, ws),
-        Source::Force(f, 0) => ws.force_outputs[f].primary,
-        Source::Force(f, _) => ws.force_outputs[f].secondary,
+        Source::Force(f, which) => ws.force_outputs[f].values[which as usize],
         Source::Energy(0) => energy[0],
         Source::Energy(1) => energy[1],
         Source::Energy(_) => energy[0] + energy[1],

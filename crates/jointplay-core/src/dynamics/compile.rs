@@ -13,12 +13,15 @@ use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamp
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
 use crate::spec::{ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, GROUND};
 
+#[path = "compile/hydraulic.rs"]
+mod hydraulic;
 #[path = "compile/laws.rs"]
 mod laws;
 #[path = "compile/lubrication.rs"]
 mod lubrication;
 
 use laws::{build_friction, build_function, build_normal_force_law, build_stiffness};
+use hydraulic::build_cylinder;
 use lubrication::build_lubrication;
 
 /// Default bound on penetration as a fraction of the journal radius: far
@@ -161,6 +164,16 @@ impl<'s> Compiler<'s> {
             self.errors.push(location, format!("unknown body {name:?}"));
         }
         found
+    }
+
+    /// Global position [m] of a marker at the positions of the description.
+    fn initial_point(&self, marker: Marker) -> Vec2 {
+        if marker.body.is_ground() {
+            return marker.local;
+        }
+        let b = &self.spec.bodies[marker.body.0 - 1];
+        let (sin, cos) = b.angle.sin_cos();
+        Vec2::new(b.position[0], b.position[1]) + Vec2::new(cos * marker.local.x - sin * marker.local.y, sin * marker.local.x + cos * marker.local.y)
     }
 
     fn initial_angle(&self, body: BodyIndex) -> f64 {
@@ -365,19 +378,21 @@ impl<'s> Compiler<'s> {
     fn forces(&mut self) {
         for (k, f) in self.spec.forces.iter().enumerate() {
             let loc = format!("forces[{k}]");
-            if let Some((name, element, units)) = self.force(&loc, f) {
+            if let Some((name, element, states)) = self.force(&loc, f) {
                 let index = self.model.forces.len();
-                self.model.forces.push(element);
-                self.model.force_names.push(name.to_string());
-                for (q, (quantity, unit, description)) in units.iter().enumerate() {
+                for (q, (quantity, unit, description)) in element.channels().iter().enumerate() {
                     self.channel(name, quantity, unit, description.to_string(), Source::Force(index, q as u8));
                 }
+                self.model.layout.push_force_states(element.n_states());
+                self.model.initial_element_states.extend(states);
+                self.model.forces.push(element);
+                self.model.force_names.push(name.to_string());
             }
         }
     }
 
-    #[allow(clippy::type_complexity)]
-    fn force(&mut self, loc: &str, f: &'s ForceSpec) -> Option<(&'s str, ForceElement, Vec<(&'static str, &'static str, &'static str)>)> {
+    /// The element described by `f`, with its name and initial states.
+    fn force(&mut self, loc: &str, f: &'s ForceSpec) -> Option<(&'s str, ForceElement, Vec<f64>)> {
         match f {
             ForceSpec::SpringDamper { name, first, second, stiffness, damping, free_length } => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -385,7 +400,7 @@ impl<'s> Compiler<'s> {
                 let b = self.point(second, format!("{loc}.second"));
                 self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping"), (*free_length, "free_length")], loc);
                 let element = SpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_length: *free_length };
-                Some((name, ForceElement::SpringDamper(element), vec![("force", "N", "tension"), ("length", "m", "length")]))
+                Some((name, ForceElement::SpringDamper(element), Vec::new()))
             }
             ForceSpec::RotationalSpringDamper { name, first, second, stiffness, damping, free_angle } => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -393,7 +408,7 @@ impl<'s> Compiler<'s> {
                 let b = self.body(second, format!("{loc}.second"));
                 self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping")], loc);
                 let element = RotationalSpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_angle: *free_angle };
-                Some((name, ForceElement::RotationalSpringDamper(element), vec![("torque", "N m", "torque on the second body"), ("angle", "rad", "relative angle")]))
+                Some((name, ForceElement::RotationalSpringDamper(element), Vec::new()))
             }
             ForceSpec::PointForce { name, point, fx, fy } => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -401,13 +416,22 @@ impl<'s> Compiler<'s> {
                 let fx = build_function(fx, &format!("{loc}.fx"), &mut self.errors);
                 let fy = build_function(fy, &format!("{loc}.fy"), &mut self.errors);
                 let element = PointForce { point: p?, fx: fx?, fy: fy? };
-                Some((name, ForceElement::PointForce(element), vec![("fx", "N", "applied force x"), ("fy", "N", "applied force y")]))
+                Some((name, ForceElement::PointForce(element), Vec::new()))
             }
             ForceSpec::Torque { name, body, torque } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let b = self.body(body, format!("{loc}.body"));
                 let torque = build_function(torque, &format!("{loc}.torque"), &mut self.errors);
-                Some((name, ForceElement::Torque(AppliedTorque { body: b?, torque: torque? }), vec![("torque", "N m", "applied torque")]))
+                Some((name, ForceElement::Torque(AppliedTorque { body: b?, torque: torque? }), Vec::new()))
+            }
+            ForceSpec::HydraulicCylinder(c) => {
+                self.claim_name(&c.name, &format!("{loc}.name"));
+                let a = self.point(&c.first, format!("{loc}.first"));
+                let b = self.point(&c.second, format!("{loc}.second"));
+                let (a, b) = (a?, b?);
+                let length = (self.initial_point(b) - self.initial_point(a)).norm();
+                let (element, states) = build_cylinder(c, (a, b), length, loc, &mut self.errors)?;
+                Some((&c.name, ForceElement::HydraulicCylinder(element), states))
             }
         }
     }

@@ -132,7 +132,7 @@ fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> 
 
 /// Applied generalised forces: velocity-dependent inertial forces, gravity,
 /// force elements and clearance contacts (whose evaluations are kept in the workspace).
-fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, q: &[f64], v: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
+fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
     ws.generalised_force.fill(0.0);
     for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
         body.kind.add_inertial_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
@@ -140,7 +140,8 @@ fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, q: &[f64], v:
     let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout);
     forces.add_gravity(model.gravity);
     for (k, element) in model.forces.iter().enumerate() {
-        ws.force_outputs[k] = element.apply(&ws.frames, t, &mut forces);
+        let states = model.layout.force_states[k].clone();
+        ws.force_outputs[k] = element.apply(&ws.frames, t, &z[states.clone()], &mut ws.element_state_rates[states], &mut forces);
     }
     for (k, joint) in model.clearance_joints.iter().enumerate() {
         let c = joint.evaluate(&ws.frames, memory[k].onset_velocity);
@@ -177,11 +178,11 @@ pub fn accelerations(
     stabilization: Stabilization,
     ws: &mut Workspace,
 ) -> Result<(), SimulationError> {
-    let (q, qdot, _) = model.layout.split(y);
+    let (q, qdot, z) = model.layout.split(y);
     // the factor depends on the positions only: kept from a projection at the same (t, q)
     let factored = holds_factor(ws, model.row_offsets[model.n_dynamic_constraints], t, q);
     update_frames(model, q, qdot, &mut ws.frames);
-    applied_forces(model, memory, t, q, qdot, ws)?;
+    applied_forces(model, memory, t, (q, qdot, z), ws)?;
     let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
     if let Stabilization::Baumgarte { alpha, beta } = stabilization {
         constraint_residuals(model, model.n_dynamic_constraints, t, ws);
@@ -230,7 +231,7 @@ fn check_finite(model: &Model, t: f64, ws: &Workspace) -> Result<(), SimulationE
         .iter()
         .position(|c| !(c.normal_force.is_finite() && c.friction_force.is_finite()))
         .map(|k| model.clearance_names[k].clone())
-        .or_else(|| ws.force_outputs.iter().position(|f| !f.primary.is_finite()).map(|k| model.force_names[k].clone()))
+        .or_else(|| ws.force_outputs.iter().position(|f| !f.values.iter().all(|v| v.is_finite())).map(|k| model.force_names[k].clone()))
         .unwrap_or_else(|| "state".to_string());
     Err(SimulationError::NonFinite { time: t, element })
 }

@@ -133,6 +133,18 @@ impl MechanismSystem<'_> {
         Ok(changed)
     }
 
+    /// Checks that every element's accepted state is within the range of its law
+    /// (the frames are those of `y`: [`Self::update_contact_memory`] made them).
+    fn check_elements(&self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        let (_, _, z) = self.model.layout.split(y);
+        for (k, element) in self.model.forces.iter().enumerate() {
+            if let Err(cause) = element.check(&self.ws.frames, &z[self.model.layout.force_states[k].clone()]) {
+                return Err(SimulationError::ElementOutOfRange { time: t, element: self.model.force_names[k].clone(), cause });
+            }
+        }
+        Ok(())
+    }
+
     /// Projects positions and velocities of y onto the constraints at t (the
     /// workspace no longer holds the last evaluation afterwards).
     fn project_state(&mut self, t: f64, y: &mut [f64]) -> Result<(), SimulationError> {
@@ -195,6 +207,10 @@ impl OdeSystem for MechanismSystem<'_> {
         for (body, address) in self.model.bodies.iter().zip(&layout.bodies) {
             body.kind.tolerance_scales(&mut q[address.q_range()], &mut v[address.v_range()]);
         }
+        let (_, _, z) = layout.split_mut(scales);
+        for (element, states) in self.model.forces.iter().zip(&layout.force_states) {
+            element.tolerance_scales(&mut z[states.clone()]);
+        }
     }
 
     fn n_events(&self) -> usize {
@@ -252,6 +268,7 @@ impl OdeSystem for MechanismSystem<'_> {
             // the contact law reads the latched onset velocity: the evaluation no longer holds
             self.step_end.evaluated_at = None;
         }
+        self.check_elements(t, y)?;
         self.last_accepted = t;
         self.tracking.accepted_state.copy_from_slice(y);
         Ok(false)

@@ -17,11 +17,14 @@ pub struct PointForce {
 }
 
 impl PointForce {
+    /// Outputs.
+    pub const CHANNELS: [super::OutputInfo; 2] = [("fx", "N", "applied force x"), ("fy", "N", "applied force y")];
+
     /// Applies the force; outputs its components [N].
     pub fn apply(&self, frames: &[Frame], t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
         let frame = &frames[self.point.body.0];
         let f = Vec2::new(self.fx.sample(t).value, self.fy.sample(t).value);
         forces.add_point_force(self.point.body, frame, frame.point(self.point.local), f);
-        ForceOutput { primary: f.x, secondary: f.y, potential_energy: 0.0 }
+        ForceOutput::new(&[f.x, f.y], 0.0)
     }
 }

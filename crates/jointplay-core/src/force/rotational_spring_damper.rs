@@ -22,6 +22,9 @@ pub struct RotationalSpringDamper {
 }
 
 impl RotationalSpringDamper {
+    /// Outputs.
+    pub const CHANNELS: [super::OutputInfo; 2] = [("torque", "N m", "torque on the second body"), ("angle", "rad", "relative angle")];
+
     /// Applies the torque pair; outputs torque on the second body [N m] and relative angle [rad].
     pub fn apply(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
         let (fi, fj) = (&frames[self.first.0], &frames[self.second.0]);
@@ -30,6 +33,6 @@ impl RotationalSpringDamper {
         let torque = -self.stiffness * theta - self.damping * theta_dot;
         forces.add_moment(self.second, torque);
         forces.add_moment(self.first, -torque);
-        ForceOutput { primary: torque, secondary: theta + self.free_angle, potential_energy: 0.5 * self.stiffness * theta * theta }
+        ForceOutput::new(&[torque, theta + self.free_angle], 0.5 * self.stiffness * theta * theta)
     }
 }

@@ -21,6 +21,9 @@ pub struct SpringDamper {
 }
 
 impl SpringDamper {
+    /// Outputs.
+    pub const CHANNELS: [super::OutputInfo; 2] = [("force", "N", "tension"), ("length", "m", "length")];
+
     /// Applies the tension to both points; outputs tension [N] and length [m].
     pub fn apply(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
         let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
@@ -30,13 +33,13 @@ impl SpringDamper {
         let stretch = length - self.free_length;
         let potential_energy = 0.5 * self.stiffness * stretch * stretch;
         if length == 0.0 {
-            return ForceOutput { primary: 0.0, secondary: 0.0, potential_energy };
+            return ForceOutput::new(&[0.0, 0.0], potential_energy);
         }
         let u = d / length;
         let length_rate = u.dot(&(fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local)));
         let tension = self.stiffness * stretch + self.damping * length_rate;
         forces.add_point_force(self.first.body, fi, pi, u * tension);
         forces.add_point_force(self.second.body, fj, pj, -u * tension);
-        ForceOutput { primary: tension, secondary: length, potential_energy }
+        ForceOutput::new(&[tension, length], potential_energy)
     }
 }

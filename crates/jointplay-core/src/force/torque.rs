@@ -15,10 +15,13 @@ pub struct AppliedTorque {
 }
 
 impl AppliedTorque {
+    /// Outputs.
+    pub const CHANNELS: [super::OutputInfo; 1] = [("torque", "N m", "applied torque")];
+
     /// Applies the torque; outputs it [N m].
     pub fn apply(&self, t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
         let torque = self.torque.sample(t).value;
         forces.add_moment(self.body, torque);
-        ForceOutput { primary: torque, secondary: 0.0, potential_energy: 0.0 }
+        ForceOutput::new(&[torque], 0.0)
     }
 }

@@ -264,6 +264,13 @@ impl HydraulicCylinder {
         inflows: (f64, f64),
     ) -> Result<CylinderEvaluation, CylinderFault> {
         self.check(stroke, states)?;
+        Ok(self.evaluate_unchecked(stroke, stroke_rate, states, inflows))
+    }
+
+    /// [`Self::evaluate`] without [`Self::check`]: for the trial stages of a
+    /// step, which may pass outside the valid range where an accepted step
+    /// would not (the owning element checks every accepted step).
+    pub fn evaluate_unchecked(&self, stroke: f64, stroke_rate: f64, states: &[f64], inflows: (f64, f64)) -> CylinderEvaluation {
         let g = &self.geometry;
         let (cap, rod) = g.volumes(stroke);
         let (cap_rate, rod_rate) = g.volume_rates(stroke_rate);
@@ -279,18 +286,18 @@ impl HydraulicCylinder {
                 (out.force, law.is_sticking(stroke_rate))
             }
         };
-        Ok(CylinderEvaluation {
+        CylinderEvaluation {
             force: pressure_force - friction_force,
             pressure_force,
             friction_force,
             stick,
             state_rates,
             n_states: self.n_states(),
-        })
+        }
     }
 
     /// Stroke inside [0, S] and both pressures at or above the floor.
-    fn check(&self, stroke: f64, states: &[f64]) -> Result<(), CylinderFault> {
+    pub fn check(&self, stroke: f64, states: &[f64]) -> Result<(), CylinderFault> {
         let stroke_length = self.geometry.stroke_length;
         if !(0.0..=stroke_length).contains(&stroke) {
             return Err(CylinderFault::StrokeOutOfRange { stroke, stroke_length });

@@ -251,4 +251,66 @@ pub enum ForceSpec {
         /// Torque, counter-clockwise positive [N m].
         torque: FunctionSpec,
     },
+    /// Double-acting hydraulic cylinder between two points, along their line;
+    /// its chamber pressures are states of the simulation.
+    HydraulicCylinder(HydraulicCylinderSpec),
+}
+
+/// A hydraulic cylinder: barrel attached at `first`, rod eye at `second`.
+/// Pressures are gauge. Every value is given (the front end supplies defaults).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct HydraulicCylinderSpec {
+    /// Name.
+    pub name: String,
+    /// Barrel attachment `"body.point"`.
+    pub first: String,
+    /// Rod-eye attachment `"body.point"`.
+    pub second: String,
+    /// Piston (cap-side) area A1 [m^2].
+    pub piston_area: f64,
+    /// Rod-side (annulus) area A2 < A1 [m^2].
+    pub rod_side_area: f64,
+    /// Stroke length S [m].
+    pub stroke_length: f64,
+    /// Dead volume of the cap chamber [m^3].
+    pub cap_dead_volume: f64,
+    /// Dead volume of the rod chamber [m^3].
+    pub rod_dead_volume: f64,
+    /// Stroke at the start, at the positions given in the model [m].
+    pub initial_stroke: f64,
+    /// Cap-chamber pressure at the start [Pa].
+    pub cap_pressure: f64,
+    /// Rod-chamber pressure at the start [Pa].
+    pub rod_pressure: f64,
+    /// Effective bulk modulus of the liquid [Pa].
+    pub bulk_modulus: f64,
+    /// Seal friction; `None`: frictionless seals.
+    pub seal_friction: Option<SealFrictionSpec>,
+    /// Flow into the cap chamber [m^3/s]; `None`: closed.
+    pub cap_inflow: Option<FunctionSpec>,
+    /// Flow into the rod chamber [m^3/s]; `None`: closed.
+    pub rod_inflow: Option<FunctionSpec>,
+}
+
+/// LuGre seal friction of a cylinder.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SealFrictionSpec {
+    /// Static (breakaway) force F_S [N].
+    pub static_force: f64,
+    /// Kinetic (Coulomb) force F_C [N].
+    pub kinetic_force: f64,
+    /// Stribeck velocity v_S [m/s].
+    pub stribeck_velocity: f64,
+    /// Bristle stiffness sigma0 [N/m].
+    pub bristle_stiffness: f64,
+    /// Bristle damping sigma1 [N s/m].
+    pub bristle_damping: f64,
+    /// Viscous coefficient sigma2 [N s/m].
+    pub viscous_coefficient: f64,
+    /// Velocity over which the bristle damping fades, v_D [m/s].
+    pub damping_velocity: f64,
+    /// Stroke rate below which the seal is reported sticking [m/s].
+    pub stick_velocity: f64,
 }

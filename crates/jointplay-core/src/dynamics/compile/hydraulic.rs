@@ -1,0 +1,70 @@
+//! Building a hydraulic cylinder element from its description.
+
+use super::laws::build_function;
+use crate::dynamics::frame::Marker;
+use crate::error::ModelErrors;
+use crate::force::CylinderActuator;
+use crate::friction::LugreFriction;
+use crate::hydraulic::{CylinderGeometry, HydraulicCylinder, SealFriction};
+use crate::spec::{HydraulicCylinderSpec, SealFrictionSpec};
+
+/// The cylinder between `first` and `second`, whose attachments are
+/// `initial_length` [m] apart at the positions of the description, with its
+/// initial states; every problem goes to `errors` at `loc`.
+pub(super) fn build_cylinder(
+    spec: &HydraulicCylinderSpec,
+    (first, second): (Marker, Marker),
+    initial_length: f64,
+    loc: &str,
+    errors: &mut ModelErrors,
+) -> Option<(CylinderActuator, Vec<f64>)> {
+    let cap_inflow = spec.cap_inflow.as_ref().map(|f| build_function(f, &format!("{loc}.cap_inflow"), errors));
+    let rod_inflow = spec.rod_inflow.as_ref().map(|f| build_function(f, &format!("{loc}.rod_inflow"), errors));
+    let seal = match &spec.seal_friction {
+        None => Some(SealFriction::None),
+        Some(s) => build_seal(s, &format!("{loc}.seal_friction"), errors),
+    };
+    let geometry = CylinderGeometry::new(spec.piston_area, spec.rod_side_area, spec.stroke_length, spec.cap_dead_volume, spec.rod_dead_volume)
+        .map_err(|message| errors.push(loc, message))
+        .ok();
+    let cylinder = match (geometry, seal) {
+        (Some(geometry), Some(seal)) => HydraulicCylinder::new(geometry, spec.bulk_modulus, seal).map_err(|message| errors.push(format!("{loc}.bulk_modulus"), message)).ok(),
+        _ => None,
+    };
+    if !(spec.initial_stroke.is_finite() && (0.0..=spec.stroke_length).contains(&spec.initial_stroke)) {
+        errors.push(format!("{loc}.initial_stroke"), format!("must lie within [0, stroke_length = {} m], got {} m", spec.stroke_length, spec.initial_stroke));
+    }
+    let retracted_length = initial_length - spec.initial_stroke;
+    if !(retracted_length > 0.0) {
+        errors.push(
+            format!("{loc}.initial_stroke"),
+            format!("the attachments are {initial_length} m apart at the start, so an initial stroke of {} m leaves no retracted length", spec.initial_stroke),
+        );
+    }
+    let cylinder = cylinder?;
+    for (name, pressure) in [("cap_pressure", spec.cap_pressure), ("rod_pressure", spec.rod_pressure)] {
+        if !(pressure.is_finite() && pressure >= cylinder.pressure_floor()) {
+            errors.push(format!("{loc}.{name}"), format!("must be >= {} Pa (absolute zero), got {pressure} Pa", cylinder.pressure_floor()));
+        }
+    }
+    let states = cylinder.initial_states(spec.cap_pressure, spec.rod_pressure)[..cylinder.n_states()].to_vec();
+    let element = CylinderActuator {
+        first,
+        second,
+        cylinder,
+        retracted_length,
+        initial_stroke: spec.initial_stroke,
+        cap_inflow: cap_inflow.flatten(),
+        rod_inflow: rod_inflow.flatten(),
+    };
+    Some((element, states))
+}
+
+fn build_seal(s: &SealFrictionSpec, loc: &str, errors: &mut ModelErrors) -> Option<SealFriction> {
+    LugreFriction::new(s.static_force, s.kinetic_force, s.stribeck_velocity, s.bristle_stiffness, s.bristle_damping, s.viscous_coefficient)
+        .and_then(|law| law.with_damping_velocity(s.damping_velocity))
+        .and_then(|law| law.with_stick_velocity(s.stick_velocity))
+        .map(SealFriction::Lugre)
+        .map_err(|message| errors.push(loc, message))
+        .ok()
+}

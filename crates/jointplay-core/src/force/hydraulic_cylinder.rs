@@ -1,0 +1,111 @@
+//! Hydraulic cylinder as a force element between two markers, acting along
+//! their line: the cylinder law of `crate::hydraulic` fed with the stroke
+//! `s = |p2 - p1| - L0` and its rate, its chamber pressures (and seal bristle
+//! deflection) integrated as element states. Theory:
+//! `docs/theory/hydraulic-cylinder.md`.
+
+use super::ForceOutput;
+use crate::dynamics::frame::{Frame, Marker};
+use crate::dynamics::GeneralisedForces;
+use crate::hydraulic::{CylinderFault, HydraulicCylinder};
+use crate::motion::TimeFunction;
+
+/// A double-acting cylinder: barrel on the first marker, rod eye on the second.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CylinderActuator {
+    /// Attachment of the barrel (cap end).
+    pub first: Marker,
+    /// Attachment of the rod eye.
+    pub second: Marker,
+    /// The cylinder law.
+    pub cylinder: HydraulicCylinder,
+    /// Distance between the attachments at stroke 0 (fully retracted) [m].
+    pub retracted_length: f64,
+    /// Stroke at the start [m] (the reference of the pressure tolerance scales).
+    pub initial_stroke: f64,
+    /// Flow into the cap chamber [m^3/s], if any (a valve's output later).
+    pub cap_inflow: Option<TimeFunction>,
+    /// Flow into the rod chamber [m^3/s], if any.
+    pub rod_inflow: Option<TimeFunction>,
+}
+
+/// The attachment line at one instant.
+struct Line {
+    /// Unit vector from the first attachment to the second [-].
+    direction: crate::dynamics::frame::Vec2,
+    /// Attachment points [m].
+    points: [crate::dynamics::frame::Vec2; 2],
+    /// Stroke s [m].
+    stroke: f64,
+    /// Stroke rate ds/dt [m/s].
+    stroke_rate: f64,
+}
+
+impl CylinderActuator {
+    /// Outputs, in the order of [`Self::CHANNELS`].
+    pub const CHANNELS: [(&'static str, &'static str, &'static str); 7] = [
+        ("p_cap", "Pa", "cap-chamber gauge pressure"),
+        ("p_rod", "Pa", "rod-chamber gauge pressure"),
+        ("force", "N", "force pushing the attachments apart (pressure force minus seal friction)"),
+        ("stroke", "m", "stroke (0 fully retracted)"),
+        ("rate", "m/s", "stroke rate (positive extending)"),
+        ("friction", "N", "seal friction resisting the stroke rate"),
+        ("stick", "1", "1 while the seal sticks (|rate| below the stick velocity), else 0"),
+    ];
+
+    fn line(&self, frames: &[Frame]) -> Line {
+        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
+        let points = [fi.point(self.first.local), fj.point(self.second.local)];
+        let d = points[1] - points[0];
+        let length = d.norm();
+        // (coincident attachments: no direction; the compiler refuses a zero retracted length)
+        let direction = if length > 0.0 { d / length } else { crate::dynamics::frame::Vec2::zeros() };
+        let relative = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
+        Line { direction, points, stroke: length - self.retracted_length, stroke_rate: direction.dot(&relative) }
+    }
+
+    /// Inflows (Q_cap, Q_rod) [m^3/s] at `t`.
+    fn inflows(&self, t: f64) -> (f64, f64) {
+        let flow = |f: &Option<TimeFunction>| f.as_ref().map_or(0.0, |f| f.sample(t).value);
+        (flow(&self.cap_inflow), flow(&self.rod_inflow))
+    }
+
+    /// Applies the force along the line and writes the state rates into `z_rate`
+    /// (same layout as `z`: p_cap, p_rod, bristle deflection).
+    pub fn apply(&self, frames: &[Frame], t: f64, z: &[f64], z_rate: &mut [f64], forces: &mut GeneralisedForces) -> ForceOutput {
+        let line = self.line(frames);
+        let e = self.cylinder.evaluate_unchecked(line.stroke, line.stroke_rate, z, self.inflows(t));
+        z_rate.copy_from_slice(e.state_rates());
+        let push = line.direction * e.force;
+        forces.add_point_force(self.second.body, &frames[self.second.body.0], line.points[1], push);
+        forces.add_point_force(self.first.body, &frames[self.first.body.0], line.points[0], -push);
+        let stick = if e.stick { 1.0 } else { 0.0 };
+        ForceOutput {
+            values: [z[0], z[1], e.force, line.stroke, line.stroke_rate, e.friction_force, stick],
+            potential_energy: self.cylinder.stored_energy(line.stroke, z),
+        }
+    }
+
+    /// Whether the state is inside the range of the law (stroke within [0, S],
+    /// pressures above the floor); checked at every accepted step.
+    pub fn check(&self, frames: &[Frame], z: &[f64]) -> Result<(), CylinderFault> {
+        self.cylinder.check(self.line(frames).stroke, z)
+    }
+
+    /// Absolute-tolerance scales of the states: a chamber pressure [Pa] is held to
+    /// the pressure change a piston displacement of one unit of the length
+    /// tolerance causes in that chamber, `beta A / V` [Pa/m] at the initial
+    /// stroke; the bristle deflection is a length (1).
+    pub fn tolerance_scales(&self, scales: &mut [f64]) {
+        let g = self.cylinder.geometry();
+        let (cap, rod) = g.volumes(self.initial_stroke);
+        let beta = self.cylinder.bulk_modulus();
+        scales[0] = beta * g.piston_area() / cap;
+        scales[1] = beta * g.rod_side_area() / rod;
+        scales[2..].fill(1.0);
+    }
+}
+
+#[cfg(test)]
+#[path = "hydraulic_cylinder_tests.rs"]
+mod tests;
