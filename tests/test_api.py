@@ -175,6 +175,19 @@ def test_builder_round_trips_through_plain_data():
     np.testing.assert_array_equal(a["B.fn"], b["B.fn"])
 
 
+def test_a_hand_written_lubrication_gets_every_key_from_the_definitions():
+    m = flores.build_model()
+    joint = next(j for j in m.to_spec()["joints"] if j["name"] == "B")
+    joint.update(name="B2", lubrication={"model": "hamrock_short", "viscosity": 0.4})
+    keys = {k: v for k, v in joint.items() if k not in ("type", "name", "bearing", "journal")}
+    m.add_clearance_revolute("B2", joint["bearing"], joint["journal"], **keys)
+    added = next(j for j in m.to_spec()["joints"] if j["name"] == "B2")
+    assert added["lubrication"] == laws.lubrication("hamrock_short", 0.4) == {
+        "model": "hamrock_short", "viscosity": 0.4, "transition": {"law": "wang_improved", "safe_film_thickness": None},
+        "reynolds": {"cavitation": "swift_stieber", "n_circumferential": None, "n_axial": None,
+                     "ambient_pressure": 0.0, "groove_supply_pressure": None}}
+
+
 def test_laws_reach_the_core():
     m = flores.build_model()
     m.joint("B")["contact"] = laws.flores(0.5)
