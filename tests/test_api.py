@@ -1,5 +1,7 @@
 """The Python API: builder errors, options, results, errors that keep results."""
 
+import json
+
 import numpy as np
 import pytest
 
@@ -173,6 +175,44 @@ def test_builder_round_trips_through_plain_data():
     a = flores.simulate(m, revolutions=0.2)
     b = flores.simulate(again, revolutions=0.2)
     np.testing.assert_array_equal(a["B.fn"], b["B.fn"])
+
+
+def test_plain_data_missing_a_key_is_a_model_error_naming_the_element_and_the_key():
+    # the core's spec has no defaults (the builder sends every key): a description without one is
+    # reported by the binding as problems located by element name, not as a crash
+    spec = flores.build_model().to_spec()
+    del spec["bodies"][0]["angle"]
+    del next(j for j in spec["joints"] if j["name"] == "B")["onset_velocity_floor"]
+    with pytest.raises(jp.ModelError) as info:
+        jp.Model.from_spec(spec).compile()
+    assert [(p.location, p.message.partition(" (")[0]) for p in info.value.problems] == [
+        ("bodies.crank", "missing field `angle`"), ("joints.B", "missing field `onset_velocity_floor`")]
+    assert "no defaults" in info.value.problems[0].message
+
+
+def test_the_core_reports_a_description_it_cannot_read_as_problems():
+    from jointplay import _core
+
+    spec = pendulum().to_spec()
+    del spec["forces"]
+    assert _core.compile_model(json.dumps(spec))[0] is None
+    [(where, message)] = _core.compile_model(json.dumps(spec))[1]
+    assert where == "model" and message.startswith("missing field `forces`")
+    [(where, message)] = _core.compile_model("{not json")[1]
+    assert where == "model" and message.startswith("the model description is not valid JSON")
+
+
+def test_a_hand_written_lubrication_gets_every_key_from_the_definitions():
+    m = flores.build_model()
+    joint = next(j for j in m.to_spec()["joints"] if j["name"] == "B")
+    joint.update(name="B2", lubrication={"model": "hamrock_short", "viscosity": 0.4})
+    keys = {k: v for k, v in joint.items() if k not in ("type", "name", "bearing", "journal")}
+    m.add_clearance_revolute("B2", joint["bearing"], joint["journal"], **keys)
+    added = next(j for j in m.to_spec()["joints"] if j["name"] == "B2")
+    assert added["lubrication"] == laws.lubrication("hamrock_short", 0.4) == {
+        "model": "hamrock_short", "viscosity": 0.4, "transition": {"law": "wang_improved", "safe_film_thickness": None},
+        "reynolds": {"cavitation": "swift_stieber", "n_circumferential": None, "n_axial": None,
+                     "ambient_pressure": 0.0, "groove_supply_pressure": None}}
 
 
 def test_laws_reach_the_core():

@@ -28,8 +28,9 @@ def _si(raw: Any, kind: str, where: str) -> float:
 
 def _helper(table: p.Table, name: str, where: str) -> Callable[..., dict]:
     """A function returning the plain data of ``table`` (a law, or a material): its keys as arguments, in
-    the definition's order, with the definition's defaults (None: left to the core); each value converted
-    to SI (errors located at ``where.<key>``), not range-checked (the builder does that, as in a file)."""
+    the definition's order, with the definition's defaults (None: "not given", sent as null, what it means
+    is the key's ``default_text``); each value converted to SI (errors located at ``where.<key>``), not
+    range-checked (the builder does that, as in a file)."""
     signature = inspect.Signature([
         inspect.Parameter(param.key, inspect.Parameter.POSITIONAL_OR_KEYWORD,
                           default=inspect.Parameter.empty if param.required else param.default)
@@ -40,8 +41,7 @@ def _helper(table: p.Table, name: str, where: str) -> Callable[..., dict]:
         bound.apply_defaults()
         out = {table.tag: table.name} if table.tag else {}
         for key, value in bound.arguments.items():
-            if value is not None:
-                out[key] = _si(value, table[key].kind, f"{where}.{key}")
+            out[key] = None if value is None else _si(value, table[key].kind, f"{where}.{key}")
         return p.core_law(out) if table.tag else out
 
     make.__signature__ = signature  # type: ignore[attr-defined]
@@ -88,7 +88,6 @@ switch_transition = _helper(p.TRANSITION_LAWS["switch"], "switch_transition", "t
 # lubrication ---------------------------------------------------------------
 
 FILM_MODELS = p.FILM_MODELS
-_LUBRICATION = p.LUBRICATION
 
 
 def centipoise(value: float) -> float:
@@ -104,7 +103,7 @@ def lubrication(model: str, viscosity: float, transition: dict | None = None, *,
     if model not in FILM_MODELS:
         raise ValueError(f"unknown film model {model!r}; choose one of {', '.join(FILM_MODELS)}")
     spec = {"model": model, "viscosity": _si(viscosity, "viscosity", "lubrication.viscosity"),
-            "transition": transition or {"law": _LUBRICATION.default("transition")}}
+            "transition": transition}
     reynolds_only = {"cavitation": cavitation, "n_circumferential": n_circumferential, "n_axial": n_axial,
                      "ambient_pressure": ambient_pressure, "groove_supply_pressure": groove_supply_pressure}
     if not model.startswith("reynolds"):
@@ -113,15 +112,13 @@ def lubrication(model: str, viscosity: float, transition: dict | None = None, *,
             raise ModelError([Problem(f"lubrication.{key}", f"applies only to the Reynolds models "
                                                             f"({', '.join(p.REYNOLDS_MODELS)}), not to {model}")
                               for key in given])
-        return spec
-    if ambient_pressure is None:
-        ambient_pressure = _LUBRICATION.default("ambient_pressure")
-    spec["reynolds"] = {"cavitation": cavitation or _LUBRICATION.default("cavitation"),
-                        "n_circumferential": n_circumferential, "n_axial": n_axial,
-                        "ambient_pressure": _si(ambient_pressure, "pressure", "lubrication.ambient_pressure"),
-                        "groove_supply_pressure": None if groove_supply_pressure is None else
-                        _si(groove_supply_pressure, "pressure", "lubrication.groove_supply_pressure")}
-    return spec
+    else:
+        spec["reynolds"] = {key: value for key, value in reynolds_only.items() if value is not None}
+        for key in ("ambient_pressure", "groove_supply_pressure"):
+            if key in spec["reynolds"]:
+                spec["reynolds"][key] = _si(spec["reynolds"][key], "pressure", f"lubrication.{key}")
+    # the keys not given, the Reynolds options of a closed form among them, get the definition's defaults
+    return p.core_lubrication(spec)
 
 
 lubrication.__doc__ = p.docstring(p.LUBRICATION, summary=(

@@ -172,7 +172,7 @@ class Model:
             "lock_at_assembly": bool(lock_at_assembly),
             "onset_velocity_floor": _arg("ClearanceRevoluteTable", "onset_velocity_floor", onset_velocity_floor, where),
             "max_penetration": _arg("ClearanceRevoluteTable", "max_penetration", max_penetration, where),
-            "lubrication": None if lubrication is None else copy.deepcopy(lubrication),
+            "lubrication": None if lubrication is None else p.core_lubrication(copy.deepcopy(lubrication)),
         })
         return self._joint(joint)
 

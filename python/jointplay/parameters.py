@@ -282,7 +282,7 @@ FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamr
                "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
 REYNOLDS_MODELS = ("reynolds_exact", "reynolds_table")
 #: The Reynolds solver's grid when none is given, cells around x cells along the axis: the core's default
-#: (Python sends no grid then); the steady-bearing tool (``jointplay bearing``) uses it too.
+#: (Python sends null cell counts then); the steady-bearing tool (``jointplay bearing``) uses it too.
 REYNOLDS_GRID = (120, 16)
 CAVITATIONS = ("gumbel", "swift_stieber", "elrod_adams")
 #: Keys of a lubrication table that only the Reynolds solver reads (the closed forms have no grid,
@@ -309,6 +309,27 @@ LUBRICATION = Table("lubrication", "A lubricant film in the clearance (docs/theo
     Param("groove_supply_pressure", "pressure", "Reynolds models only, `reynolds_exact` only: a circumferential "
           "groove at mid-length held at this pressure (paper 000)", None, default_text="no groove"),
 ))
+
+
+def core_lubrication(lubrication: Any) -> Any:
+    """A lubrication dict in the core's layout (``model``, ``viscosity``, ``transition``, ``reynolds``) with
+    every key the core reads: the defaults of this definition for those not given, the transition law's keys
+    included, and the Reynolds solver's options (which the closed forms ignore) for every model. Values given
+    are kept as they are, unknown keys and what is not a dict too, for the core to report."""
+    if not isinstance(lubrication, dict):
+        return lubrication
+    transition = lubrication.get("transition") or {"law": LUBRICATION.default("transition")}
+    law = TRANSITION_LAWS.get(transition.get("law")) if isinstance(transition, dict) else None
+    if law is not None:
+        transition = {"law": transition["law"], **{param.key: param.default for param in law.params
+                                                   if not param.required}, **transition}
+    reynolds = lubrication.get("reynolds") or {}
+    if isinstance(reynolds, dict):
+        cells = LUBRICATION.default("grid") or (None, None)  # None: the solver's grid
+        reynolds = {"cavitation": LUBRICATION.default("cavitation"), "n_circumferential": cells[0],
+                    "n_axial": cells[1], "ambient_pressure": LUBRICATION.default("ambient_pressure"),
+                    "groove_supply_pressure": LUBRICATION.default("groove_supply_pressure"), **reynolds}
+    return {**lubrication, "transition": transition, "reynolds": reynolds}
 
 
 # joints ---------------------------------------------------------------------

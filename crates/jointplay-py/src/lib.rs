@@ -4,6 +4,7 @@
 
 mod bearing;
 mod conv;
+mod spec_json;
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::{Arc, Mutex};
@@ -106,12 +107,14 @@ impl SampleSink for PythonSink {
     }
 }
 
-/// Compiles a JSON model description. Returns `(model, None)` or `(None, [(location, message), ...])`.
+/// Compiles a JSON model description. Returns `(model, None)` or `(None, [(location, message), ...])`;
+/// a description that cannot be read (a missing key, say: the spec has no defaults) is such a list too,
+/// each problem at its element (`joints[2]`).
 #[pyfunction]
 fn compile_model(py: Python<'_>, spec_json: &str) -> PyResult<(Option<CoreModel>, Option<Vec<(String, String)>>)> {
-    let spec: ModelSpec = match serde_json::from_str(spec_json) {
+    let spec: ModelSpec = match spec_json::read_spec(spec_json) {
         Ok(spec) => spec,
-        Err(e) => return Ok((None, Some(vec![("model".to_string(), e.to_string())]))),
+        Err(problems) => return Ok((None, Some(problems))),
     };
     let compiled = py.detach(|| guarded(|| dynamics::compile(&spec)))?;
     Ok(match compiled {

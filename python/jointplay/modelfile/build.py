@@ -304,17 +304,17 @@ class Builder:
             return False
         if table is None or transition is None:
             return False
-        spec = {"model": table.model, "viscosity": float(table.viscosity), "transition": transition}
-        if table.model.startswith("reynolds"):
-            grid = self.grid(table.grid, join(where, "grid"))
-            if grid is False:
-                return False
-            spec["reynolds"] = {
-                "cavitation": table.cavitation, "n_circumferential": grid[0], "n_axial": grid[1],
-                "ambient_pressure": float(table.ambient_pressure),
-                "groove_supply_pressure": None if table.groove_supply_pressure is None else float(table.groove_supply_pressure),
-            }
-        return spec
+        grid = self.grid(table.grid, join(where, "grid"))
+        if grid is False:
+            return False
+        # the Reynolds options go to the core for every model (a closed form ignores them; it has their
+        # defaults here, since giving one is an error)
+        return {"model": table.model, "viscosity": float(table.viscosity), "transition": transition,
+                "reynolds": {
+                    "cavitation": table.cavitation, "n_circumferential": grid[0], "n_axial": grid[1],
+                    "ambient_pressure": float(table.ambient_pressure),
+                    "groove_supply_pressure": None if table.groove_supply_pressure is None else float(table.groove_supply_pressure),
+                }}
 
     def grid(self, raw: Any, where: str) -> tuple[int | None, int | None] | bool:
         """``grid = [n_circumferential, n_axial]`` of the Reynolds solver, or the solver's default."""
@@ -369,8 +369,8 @@ class Builder:
         table = self.validate(laws[law], value, location, hint=f"{law}: ")
         if table is None:
             return None
-        return p.core_law({k: (float(v) if isinstance(v, float) else v)
-                          for k, v in table.model_dump(exclude_none=True).items()})
+        # every key of the law, those not given with their defaults (None: "not given", sent as null)
+        return p.core_law({k: (float(v) if isinstance(v, float) else v) for k, v in table.model_dump().items()})
 
     def drivers(self) -> None:
         for name, where, raw in self.entries("drivers"):

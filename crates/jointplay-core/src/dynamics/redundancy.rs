@@ -88,13 +88,20 @@ mod tests {
 
     #[test]
     fn a_free_body_has_no_equations_and_a_doubled_pin_two_redundant_ones() {
-        let free = rank_of(r#"{"bodies": [{"name": "bar", "mass": 1, "inertia": 0.1}]}"#);
+        let free = rank_of(
+            r#"{"name": "free", "gravity": [0, 0], "ground_points": [],
+                "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0, 0], "angle": 0, "velocity": [0, 0],
+                            "angular_velocity": 0, "points": []}],
+                "joints": [], "drivers": [], "forces": []}"#,
+        );
         assert_eq!((free.n_equations, free.rank, free.n_redundant()), (0, 0, 0));
         let pins = rank_of(
-            r#"{"ground_points": [{"name": "O", "position": [0, 0]}],
-                "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0], "points": [{"name": "O", "position": [-0.3, 0]}]}],
+            r#"{"name": "pins", "gravity": [0, 0], "ground_points": [{"name": "O", "position": [0, 0]}],
+                "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0], "angle": 0, "velocity": [0, 0],
+                            "angular_velocity": 0, "points": [{"name": "O", "position": [-0.3, 0]}]}],
                 "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"},
-                           {"type": "revolute", "name": "again", "first": "ground.O", "second": "bar.O"}]}"#,
+                           {"type": "revolute", "name": "again", "first": "ground.O", "second": "bar.O"}],
+                "drivers": [], "forces": []}"#,
         );
         assert_eq!((pins.n_equations, pins.rank, pins.n_redundant()), (4, 2, 2));
         assert_eq!(pins.dependent_elements, vec!["pin".to_string(), "again".to_string()]);

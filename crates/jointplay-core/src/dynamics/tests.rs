@@ -25,11 +25,11 @@ fn slider_crank(omega: f64, gravity: f64) -> Model {
         "name": "slider-crank", "gravity": [0, {gravity}],
         "ground_points": [{{"name": "O", "position": [0, 0]}}, {{"name": "line", "position": [0, 0]}}],
         "bodies": [
-          {{"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0],
+          {{"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
             "points": [{{"name": "O", "position": [-0.025, 0]}}, {{"name": "A", "position": [0.025, 0]}}]}},
-          {{"name": "rod", "mass": 0.21, "inertia": 2.5e-4, "position": [0.11, 0.0],
+          {{"name": "rod", "mass": 0.21, "inertia": 2.5e-4, "position": [0.11, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
             "points": [{{"name": "A", "position": [-0.06, 0]}}, {{"name": "B", "position": [0.06, 0]}}]}},
-          {{"name": "slider", "mass": 0.14, "inertia": 1e-4, "position": [0.17, 0.0],
+          {{"name": "slider", "mass": 0.14, "inertia": 1e-4, "position": [0.17, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
             "points": [{{"name": "B", "position": [0, 0]}}]}}
         ],
         "joints": [
@@ -38,7 +38,8 @@ fn slider_crank(omega: f64, gravity: f64) -> Model {
           {{"type": "revolute", "name": "B", "first": "rod.B", "second": "slider.B"}},
           {{"type": "translational", "name": "guide", "first": "ground.line", "second": "slider.B", "axis": [1, 0]}}
         ],
-        "drivers": [{{"name": "motor", "joint": "O", "function": {{"kind": "constant_rate", "initial": 0, "rate": {omega}}}}}]
+        "drivers": [{{"name": "motor", "joint": "O", "function": {{"kind": "constant_rate", "initial": 0, "rate": {omega}}}}}],
+        "forces": []
         }}"#
     ))
 }
@@ -136,11 +137,13 @@ fn baumgarte_and_unstabilised_runs_follow_the_slider_crank_closed_form() {
 fn horizontal_bar_held_by_a_driver_carries_its_weight_at_the_pin() {
     // bar of 2 kg and 0.8 m pinned at one end, held horizontal: pin force m g up, driver torque m g l/2
     let m = model(
-        r#"{"gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
+        r#"{"name": "bar", "gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
             "bodies": [{"name": "bar", "mass": 2.0, "inertia": 0.1067, "position": [0.4, 0],
+                        "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
                         "points": [{"name": "O", "position": [-0.4, 0]}]}],
             "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}],
-            "drivers": [{"name": "hold", "joint": "pin", "function": {"kind": "constant", "value": 0}}]}"#,
+            "drivers": [{"name": "hold", "joint": "pin", "function": {"kind": "constant", "value": 0}}],
+            "forces": []}"#,
     );
     let mut ws = Workspace::new(&m);
     let state = assemble(&m, 0.0, &mut ws).unwrap();
@@ -182,19 +185,22 @@ fn slider_crank_spec_json() -> serde_json::Value {
     let m = slider_crank(0.0, 0.0);
     let _ = m;
     serde_json::from_str(
-        r#"{"ground_points": [{"name": "O", "position": [0, 0]}, {"name": "line", "position": [0, 0]}],
+        r#"{"name": "slider-crank", "gravity": [0, 0],
+        "ground_points": [{"name": "O", "position": [0, 0]}, {"name": "line", "position": [0, 0]}],
         "bodies": [
-          {"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0],
+          {"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
             "points": [{"name": "O", "position": [-0.025, 0]}, {"name": "A", "position": [0.025, 0]}]},
-          {"name": "rod", "mass": 0.21, "inertia": 2.5e-4, "position": [0.11, 0.0],
+          {"name": "rod", "mass": 0.21, "inertia": 2.5e-4, "position": [0.11, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
             "points": [{"name": "A", "position": [-0.06, 0]}, {"name": "B", "position": [0.06, 0]}]},
-          {"name": "slider", "mass": 0.14, "inertia": 1e-4, "position": [0.17, 0.0], "points": [{"name": "B", "position": [0, 0]}]}],
+          {"name": "slider", "mass": 0.14, "inertia": 1e-4, "position": [0.17, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
+            "points": [{"name": "B", "position": [0, 0]}]}],
         "joints": [
           {"type": "revolute", "name": "O", "first": "ground.O", "second": "crank.O"},
           {"type": "revolute", "name": "A", "first": "crank.A", "second": "rod.A"},
           {"type": "revolute", "name": "B", "first": "rod.B", "second": "slider.B"},
           {"type": "translational", "name": "guide", "first": "ground.line", "second": "slider.B", "axis": [1, 0]}],
-        "drivers": [{"name": "motor", "joint": "O", "function": {"kind": "constant", "value": 0}}]}"#,
+        "drivers": [{"name": "motor", "joint": "O", "function": {"kind": "constant", "value": 0}}],
+        "forces": []}"#,
     )
     .unwrap()
 }
@@ -217,10 +223,11 @@ fn pendulum_period_matches_the_elliptic_integral_at_large_amplitude() {
     let angle = -PI / 2.0 + theta0;
     let (cx, cy) = (0.5 * length * angle.cos(), 0.5 * length * angle.sin());
     let m = model(&format!(
-        r#"{{"gravity": [0, -{g}], "ground_points": [{{"name": "O", "position": [0, 0]}}],
+        r#"{{"name": "pendulum", "gravity": [0, -{g}], "ground_points": [{{"name": "O", "position": [0, 0]}}],
             "bodies": [{{"name": "bar", "mass": {mass}, "inertia": {inertia}, "position": [{cx}, {cy}], "angle": {angle},
-                        "points": [{{"name": "O", "position": [-{h}, 0]}}]}}],
-            "joints": [{{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}}]}}"#,
+                        "velocity": [0, 0], "angular_velocity": 0, "points": [{{"name": "O", "position": [-{h}, 0]}}]}}],
+            "joints": [{{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}}],
+            "drivers": [], "forces": []}}"#,
         h = 0.5 * length
     ));
     let mut ws = Workspace::new(&m);
@@ -255,7 +262,7 @@ fn hanging_chain(links: usize) -> Model {
     let bodies: Vec<String> = (0..links)
         .map(|k| {
             format!(
-                r#"{{"name": "bar{k}", "mass": 1.0, "inertia": 0.00333333, "position": [{x}, 0],
+                r#"{{"name": "bar{k}", "mass": 1.0, "inertia": 0.00333333, "position": [{x}, 0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
                     "points": [{{"name": "L", "position": [-0.1, 0]}}, {{"name": "R", "position": [0.1, 0]}}]}}"#,
                 x = 0.1 + 0.2 * k as f64
             )
@@ -268,7 +275,8 @@ fn hanging_chain(links: usize) -> Model {
         })
         .collect();
     model(&format!(
-        r#"{{"gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}], "bodies": [{}], "joints": [{}]}}"#,
+        r#"{{"name": "chain", "gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}], "bodies": [{}], "joints": [{}],
+            "drivers": [], "forces": []}}"#,
         bodies.join(","),
         joints.join(",")
     ))
@@ -300,9 +308,10 @@ fn pinned_bar(pins: usize) -> Model {
     let joints: Vec<String> =
         (0..pins).map(|k| format!(r#"{{"type": "revolute", "name": "pin{k}", "first": "ground.O", "second": "bar.O"}}"#)).collect();
     model(&format!(
-        r#"{{"gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}],
-            "bodies": [{{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0.01], "points": [{{"name": "O", "position": [-0.3, 0]}}]}}],
-            "joints": [{}]}}"#,
+        r#"{{"name": "pinned bar", "gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}],
+            "bodies": [{{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0.01], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
+                        "points": [{{"name": "O", "position": [-0.3, 0]}}]}}],
+            "joints": [{}], "drivers": [], "forces": []}}"#,
         joints.join(", ")
     ))
 }
@@ -337,11 +346,13 @@ fn a_redundant_pin_runs_and_shares_the_reaction_by_minimum_norm() {
 fn a_mechanism_driven_against_its_lock_is_reported_naming_the_element() {
     // a bar pinned at its end and driven in rotation, and also welded to the ground: no motion can satisfy both
     let m = model(
-        r#"{"ground_points": [{"name": "O", "position": [0, 0]}],
-            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0], "points": [{"name": "O", "position": [-0.3, 0]}]}],
+        r#"{"name": "locked", "gravity": [0, 0], "ground_points": [{"name": "O", "position": [0, 0]}],
+            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0], "angle": 0, "velocity": [0, 0],
+                        "angular_velocity": 0, "points": [{"name": "O", "position": [-0.3, 0]}]}],
             "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"},
                        {"type": "fixed", "name": "weld", "first": "ground.O", "second": "bar.O"}],
-            "drivers": [{"name": "motor", "joint": "pin", "function": {"kind": "constant_rate", "rate": 10.0}}]}"#,
+            "drivers": [{"name": "motor", "joint": "pin", "function": {"kind": "constant_rate", "initial": 0, "rate": 10.0}}],
+            "forces": []}"#,
     );
     let mut ws = Workspace::new(&m);
     match assemble(&m, 0.0, &mut ws) {
@@ -356,13 +367,19 @@ fn a_mechanism_driven_against_its_lock_is_reported_naming_the_element() {
 #[test]
 fn compile_reports_every_problem_with_its_location() {
     let spec: ModelSpec = serde_json::from_str(
-        r#"{"bodies": [{"name": "bar", "mass": -1, "inertia": 0.1, "points": [{"name": "O", "position": [0, 0]}]}],
+        r#"{"name": "faulty", "gravity": [0, 0], "ground_points": [],
+            "bodies": [{"name": "bar", "mass": -1, "inertia": 0.1, "position": [0, 0], "angle": 0, "velocity": [0, 0],
+                        "angular_velocity": 0, "points": [{"name": "O", "position": [0, 0]}]}],
             "joints": [{"type": "revolute", "name": "pin", "first": "ground.X", "second": "bar.O"},
                        {"type": "clearance_revolute", "name": "B", "bearing": "bar.O", "journal": "nobody.P",
-                        "bearing_radius": 0.01, "clearance": 0.02,
+                        "bearing_radius": 0.01, "clearance": 0.02, "length": null,
                         "bearing_material": {"youngs_modulus": 2e11, "poisson_ratio": 0.3},
                         "journal_material": {"youngs_modulus": 2e11, "poisson_ratio": 0.3},
-                        "contact": {"law": "lankarani_nikravesh", "restitution": 1.5}}]}"#,
+                        "contact": {"law": "lankarani_nikravesh", "restitution": 1.5},
+                        "stiffness": {"law": "hertz_cylinder"}, "friction": {"law": "none"},
+                        "initial_eccentricity": [0, 0], "lock_at_assembly": true, "onset_velocity_floor": 1e-4,
+                        "max_penetration": null, "lubrication": null}],
+            "drivers": [], "forces": []}"#,
     )
     .unwrap();
     let errors = compile(&spec).unwrap_err().to_string();
@@ -392,7 +409,8 @@ pub(super) fn clearance_slider_crank() -> Model {
         "journal_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
         "contact": {"law": "lankarani_nikravesh", "restitution": 0.9}, "stiffness": {"law": "hertz_cylinder"},
         "friction": {"law": "ambrosio", "coefficient": 0.01, "v0": 1e-4, "v1": 1e-3},
-        "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": true});
+        "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": true, "onset_velocity_floor": 1e-4,
+        "max_penetration": null, "lubrication": null});
     spec["drivers"][0]["function"] = serde_json::json!({"kind": "constant_rate", "initial": 0.0, "rate": 5000.0 * PI / 30.0});
     model(&spec.to_string())
 }

@@ -323,9 +323,11 @@ mod tests {
     /// A pendulum of 1 + 3 x 12 channels (bodies) sampled every 0.1 ms for 0.2 s.
     fn pendulum_run(sink: Option<Box<dyn SampleSink>>, max_output_bytes: Option<u64>) -> super::super::SimulationOutcome {
         use super::super::{assemble, compile, simulate_with_sink, SimulationOptions, Workspace};
-        let spec = r#"{"gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
-            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.02, "position": [0.25, 0], "points": [{"name": "O", "position": [-0.25, 0]}]}],
-            "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}]}"#;
+        let spec = r#"{"name": "pendulum", "gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
+            "bodies": [{"name": "bar", "mass": 1, "inertia": 0.02, "position": [0.25, 0], "angle": 0, "velocity": [0, 0],
+                        "angular_velocity": 0, "points": [{"name": "O", "position": [-0.25, 0]}]}],
+            "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}],
+            "drivers": [], "forces": []}"#;
         let model = compile(&serde_json::from_str(spec).unwrap()).unwrap();
         let mut state = assemble(&model, 0.0, &mut Workspace::new(&model)).unwrap();
         let mut options = SimulationOptions { max_output_bytes, ..Default::default() };

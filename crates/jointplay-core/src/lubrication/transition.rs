@@ -32,10 +32,6 @@ pub fn safe_film_thickness(diameter: f64) -> f64 {
     SAFE_FILM_THICKNESS_PER_DIAMETER * diameter
 }
 
-/// Default `eps0` of the Flores law: 0.95, a film that carries the load
-/// until 5 % of the clearance is left (our choice; the source value is not legible).
-pub const FLORES_DEFAULT_LUBRICATED_LIMIT: f64 = 0.95;
-
 /// Shares of the two forces [-].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TransitionWeights {
@@ -74,11 +70,6 @@ pub enum TransitionLaw {
 }
 
 impl TransitionLaw {
-    /// Flores law with `eps0 = 0.95`.
-    pub fn flores_default() -> Self {
-        TransitionLaw::Flores { lubricated_limit: FLORES_DEFAULT_LUBRICATED_LIMIT }
-    }
-
     /// Paper 001's law with the safe film thickness of this bearing (`0.00015 D`, `D` the bearing
     /// (bore) diameter `2 (R + c)`, `R` being the journal radius of the film geometry).
     pub fn wang_improved(geometry: &BearingGeometry) -> Self {
@@ -165,7 +156,7 @@ mod tests {
 
     #[test]
     fn test_flores_weights_are_smooth_and_complete() {
-        let (g, law) = (geometry(), TransitionLaw::flores_default());
+        let (g, law) = (geometry(), TransitionLaw::Flores { lubricated_limit: 0.95 });
         assert_eq!(law.weights(&g, 0.5), TransitionWeights { hydrodynamic: 1.0, contact: 0.0 });
         assert_eq!(law.weights(&g, 1.0001), TransitionWeights { hydrodynamic: 0.0, contact: 1.0 });
         // midpoint of [0.95, 1]: smoothstep 1/2
@@ -184,7 +175,7 @@ mod tests {
 
     #[test]
     fn test_combine_is_continuous_at_contact_and_ignores_unweighted_film() {
-        let (g, law) = (geometry(), TransitionLaw::flores_default());
+        let (g, law) = (geometry(), TransitionLaw::Flores { lubricated_limit: 0.95 });
         let film = Vector2::new(-1.0e4, 2.0e3);
         let below = law.combine(&g, film, Vector2::zeros(), 1.0 - 1e-7);
         assert!(below.norm() < 1e-6 * film.norm());
@@ -197,7 +188,7 @@ mod tests {
     #[test]
     fn test_flores_film_kinematics_keep_only_radial_squeeze() {
         let k = FilmKinematics { eccentricity: Vector2::new(3e-4, 0.0), eccentricity_rate: Vector2::new(0.1, 0.2), journal_spin: 50.0, bearing_spin: 3.0 };
-        let f = TransitionLaw::flores_default().film_kinematics(&k);
+        let f = TransitionLaw::Flores { lubricated_limit: 0.95 }.film_kinematics(&k);
         assert_eq!(f.eccentricity_rate, Vector2::new(0.1, 0.0));
         assert_eq!((f.journal_spin, f.bearing_spin), (0.0, 0.0));
         assert_eq!(TransitionLaw::wang_improved(&geometry()).film_kinematics(&k), k);

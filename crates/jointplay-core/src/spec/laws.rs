@@ -46,11 +46,10 @@ pub enum ContactSpec {
 }
 
 /// Contact stiffness law.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
 pub enum StiffnessSpec {
     /// `K delta^n`, `K = (4/3) E* sqrt(R*)`.
-    #[default]
     HertzCylinder,
     /// Hertz-type law with a chosen exponent.
     HertzCylinderExponent {
@@ -64,11 +63,10 @@ pub enum StiffnessSpec {
 }
 
 /// Friction law.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
 pub enum FrictionSpec {
     /// Frictionless.
-    #[default]
     None,
     /// Coulomb regularised by tanh.
     Coulomb {
@@ -118,7 +116,6 @@ pub enum FunctionSpec {
     /// `initial + rate t` (constant speed).
     ConstantRate {
         /// Value at t = 0.
-        #[serde(default)]
         initial: f64,
         /// Rate per second.
         rate: f64,
@@ -142,14 +139,12 @@ pub enum FunctionSpec {
     /// `offset + amplitude sin(2 pi frequency t + phase)`.
     Sine {
         /// Mean value.
-        #[serde(default)]
         offset: f64,
         /// Amplitude.
         amplitude: f64,
         /// Frequency [Hz].
         frequency: f64,
         /// Phase [rad].
-        #[serde(default)]
         phase: f64,
     },
     /// Natural cubic spline through a table.

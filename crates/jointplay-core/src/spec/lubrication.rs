@@ -11,10 +11,8 @@ pub struct LubricationSpec {
     /// Dynamic viscosity [Pa s].
     pub viscosity: f64,
     /// Hand-over from the film force to dry contact.
-    #[serde(default)]
     pub transition: TransitionSpec,
-    /// Options of the Reynolds models (ignored by the closed forms).
-    #[serde(default)]
+    /// Options of the Reynolds solver: given for every film model, read by the Reynolds models only.
     pub reynolds: ReynoldsSpec,
 }
 
@@ -51,47 +49,33 @@ pub enum TransitionSpec {
     /// Flores et al.: squeeze film faded out between `lubricated_limit` and contact.
     Flores {
         /// Eccentricity ratio where the fading starts [-].
-        #[serde(default = "default_lubricated_limit")]
         lubricated_limit: f64,
     },
     /// Paper 001: squeeze and wedge film faded out from the safe film thickness to contact.
     WangImproved {
-        /// Safe film thickness [m]; default 0.00015 of the diameter.
+        /// Safe film thickness [m]; none: 0.00015 of the bearing diameter (paper 001's design rule).
         #[serde(default)]
         safe_film_thickness: Option<f64>,
     },
 }
 
-impl Default for TransitionSpec {
-    /// Paper 001's improved law keeps the wedge effect, which the dynamic models carry.
-    fn default() -> Self {
-        TransitionSpec::WangImproved { safe_film_thickness: None }
-    }
-}
-
-fn default_lubricated_limit() -> f64 {
-    crate::lubrication::transition::FLORES_DEFAULT_LUBRICATED_LIMIT
-}
-
 /// Cavitation condition of the Reynolds solver.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum CavitationSpec {
     /// Negative pressures dropped (half-Sommerfeld).
     Gumbel,
     /// Reynolds / Swift-Stieber: p >= 0 as a complementarity problem.
-    #[default]
     SwiftStieber,
     /// Mass-conserving Elrod-Adams (JFO).
     ElrodAdams,
 }
 
 /// Options of the Reynolds solver.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Default)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ReynoldsSpec {
     /// Cavitation condition.
-    #[serde(default)]
     pub cavitation: CavitationSpec,
     /// Grid cells around the circumference (default: the solver's).
     #[serde(default)]
@@ -100,7 +84,6 @@ pub struct ReynoldsSpec {
     #[serde(default)]
     pub n_axial: Option<usize>,
     /// Gauge pressure at the bearing ends [Pa].
-    #[serde(default)]
     pub ambient_pressure: f64,
     /// Supply pressure of a circumferential groove at mid-length [Pa]; no groove when absent.
     #[serde(default)]

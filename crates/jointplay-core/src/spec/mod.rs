@@ -5,6 +5,12 @@
 //! Names refer to bodies and points as strings; `ground` is the fixed frame.
 //! A point is written `"body.point"` (for example `"crank.A"`), or
 //! `"ground.O"` for a point of the ground.
+//!
+//! Every value is given explicitly: the defaults of the keys a user may leave
+//! out are defined once, by the front end (`python/jointplay/parameters.py`),
+//! which sends each of them. A key that is missing here is an error, except
+//! an `Option` field, whose absence means "none" (no lubricant, no bearing
+//! length, a limit or a film thickness that the core derives from the geometry).
 
 mod laws;
 mod lubrication;
@@ -17,29 +23,22 @@ use serde::{Deserialize, Serialize};
 pub const GROUND: &str = "ground";
 
 /// A whole mechanism.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ModelSpec {
     /// Name of the mechanism.
-    #[serde(default)]
     pub name: String,
     /// Gravitational acceleration vector [m/s^2].
-    #[serde(default)]
     pub gravity: [f64; 2],
     /// Points of the ground frame, by name: global coordinates [m].
-    #[serde(default)]
     pub ground_points: Vec<PointSpec>,
     /// Rigid bodies.
-    #[serde(default)]
     pub bodies: Vec<BodySpec>,
     /// Ideal and clearance joints.
-    #[serde(default)]
     pub joints: Vec<JointSpec>,
     /// Drivers prescribing joint coordinates over time.
-    #[serde(default)]
     pub drivers: Vec<DriverSpec>,
     /// Force elements.
-    #[serde(default)]
     pub forces: Vec<ForceSpec>,
 }
 
@@ -64,19 +63,14 @@ pub struct BodySpec {
     /// Moment of inertia about the centre of mass [kg m^2].
     pub inertia: f64,
     /// Approximate initial position of the centre of mass [m].
-    #[serde(default)]
     pub position: [f64; 2],
     /// Approximate initial orientation [rad].
-    #[serde(default)]
     pub angle: f64,
     /// Approximate initial velocity of the centre of mass [m/s].
-    #[serde(default)]
     pub velocity: [f64; 2],
     /// Approximate initial angular velocity [rad/s].
-    #[serde(default)]
     pub angular_velocity: f64,
     /// Named points in body coordinates.
-    #[serde(default)]
     pub points: Vec<PointSpec>,
 }
 
@@ -143,40 +137,23 @@ pub struct ClearanceJointSpec {
     /// Normal force law (dissipation).
     pub contact: ContactSpec,
     /// Contact stiffness law.
-    #[serde(default)]
     pub stiffness: StiffnessSpec,
     /// Friction law.
-    #[serde(default)]
     pub friction: FrictionSpec,
     /// Initial eccentricity vector of the journal centre from the bearing centre, global frame [m].
-    #[serde(default)]
     pub initial_eccentricity: [f64; 2],
     /// Whether assembly holds the journal at `initial_eccentricity` for positions and velocities
-    /// (the state of the ideal mechanism, the default); `false` keeps the journal where the
-    /// approximate input puts it, with its own velocity.
-    #[serde(default = "default_lock_at_assembly")]
+    /// (the state of the ideal mechanism); `false` keeps the journal where the approximate input
+    /// puts it, with its own velocity.
     pub lock_at_assembly: bool,
     /// Smallest contact-onset velocity used in the damping term [m/s]; guards grazing entries.
-    #[serde(default = "default_onset_velocity_floor")]
     pub onset_velocity_floor: f64,
-    /// Penetration at which the simulation stops as unphysical [m]; default 5 % of the journal radius.
+    /// Penetration at which the simulation stops as unphysical [m]; none: 5 % of the journal radius.
     #[serde(default)]
     pub max_penetration: Option<f64>,
     /// Lubricant film; a dry joint when absent.
     #[serde(default)]
     pub lubrication: Option<LubricationSpec>,
-}
-
-/// Clearance joints start as the ideal mechanism unless told otherwise.
-pub fn default_lock_at_assembly() -> bool {
-    true
-}
-
-/// Default onset velocity floor [m/s]: small against the impact velocities
-/// of machinery (0.01-1 m/s) yet keeps `delta_dot / delta_dot_minus` bounded
-/// for grazing entries.
-pub fn default_onset_velocity_floor() -> f64 {
-    1e-4
 }
 
 /// A driver: a joint coordinate prescribed as a function of time.
@@ -205,10 +182,8 @@ pub enum ForceSpec {
         /// Point on the second body.
         second: String,
         /// Stiffness [N/m].
-        #[serde(default)]
         stiffness: f64,
         /// Damping coefficient [N s/m].
-        #[serde(default)]
         damping: f64,
         /// Free length [m].
         free_length: f64,
@@ -222,13 +197,10 @@ pub enum ForceSpec {
         /// Second body.
         second: String,
         /// Stiffness [N m/rad].
-        #[serde(default)]
         stiffness: f64,
         /// Damping coefficient [N m s/rad].
-        #[serde(default)]
         damping: f64,
         /// Relative angle (second minus first) at which the spring is relaxed [rad].
-        #[serde(default)]
         free_angle: f64,
     },
     /// A force at a point, given in the global frame as functions of time.
@@ -314,3 +286,6 @@ pub struct SealFrictionSpec {
     /// Stroke rate below which the seal is reported sticking [m/s].
     pub stick_velocity: f64,
 }
+
+#[cfg(test)]
+mod tests;
