@@ -21,6 +21,7 @@ friction and the boom's changing lever, and the boom stops, with the seal
 sticking again, once the valve has closed.
 
 Run: python examples/hydraulic_boom.py [--out DIR]
+(--out: writes the results as NetCDF and a figure of the pressures, stroke and seal into DIR)
 """
 
 from __future__ import annotations
@@ -48,6 +49,8 @@ COMMANDED_SPEED = 0.036  # m/s, fully open
 #: The stroke the valve commands: the speed times the integral of the opening, KNOT_SPACING per
 #: B-spline (9 of them) [m].
 COMMANDED_STROKE = COMMANDED_SPEED * KNOT_SPACING * 9
+#: The channels the figure draws, one panel each.
+FIGURE_CHANNELS = ("lift.p_cap", "lift.p_rod", "lift.stroke", "lift.rate", "lift.friction", "lift.stick")
 
 
 def valve(flows: dict[int, str]) -> dict:
@@ -91,59 +94,31 @@ def stick_periods(results: jp.Results) -> list[tuple[float, float]]:
     return [(float(t[a]), float(t[b])) for a, b in zip(starts, ends)]
 
 
-def write_figure(results: jp.Results, path: Path) -> Path:
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(8, 9), layout="constrained")
-    FigureCanvasAgg(fig)
-    pressures, stroke, rate, seal = fig.subplots(4, 1, sharex=True)
-    t = results.time
-    pressures.plot(t, results["lift.p_cap"] / 1e5, label="cap chamber")
-    pressures.plot(t, results["lift.p_rod"] / 1e5, label="rod chamber")
-    pressures.set_ylabel("pressure [bar]")
-    pressures.legend()
-    stroke.plot(t, results["lift.stroke"] * 1e3)
-    stroke.set_ylabel("stroke [mm]")
-    angle = stroke.twinx()
-    angle.plot(t, np.degrees(results["boom.angle"]), color="0.5", ls="--")
-    angle.set_ylabel("boom angle [deg] (dashed)")
-    rate.plot(t, results["lift.rate"] * 1e3)
-    rate.set_ylabel("stroke rate [mm/s]")
-    seal.plot(t, results["lift.friction"])
-    for start, end in stick_periods(results):
-        seal.axvspan(start, end, color="0.85")
-    seal.set_ylabel("seal friction [N]\n(grey: sticking)")
-    seal.set_xlabel("time [s]")
-    for ax in (pressures, stroke, rate, seal):
-        ax.grid(alpha=0.3)
-    fig.suptitle("boom raised by a hydraulic cylinder through a valve (paper 002's seal friction)")
-    fig.savefig(path, dpi=120)
-    return path
+def report(results: jp.Results) -> str:
+    """A few lines on what happened: stroke and boom angle, pressures, the seal's stick periods."""
+    stroke, angle = results["lift.stroke"], results["boom.angle"]
+    p_cap, p_rod = results["lift.p_cap"] / 1e5, results["lift.p_rod"] / 1e5  # bar
+    periods = ", ".join(f"{a:.3f}-{b:.3f} s" for a, b in stick_periods(results))
+    return "\n".join([
+        f"{results}",
+        f"stroke {stroke[0] * 1e3:.1f} -> {stroke[-1] * 1e3:.1f} mm (the valve commands "
+        f"{COMMANDED_STROKE * 1e3:.1f} mm); boom raised {math.degrees(angle[-1] - angle[0]):.2f} deg",
+        f"cap pressure {p_cap[0]:.2f} -> {p_cap[-1]:.2f} bar (highest {p_cap.max():.2f}), "
+        f"rod pressure {p_rod[0]:.2f} -> {p_rod[-1]:.2f} bar (lowest {p_rod.min():.2f})",
+        f"seal sticking: {periods}; largest friction {np.max(np.abs(results['lift.friction'])):.1f} N"])
 
 
 def main(argv: list[str] | None = None) -> jp.Results:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=None, help="folder for the figure and the NetCDF file")
-    parser.add_argument("--t-end", type=float, default=T_END, help="simulated time [s]")
-    args = parser.parse_args(argv)
-    results = simulate(build_model(), args.t_end)
-    stroke, angle = results["lift.stroke"], results["boom.angle"]
-    p_cap, p_rod = results["lift.p_cap"], results["lift.p_rod"]
-    print(results)
-    print(f"stroke {stroke[0] * 1e3:.1f} -> {stroke[-1] * 1e3:.1f} mm (the valve commands "
-          f"{COMMANDED_STROKE * 1e3:.1f} mm); boom raised {math.degrees(angle[-1] - angle[0]):.2f} deg")
-    print(f"cap pressure {p_cap[0] / 1e5:.2f} -> {p_cap[-1] / 1e5:.2f} bar (highest {p_cap.max() / 1e5:.2f}), "
-          f"rod pressure {p_rod[0] / 1e5:.2f} -> {p_rod[-1] / 1e5:.2f} bar (lowest {p_rod.min() / 1e5:.2f})")
-    periods = ", ".join(f"{a:.3f}-{b:.3f} s" for a, b in stick_periods(results))
-    print(f"seal sticking: {periods}; largest friction {np.max(np.abs(results['lift.friction'])):.1f} N")
-    stats = results.statistics
-    print(f"steps {stats['accepted_steps']} accepted / {stats['rejected_steps']} rejected, "
-          f"wall time {results.wall_time:.3f} s")
-    if args.out is not None:
-        args.out.mkdir(parents=True, exist_ok=True)
-        results.save(args.out / "hydraulic_boom.nc")
-        print(f"wrote {write_figure(results, args.out / 'hydraulic_boom.png')}")
+    out = parser.parse_args(argv).out
+    results = simulate(build_model())
+    print(report(results))
+    if out is not None:
+        from jointplay import plots
+
+        results.save(plots.figure_folder(out) / "hydraulic_boom.nc")
+        print(f"wrote {plots.time_histories(results, FIGURE_CHANNELS, out / 'hydraulic_boom.png')}")
     return results
 
 

@@ -33,6 +33,7 @@ from reference_hydraulic import (
     simulate,
     volumes,
 )
+from test_model_files import problems  # a model file's ModelError messages, one per problem
 
 BOOM = Path(__file__).resolve().parents[2] / "examples" / "hydraulic_boom.toml"
 P = CylinderParameters()  # bore 80 mm, rod 45 mm, stroke 0.5 m, 0.1 L dead volumes, 1 GPa, 20 kg, paper 002 seal
@@ -172,15 +173,6 @@ def test_upright_cylinder_with_closed_chambers_settles_where_the_pressures_carry
 
 # bad input ---------------------------------------------------------------------
 
-def problems(overrides: list[str] | None = None, text: str | None = None) -> list[str]:
-    with pytest.raises(jp.ModelError) as info:
-        if text is None:
-            jp.load(BOOM, overrides or [])
-        else:
-            jp.loads(text)
-    return [str(problem) for problem in info.value.problems]
-
-
 @pytest.mark.parametrize("override, message", [
     ("forces.lift.rod_side_area=31.17 cm^2",
      "forces.lift.rod_side_area: must be smaller than piston_area = 31.17 cm^2 (it is the annulus, the piston area "
@@ -202,12 +194,13 @@ def problems(overrides: list[str] | None = None, text: str | None = None) -> lis
      "forces.lift.cap_inflow.values[3]: must be a volume flow (e.g. \"10 L/min\"), got '1 L', which is a volume"),
 ])
 def test_bad_cylinder_input_gives_one_located_message(override, message):
-    assert problems([override]) == [message]
+    assert problems([override], BOOM) == [message]
 
 
-def test_a_missing_bulk_modulus_says_what_is_expected():
-    text = BOOM.read_text().replace('bulk_modulus = "1.5 GPa"\n', "")
-    assert problems(text=text) == ['forces.lift.bulk_modulus: missing required value (a bulk modulus, e.g. "1.5 GPa")']
+def test_a_missing_bulk_modulus_says_what_is_expected(tmp_path):
+    path = tmp_path / "boom.toml"
+    path.write_text(BOOM.read_text().replace('bulk_modulus = "1.5 GPa"\n', ""))
+    assert problems([], path) == ['forces.lift.bulk_modulus: missing required value (a bulk modulus, e.g. "1.5 GPa")']
 
 
 def test_the_same_bad_input_in_python_gives_the_same_message():
