@@ -260,7 +260,7 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
     free = dof - 2 * len(clearance)
     states = info.get("n_element_states", 0)
     out.print(f"coordinates {info['n_coordinates']}, "
-              + (f"element states {states} (pressures, seal deflections), " if states else "")
+              + (f"element states {states}, " if states else "")
               + f"constraint equations {info['n_equations']}, "
               f"degrees of freedom {dof} ({2 * len(clearance)} from {len(clearance)} clearance joint(s), "
               f"{free} not driven)")

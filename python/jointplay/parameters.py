@@ -26,6 +26,7 @@ regenerate ``docs/model-file-reference.md`` and use every new key in ``tests/fix
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from typing import Any
 
@@ -101,6 +102,7 @@ class Param:
 
 #: How a :class:`Relation` compares two keys, and how its message says it.
 RELATIONS = {"<": "smaller than", "<=": "at most", ">": "greater than", ">=": "at least"}
+_COMPARE = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge}
 
 
 @dataclass(frozen=True, eq=False)
@@ -116,7 +118,7 @@ class Relation:
     why: str = ""
 
     def holds(self, value: float, other: float) -> bool:
-        return {"<": value < other, "<=": value <= other, ">": value > other, ">=": value >= other}[self.op]
+        return _COMPARE[self.op](value, other)
 
     def text(self) -> str:
         """``rod_side_area < piston_area (it is the annulus)``, for the reference."""
