@@ -568,8 +568,9 @@ HYDRAULIC_CYLINDER = Table("hydraulic_cylinder", "Double-acting single-rod hydra
     Param("bulk_modulus", "pressure", "effective bulk modulus beta of the liquid, with entrained air and the "
           "compliance of barrel and hoses (mineral oil 1.5-1.8 GPa, less in machines)", gt=0,
           example='a bulk modulus, e.g. "1.5 GPa"'),
-    Param("seal_friction", "law", 'friction of the seals, e.g. `{ law = "lugre_seal" }` for paper 002\'s seal',
-          None, of="seal_friction", default_text="none (frictionless seals)"),
+    Param("seal_friction", "law", 'friction of the seals: `"lugre_seal"` (paper 002\'s seal) or `{ law = '
+          '"lugre_seal", ... }`; `"none"` or left out: frictionless', None, of="seal_friction",
+          default_text="none (frictionless seals)"),
     Param("cap_inflow", "function", "volume flow into the cap chamber (a valve or pump as a flow source)", None,
           of="volume flow", default_text="none (a closed chamber)"),
     Param("rod_inflow", "function", "volume flow into the rod chamber", None, of="volume flow",

@@ -203,6 +203,11 @@ def test_a_missing_bulk_modulus_says_what_is_expected(tmp_path):
     assert problems([], path) == ['forces.lift.bulk_modulus: missing required value (a bulk modulus, e.g. "1.5 GPa")']
 
 
+@pytest.mark.parametrize("seal", ["none", '{ law = "none" }'])
+def test_seal_friction_none_means_frictionless_seals_as_when_left_out(seal):
+    assert jp.load(BOOM, [f"forces.lift.seal_friction={seal}"]).to_spec()["forces"][0]["seal_friction"] is None
+
+
 def test_the_same_bad_input_in_python_gives_the_same_message():
     m = jp.load(BOOM).to_spec()["forces"][0]
     keys = {k: v for k, v in m.items() if k not in ("type", "name", "first", "second")}

@@ -158,8 +158,8 @@ class Builder:
         location = join(where, param.key)
         kind = param.kind
         if kind == "law":
-            if raw.get(param.key) is None and param.default is None and not param.required:
-                return None  # an optional law not given (frictionless seals)
+            if param.default is None and not param.required and raw.get(param.key) in (None, "none", {"law": "none"}):
+                return None  # an optional law not given, or "none" (frictionless seals)
             law = self.law(raw, param, where)
             return _FAILED if law is None else law
         if value is None:
