@@ -47,6 +47,28 @@ def test_check_prints_the_assembled_mechanism():
     assert result.output.rstrip().endswith("ok")
 
 
+def test_check_prints_a_hydraulic_cylinder_and_counts_its_states():
+    result = invoke("check", str(ROOT / "examples" / "hydraulic_boom.toml"))
+    assert result.exit_code == 0
+    output = " ".join(result.output.replace("\u2502", " ").split())  # rich wraps long cells between borders
+    for words in ("lift", "hydraulic_cylinder", "ground.C -> boom.R", "A1 31.17 cm^2", "A2 21.55 cm^2",
+                  "stroke 100 of 500 mm", "18.12 / 10 bar", "LuGre seal", "cap and rod inflow",
+                  "coordinates 3, element states 3", "degrees of freedom 1"):
+        assert words in output, words
+
+
+def test_plot_draws_the_pressures_and_stroke_of_a_hydraulic_cylinder(tmp_path):
+    results = tmp_path / "boom.nc"
+    assert invoke("run", str(ROOT / "examples" / "hydraulic_boom.toml"), "-o", str(results),
+                  "--t-end", "1 s").exit_code == 0
+    from jointplay import open_results
+    from jointplay.plots import default_channels
+
+    assert default_channels(open_results(results))[:3] == ["lift.p_cap", "lift.p_rod", "lift.stroke"]
+    assert invoke("plot", str(results), "-o", str(tmp_path / "figures")).exit_code == 0
+    assert (tmp_path / "figures" / "time_histories.png").stat().st_size > 10_000
+
+
 def test_check_reports_each_problem_and_exits_2():
     result = invoke("check", DRY, "--set", "joints.B.clearance=-0.1 mm", "--set", "bodies.crank.mass=5 mm")
     assert result.exit_code == 2

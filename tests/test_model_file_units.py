@@ -99,8 +99,8 @@ def test_out_of_range_bare_value_is_shown_in_the_declared_unit():
 @pytest.mark.parametrize("units, message", [
     ('lenght = "mm"', 'units.lenght: unknown kind of quantity (did you mean "length"?); kinds: length, mass, '
                       'inertia, time, angle, angular_velocity, angular_acceleration, velocity, acceleration, force, '
-                      'torque, stiffness, damping, rotational_stiffness, rotational_damping, pressure, viscosity, '
-                      'frequency'),
+                      'torque, stiffness, damping, rotational_stiffness, rotational_damping, area, volume, '
+                      'volume_flow, pressure, viscosity, frequency'),
     ('length = "kg"', "units.length: must be a length (e.g. \"0.5 mm\"), got 'kg', which is a mass"),
     ('mass = "1 kg"', "units.mass: must be a unit without a number, e.g. \"kg\", got '1 kg'"),
     ("time = 0.001", 'units.time: must be a unit of time as a string, e.g. "ms", got 0.001'),

@@ -211,6 +211,12 @@ def kitchen_sink() -> jp.Model:
     m.add_rotational_spring_damper("coil", "ground", "bar", stiffness=2.0, damping=0.01, free_angle=0.1)
     m.add_point_force("wind", "arm.end", fx=fn.sine(1.0, 50.0, phase=0.3), fy=fn.polynomial([0.0, 10.0, -5.0]))
     m.add_torque("motor", "bar", fn.table([0.0, 0.005, 0.01], [0.0, 0.1, 0.0]))
+    m.add_ground_point("base", (-0.5, -0.3))
+    m.add_hydraulic_cylinder("ram", "ground.base", "block.c", piston_area="20 cm^2", rod_side_area="10 cm^2",
+                             stroke_length="300 mm", cap_dead_volume="1 L", rod_dead_volume="1 L",
+                             initial_stroke="100 mm", cap_pressure="100 bar", rod_pressure="200 bar",
+                             bulk_modulus="1.5 GPa", seal_friction=laws.lugre_seal(static_force="400 N"),
+                             cap_inflow=fn.sine(1e-5, 100.0), rod_inflow="-0.1 L/min")
     return m
 
 

@@ -43,7 +43,8 @@ def test_reference_lists_every_key_of_every_table():
 BUILDER_METHODS = {"add_body": p.BODY, "add_revolute": p.REVOLUTE, "add_translational": p.TRANSLATIONAL,
                    "add_fixed": p.FIXED, "add_spring_damper": p.SPRING_DAMPER,
                    "add_rotational_spring_damper": p.ROTATIONAL_SPRING_DAMPER, "add_point_force": p.POINT_FORCE,
-                   "add_torque": p.TORQUE, "add_clearance_revolute": p.CLEARANCE_REVOLUTE}
+                   "add_torque": p.TORQUE, "add_clearance_revolute": p.CLEARANCE_REVOLUTE,
+                   "add_hydraulic_cylinder": p.HYDRAULIC_CYLINDER}
 
 
 def _arguments(function) -> dict[str, inspect.Parameter]:
@@ -89,7 +90,8 @@ LAW_HELPERS.update({("stiffness", "hertz_cylinder"): laws.hertz_cylinder,
                     ("friction", "ambrosio"): laws.ambrosio, ("friction", "threlfall"): laws.threlfall,
                     ("friction", "stiction"): laws.stiction, ("transition", "switch"): laws.switch_transition,
                     ("transition", "flores"): laws.flores_transition,
-                    ("transition", "wang_improved"): laws.wang_transition})
+                    ("transition", "wang_improved"): laws.wang_transition,
+                    ("seal_friction", "lugre_seal"): laws.lugre_seal})
 SAMPLES = {"dimensionless": 0.5, "velocity": 2e-3, "length": 3e-6}  # a value of each kind, inside every range
 
 
@@ -137,6 +139,8 @@ m.add_spring_damper("spring", "bar.tip", "block.c", free_length=0.4)
 m.add_rotational_spring_damper("coil", "ground", "bar")
 m.add_point_force("push", "bob.top")
 m.add_torque("motor", "bar", 0.1)
+m.add_hydraulic_cylinder("ram", "ground.rail", "block.c", piston_area=2e-3, rod_side_area=1e-3, stroke_length=0.2,
+                         cap_dead_volume="0.1 L", rod_dead_volume="0.1 L", initial_stroke=0.0, bulk_modulus=1.5e9)
 """
 
 WRITTEN_IN_A_FILE = """
@@ -195,6 +199,17 @@ point = "bob.top"
 type = "torque"
 body = "bar"
 torque = "0.1 N m"
+[forces.ram]
+type = "hydraulic_cylinder"
+first = "ground.rail"
+second = "block.c"
+piston_area = "20 cm^2"
+rod_side_area = "10 cm^2"
+stroke_length = "0.2 m"
+cap_dead_volume = "0.1 L"
+rod_dead_volume = "0.1 L"
+initial_stroke = 0
+bulk_modulus = "1.5 GPa"
 """
 
 
@@ -264,8 +279,8 @@ def _optional_keys(spec: dict):
             for param in table.params:
                 if param.in_spec and not param.required and param.default is not None and param.kind != "points":
                     yield (section, k), param.key, param
-                if param.kind == "law":
-                    law_table = p.LAWS[param.of][entry[param.key]["law"]]
+                if param.kind == "law" and entry[param.key] is not None:
+                    law_table = p.LAWS[param.of][p.tagged_law(entry[param.key], param.of)["law"]]
                     for sub in law_table.params:
                         if not sub.required and sub.default is not None and sub.key in entry[param.key]:
                             yield (section, k, param.key), sub.key, sub

@@ -24,6 +24,14 @@ from jointplay.units import UnitError, declare_unit, model_file_units, per_time,
     ("10 N s/m", "damping", 10.0),
     ("50 N m/rad", "rotational stiffness", 50.0),
     ("50 %", "dimensionless", 0.5),
+    ("20 cm^2", "area", 20e-4),
+    ("3117 mm^2", "area", 3117e-6),
+    ("0.1 L", "volume", 1e-4),
+    ("250 cm^3", "volume", 250e-6),
+    ("10 L/min", "volume flow", 10e-3 / 60),
+    ("3 m^3/h", "volume flow", 3 / 3600),
+    ("200 bar", "pressure", 200e5),
+    ("1.5 GPa", "pressure", 1.5e9),
     (0.3, "mass", 0.3),
     (3, "length", 3.0),
     ("0.25", "length", 0.25),
@@ -40,6 +48,9 @@ def test_bare_numbers_are_si_exactly():
 @pytest.mark.parametrize("raw, kind, message", [
     ("5 kg", "length", "must be a length (e.g. \"0.5 mm\"), got '5 kg', which is a mass"),
     ("10 m/s", "length", "must be a length (e.g. \"0.5 mm\"), got '10 m/s', which is a velocity"),
+    ("20 bar", "area", "must be an area (e.g. \"20 cm^2\"), got '20 bar', which is a pressure"),
+    ("1 L", "area", "must be an area (e.g. \"20 cm^2\"), got '1 L', which is a volume"),
+    ("10 L", "volume flow", "must be a volume flow (e.g. \"10 L/min\"), got '10 L', which is a volume"),
     ("3 foo", "length", "has an unknown unit 'foo', got '3 foo'"),
     ("1 mm +", "length", "cannot be read as a number with a unit (e.g. \"0.5 mm\"), got '1 mm +'"),
     ("10 Hz", "angular velocity", "Hz is ambiguous for an angular speed; write rpm, rev/s or rad/s, got '10 Hz'"),
@@ -108,6 +119,14 @@ def test_bare_numbers_in_a_model_file_need_a_unit_unless_declared_or_zero():
         assert to_si("3 m", "length") == 3.0
         with pytest.raises(UnitError, match="declare \\[units\\] velocity"):
             to_si(1, "velocity")  # a declared length and time do not make a velocity
+        with pytest.raises(UnitError, match='e.g. "2 cm\\^2" \\(or declare \\[units\\] area = "cm\\^2"\\)'):
+            to_si(2, "area")  # nor a length an area
+    hydraulic = {"area": declare_unit("area", "cm^2"), "volume": declare_unit("volume", "L"),
+                 "volume_flow": declare_unit("volume_flow", "L/min")}
+    with model_file_units(hydraulic):
+        assert to_si(20, "area") == pytest.approx(20e-4, rel=1e-12)
+        assert to_si(0.1, "volume") == pytest.approx(1e-4, rel=1e-12)
+        assert to_si(10, "volume flow") == pytest.approx(10e-3 / 60, rel=1e-12)
     assert to_si(10, "length") == 10.0  # outside a model file: SI
 
 

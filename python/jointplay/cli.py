@@ -189,6 +189,31 @@ def _fmt(value: float, unit: str = "") -> str:
 
 # check -----------------------------------------------------------------------
 
+def _acts_on(force: dict) -> str:
+    """``ground.C -> boom.R``: the points and bodies a force element refers to, from its definition."""
+    from . import parameters as p
+
+    ends = [param.key for param in p.FORCES[force["type"]].params if param.kind in ("point", "body")]
+    return " -> ".join(force[key] for key in ends)
+
+
+def _force_details(force: dict) -> str:
+    """The main parameters of a force element, in the units one reads them in."""
+    kind = force["type"]
+    if kind == "spring_damper":
+        return f"k {_fmt(force['stiffness'], 'N/m')}, c {_fmt(force['damping'], 'N s/m')}"
+    if kind == "rotational_spring_damper":
+        return f"k {_fmt(force['stiffness'], 'N m/rad')}, c {_fmt(force['damping'], 'N m s/rad')}"
+    if kind != "hydraulic_cylinder":
+        return ""
+    inflows = [side for side in ("cap", "rod") if force[f"{side}_inflow"] is not None]
+    return (f"A1 {force['piston_area'] * 1e4:.4g} cm^2, A2 {force['rod_side_area'] * 1e4:.4g} cm^2, "
+            f"stroke {force['initial_stroke'] * 1e3:.4g} of {force['stroke_length'] * 1e3:.4g} mm, "
+            f"{force['cap_pressure'] / 1e5:.4g} / {force['rod_pressure'] / 1e5:.4g} bar, "
+            f"{'LuGre seal' if force['seal_friction'] else 'no seal friction'}, "
+            + (f"{' and '.join(inflows)} inflow" if inflows else "closed chambers"))
+
+
 @app.command()
 def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_default=False)],
           set_: SetOption = []) -> None:  # noqa: B006 (typer reads the default)
@@ -227,13 +252,16 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
                       f"{j['clearance'] * 1e3:g} mm", j["contact"]["law"], j["friction"]["law"])
         out.print(t)
     if spec["forces"]:
-        t = Table("force element", "type", title="force elements")
+        t = Table("force element", "type", "acts on", "details", title="force elements")
         for f in spec["forces"]:
-            t.add_row(f["name"], f["type"])
+            t.add_row(f["name"], f["type"], _acts_on(f), _force_details(f))
         out.print(t)
     dof = info["degrees_of_freedom"]
     free = dof - 2 * len(clearance)
-    out.print(f"coordinates {info['n_coordinates']}, constraint equations {info['n_equations']}, "
+    states = info.get("n_element_states", 0)
+    out.print(f"coordinates {info['n_coordinates']}, "
+              + (f"element states {states}, " if states else "")
+              + f"constraint equations {info['n_equations']}, "
               f"degrees of freedom {dof} ({2 * len(clearance)} from {len(clearance)} clearance joint(s), "
               f"{free} not driven)")
     if info.get("redundant_equations"):

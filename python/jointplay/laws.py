@@ -1,4 +1,5 @@
-"""Contact, stiffness and friction laws of a clearance joint, as plain data.
+"""Contact, stiffness and friction laws of a clearance joint and the seal friction of a hydraulic cylinder,
+as plain data.
 
 See ``docs/theory/`` for the equation, units and source of each law. Every
 physical argument is a number in SI units, a string with a unit (``"0.1 mm/s"``,
@@ -83,6 +84,11 @@ stiction = _helper(p.FRICTION_LAWS["stiction"], "stiction", "friction")
 wang_transition = _helper(p.TRANSITION_LAWS["wang_improved"], "wang_transition", "transition")
 flores_transition = _helper(p.TRANSITION_LAWS["flores"], "flores_transition", "transition")
 switch_transition = _helper(p.TRANSITION_LAWS["switch"], "switch_transition", "transition")
+
+
+# seal friction of a hydraulic cylinder ---------------------------------------
+
+lugre_seal = _helper(p.SEAL_FRICTION_LAWS["lugre_seal"], "lugre_seal", "seal_friction")
 
 
 # lubrication ---------------------------------------------------------------

@@ -199,6 +199,7 @@ class Model:
     add_rotational_spring_damper = _adds(p.ROTATIONAL_SPRING_DAMPER, "forces", positional=2)
     add_point_force = _adds(p.POINT_FORCE, "forces")
     add_torque = _adds(p.TORQUE, "forces")
+    add_hydraulic_cylinder = _adds(p.HYDRAULIC_CYLINDER, "forces", positional=2)
 
     def _add(self, section: str, table: p.Table, name: str, values: dict[str, Any], hint: str) -> str:
         from .modelfile import arguments

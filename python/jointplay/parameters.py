@@ -17,13 +17,16 @@ Defaults are in SI units. ``import jointplay`` reads this module, so it loads ne
 To add an element (a force element, say): define its :class:`Table` here (``tag="type"``, its keys in the
 order of the core's spec) and add it to :data:`FORCES`; add one builder line to :class:`jointplay.Model`
 (``add_x = _adds(p.X, "forces", positional=2)``); the core's ``ForceSpec`` gets a variant with the same keys.
-A new law family goes into :data:`LAWS`, with one helper line per law in :mod:`jointplay.laws`. Then
+A bound between two keys of a table (``rod_side_area < piston_area``) is a :class:`Relation` of the table: model
+files and the builder check it, the reference lists it. A new law family goes into :data:`LAWS`, with one helper
+line per law in :mod:`jointplay.laws`. Then
 regenerate ``docs/model-file-reference.md`` and use every new key in ``tests/fixtures/every_key.toml``
 (``tests/test_parameters.py`` says what is missing).
 """
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 from typing import Any
 
@@ -97,6 +100,31 @@ class Param:
         return {n: getattr(self, n) for n in names if getattr(self, n) is not None}
 
 
+#: How a :class:`Relation` compares two keys, and how its message says it.
+RELATIONS = {"<": "smaller than", "<=": "at most", ">": "greater than", ">=": "at least"}
+_COMPARE = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge}
+
+
+@dataclass(frozen=True, eq=False)
+class Relation:
+    """A bound of one key by another key of the same table (``rod_side_area < piston_area``), checked once
+    both are valid; a problem at ``key`` when it fails."""
+
+    key: str
+    #: one of :data:`RELATIONS`
+    op: str
+    other: str
+    #: why the bound holds, for the message (``"it is the annulus"``)
+    why: str = ""
+
+    def holds(self, value: float, other: float) -> bool:
+        return _COMPARE[self.op](value, other)
+
+    def text(self) -> str:
+        """``rod_side_area < piston_area (it is the annulus)``, for the reference."""
+        return f"`{self.key}` {self.op} `{self.other}`" + (f" ({self.why})" if self.why else "")
+
+
 @dataclass(frozen=True, eq=False)
 class Table:
     """The keys of one table, or of one variant of a table tagged by ``type``, ``law`` or ``kind``."""
@@ -112,6 +140,8 @@ class Table:
     aliases: tuple[str, ...] = ()
     #: True when absent keys stay absent (``[simulation]``: the defaults apply when a run starts)
     sparse: bool = False
+    #: bounds between keys, checked after each key's own range
+    relations: tuple[Relation, ...] = ()
 
     def __getitem__(self, key: str) -> Param:
         for p in self.params:
@@ -264,19 +294,66 @@ TRANSITION_LAWS = family(
           ), tag="law"),
 )
 
+PAPER002_SEAL = "paper 002, section 2.2: its rod seal"
+
+SEAL_FRICTION_LAWS = family(
+    Table("lugre_seal", "LuGre bristle friction of the cylinder's seals: stiction, presliding and the Stribeck drop "
+          "from the static to the kinetic force; the bristle deflection is a state of the simulation "
+          "(docs/theory/friction-lugre.md). The defaults are paper 002's seal forces with chosen bristle dynamics.", (
+        Param("static_force", "force", "static (break-away) force F_S, at least `kinetic_force`", 385.0, gt=0,
+              why=PAPER002_SEAL),
+        Param("kinetic_force", "force", "kinetic (Coulomb) force F_C, reached in steady sliding", 340.0, gt=0,
+              why=PAPER002_SEAL),
+        Param("stribeck_velocity", "velocity", "Stribeck velocity v_S: the friction falls from F_S towards F_C "
+              "over it", 3e-5, gt=0, why="chosen: least-squares fit to paper 002's friction curve, which falls "
+                                         "from F_S at 0.01 mm/s to F_C at 0.05 mm/s"),
+        Param("bristle_stiffness", "stiffness", "bristle stiffness sigma0; F_S/sigma0 is the largest bristle "
+              "deflection", 1e7, gt=0, why="chosen: 38.5 um largest deflection, presliding of some tens of um "
+                                          "as in elastomer seals"),
+        Param("bristle_damping", "damping", "bristle damping sigma1 at rest, at most 4 sqrt(2e) F_C / "
+              "`damping_velocity` (beyond it the law could create energy)", 1e4, ge=0,
+              why="chosen: damping ratio 0.35 of the bristle mode of a 20 kg rod"),
+        Param("viscous_coefficient", "damping", "viscous coefficient sigma2", 0.0, ge=0,
+              why="chosen: paper 002's seal law has no viscous term"),
+        Param("damping_velocity", "velocity", "velocity v_D over which the bristle damping fades", 1e-3, gt=0,
+              why="chosen: damps the rod's vibrations on the oil spring up to mm/s, adds at most "
+                  "0.91 sigma1 v_D (9 N) to the friction in a transient"),
+        Param("stick_velocity", "velocity", "stroke rate below which the `stick` channel reports the seal "
+              "sticking (it does not change the force)", 1e-5, gt=0,
+              why="chosen: paper 002's stiction tolerance, 0.01 mm/s, reused as the stick threshold"),
+    ), tag="law", aliases=("lugre",), relations=(
+        Relation("static_force", ">=", "kinetic_force", "the break-away force is not below the sliding force"),)),
+)
+
+#: Law families whose core spec has no ``law`` tag, with the one law each holds: the core's seal friction
+#: is the LuGre table itself. In a file the tag may be left out there too.
+UNTAGGED_LAWS = {"seal_friction": "lugre_seal"}
+
+
 def core_law(law: dict) -> dict:
     """A law's dict as the core reads it: the Hertz-type law with a chosen exponent is
-    ``hertz_cylinder_exponent`` there (``hertz_cylinder`` with ``exponent`` in a model file)."""
+    ``hertz_cylinder_exponent`` there (``hertz_cylinder`` with ``exponent`` in a model file), and the
+    laws of :data:`UNTAGGED_LAWS` lose their tag."""
     if law["law"] in ("hertz_cylinder", "hertz_cylinder_exponent"):
         exponent = law.get("exponent")
         return {"law": "hertz_cylinder"} if exponent is None else {"law": "hertz_cylinder_exponent",
                                                                    "exponent": exponent}
+    if any(law["law"] in LAWS[key] for key in UNTAGGED_LAWS):
+        return {key: value for key, value in law.items() if key != "law"}
     return law
 
 
-#: Law families by the key of a clearance joint (or lubrication table) that holds them.
+def tagged_law(law: dict, family: str) -> dict:
+    """A law's dict with its ``law`` tag: an untagged one of a family of :data:`UNTAGGED_LAWS` (as the core
+    reads it, or as a file may write it) is that family's law; other dicts are returned as they are."""
+    if family in UNTAGGED_LAWS and "law" not in law:
+        return {"law": UNTAGGED_LAWS[family], **law}
+    return law
+
+
+#: Law families by the key of a clearance joint, lubrication table or hydraulic cylinder that holds them.
 LAWS = {"contact": CONTACT_LAWS, "stiffness": STIFFNESS_LAWS, "friction": FRICTION_LAWS,
-        "transition": TRANSITION_LAWS}
+        "transition": TRANSITION_LAWS, "seal_friction": SEAL_FRICTION_LAWS}
 
 FILM_MODELS = ("squeeze_film_short", "squeeze_film_long", "hamrock_short", "hamrock_long", "frene_short",
                "frene_long", "pinkus_sternlicht_long", "reynolds_exact", "reynolds_table")
@@ -459,7 +536,51 @@ TORQUE = Table("torque", "A torque on a body, counter-clockwise positive.", (
           example='a torque or a function of time, e.g. "2 N m"'),
 ), tag="type")
 
-FORCES = family(SPRING_DAMPER, ROTATIONAL_SPRING_DAMPER, POINT_FORCE, TORQUE)
+#: The lowest gauge pressure of a chamber [Pa]: absolute zero under a standard atmosphere (the core's floor;
+#: below it the liquid would be in tension and the run stops).
+PRESSURE_FLOOR = -101325.0
+_START_PRESSURE = ("ambient; give the pressures that balance the load at the start "
+                   "(p_cap piston_area - p_rod rod_side_area = load), or the rod jumps at t = 0")
+
+HYDRAULIC_CYLINDER = Table("hydraulic_cylinder", "Double-acting single-rod hydraulic cylinder between two points, "
+                           "acting along their line: barrel (cap end) at `first`, rod eye at `second`. Its force "
+                           "pushes the points apart when positive; the chamber pressures (and the seal's bristle "
+                           "deflection) are states of the simulation (docs/theory/hydraulic-cylinder.md).", (
+    _point("first", "barrel attachment (cap end)"),
+    _point("second", "rod-eye attachment"),
+    Param("piston_area", "area", "piston (cap-side) area A1 = pi D^2/4", gt=0,
+          example='an area, e.g. "31.17 cm^2" (63 mm bore)'),
+    Param("rod_side_area", "area", "rod-side (annulus) area A2 = pi (D^2 - d^2)/4, smaller than `piston_area`",
+          gt=0, example='an area, e.g. "21.55 cm^2" (63 mm bore, 35 mm rod)'),
+    Param("stroke_length", "length", "stroke S: the rod moves from 0 (fully retracted) to S", gt=0,
+          example='a length, e.g. "500 mm"'),
+    Param("cap_dead_volume", "volume", "volume of the cap chamber at stroke 0 (ports, hoses); sets the stiffness "
+          "near the end", gt=0, example='a volume, e.g. "0.1 L"'),
+    Param("rod_dead_volume", "volume", "volume of the rod chamber at full stroke (ports, hoses)", gt=0,
+          example='a volume, e.g. "0.1 L"'),
+    Param("initial_stroke", "length", "stroke at the positions given in the model (0: fully retracted), at most "
+          "`stroke_length`; it fixes where the stroke is counted from", ge=0,
+          example='a length, e.g. "100 mm"'),
+    Param("cap_pressure", "pressure", "gauge pressure of the cap chamber at the start", 0.0, ge=PRESSURE_FLOOR,
+          why=_START_PRESSURE),
+    Param("rod_pressure", "pressure", "gauge pressure of the rod chamber at the start", 0.0, ge=PRESSURE_FLOOR,
+          why=_START_PRESSURE),
+    Param("bulk_modulus", "pressure", "effective bulk modulus beta of the liquid, with entrained air and the "
+          "compliance of barrel and hoses (mineral oil 1.5-1.8 GPa, less in machines)", gt=0,
+          example='a bulk modulus, e.g. "1.5 GPa"'),
+    Param("seal_friction", "law", 'friction of the seals: `"lugre_seal"` (paper 002\'s seal) or `{ law = '
+          '"lugre_seal", ... }`; `"none"` or left out: frictionless', None, of="seal_friction",
+          default_text="none (frictionless seals)"),
+    Param("cap_inflow", "function", "volume flow into the cap chamber (a valve or pump as a flow source)", None,
+          of="volume flow", default_text="none (a closed chamber)"),
+    Param("rod_inflow", "function", "volume flow into the rod chamber", None, of="volume flow",
+          default_text="none (a closed chamber)"),
+), tag="type", relations=(
+    Relation("rod_side_area", "<", "piston_area", "it is the annulus, the piston area less the rod's"),
+    Relation("initial_stroke", "<=", "stroke_length", "the rod cannot be beyond full extension"),
+))
+
+FORCES = family(SPRING_DAMPER, ROTATIONAL_SPRING_DAMPER, POINT_FORCE, TORQUE, HYDRAULIC_CYLINDER)
 
 
 # simulation -----------------------------------------------------------------

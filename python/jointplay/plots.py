@@ -66,8 +66,8 @@ def guess_crank(results: Results) -> str | None:
 
 def default_channels(results: Results) -> list[str]:
     """Key channels: slider accelerations, clearance-joint contact forces and eccentricity ratios (with the
-    film force and minimum film thickness of a lubricated joint), ideal joint reactions, driver efforts
-    (at most eight)."""
+    film force and minimum film thickness of a lubricated joint), hydraulic-cylinder pressures and strokes,
+    ideal joint reactions, driver efforts (at most eight)."""
     spec = results.spec or {}
     chosen: list[str] = []
     for joint in spec.get("joints", []):
@@ -77,6 +77,9 @@ def default_channels(results: Results) -> list[str]:
         if f"{joint}.fh" in results:
             chosen += [f"{joint}.fh", f"{joint}.film_min"]
         chosen += [f"{joint}.fn", f"{joint}.eccentricity_ratio"]
+    for force in spec.get("forces", []):
+        if force["type"] == "hydraulic_cylinder":
+            chosen += [f"{force['name']}.p_cap", f"{force['name']}.p_rod", f"{force['name']}.stroke"]
     chosen += [f"{j['name']}.f" for j in spec.get("joints", []) if j["type"] != "clearance_revolute"]
     for driver in spec.get("drivers", []):
         chosen += [f"{driver['name']}.torque", f"{driver['name']}.force"]

@@ -143,6 +143,7 @@ class Builder:
         the core reads, in its order, in SI units, references checked; ``given`` holds keys read already.
         None when a function of time or a law could not be read."""
         out: dict[str, Any] = {"type": table.name, "name": name} if table.tag == "type" else {"name": name}
+        self.relations(table, t, where)
         for param in table.params:
             if not param.in_spec:
                 continue
@@ -157,6 +158,8 @@ class Builder:
         location = join(where, param.key)
         kind = param.kind
         if kind == "law":
+            if param.default is None and not param.required and raw.get(param.key) in (None, "none", {"law": "none"}):
+                return None  # an optional law not given, or "none" (frictionless seals)
             law = self.law(raw, param, where)
             return _FAILED if law is None else law
         if value is None:
@@ -177,6 +180,15 @@ class Builder:
         elif kind == "flag":
             return bool(value)
         return float(value) if isinstance(value, float) else value
+
+    def relations(self, table: p.Table, t: Strict, where: str) -> None:
+        """The bounds between keys of a validated table (``rod_side_area < piston_area``)."""
+        for relation in table.relations:
+            value, other = getattr(t, relation.key), getattr(t, relation.other)
+            if value is not None and other is not None and not relation.holds(value, other):
+                why = f" ({relation.why})" if relation.why else ""
+                self.problem(join(where, relation.key), f"must be {p.RELATIONS[relation.op]} {relation.other} = "
+                                                        f"{_shown(other)}{why}, got {_shown(value)}")
 
     # sections --------------------------------------------------------------
 
@@ -363,12 +375,14 @@ class Builder:
         if not isinstance(value, dict):
             self.problem(location, f"must be a table such as {{ law = \"{next(iter(laws))}\" }}, got {value!r}")
             return None
+        value = p.tagged_law(value, param.of)
         law = self.tagged(value, "law", laws, location)
         if law is None:
             return None
         table = self.validate(laws[law], value, location, hint=f"{law}: ")
         if table is None:
             return None
+        self.relations(p.LAWS[param.of][law], table, location)
         # every key of the law, those not given with their defaults (None: "not given", sent as null)
         return p.core_law({k: (float(v) if isinstance(v, float) else v) for k, v in table.model_dump().items()})
 
@@ -444,4 +458,9 @@ def _pair(value: Any, where: str) -> tuple[float, float]:
 
 def _text(value: float) -> str:
     return f"{value * 1e3:.6g} mm"
+
+
+def _shown(value: Any) -> str:
+    """A validated quantity as the user wrote it."""
+    return value.text if isinstance(value, Q) else f"{value:g}"
 

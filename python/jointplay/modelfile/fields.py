@@ -60,9 +60,14 @@ def convert(raw: Any, kind: str | Kind, *, gt: float | None = None, ge: float | 
     if not bounds_ok:
         if interval is not None:
             raise fail(f"must lie in {interval}, got {text}")
+        unit = spec.si.replace("*", " ")
+
+        def bound(b: float) -> str:  # a bound other than zero in the SI unit of the kind
+            return f"{b:g} {unit}" if b != 0 and unit else f"{b:g}"
+
         rule = " and ".join(r for r in [
-            f"> {gt:g}" if gt is not None else "", f">= {ge:g}" if ge is not None else "",
-            f"< {lt:g}" if lt is not None else "", f"<= {le:g}" if le is not None else ""] if r)
+            f"> {bound(gt)}" if gt is not None else "", f">= {bound(ge)}" if ge is not None else "",
+            f"< {bound(lt)}" if lt is not None else "", f"<= {bound(le)}" if le is not None else ""] if r)
         raise fail(f"must be {rule}, got {text}")
     return Q(value, text)
 

@@ -41,7 +41,7 @@ def kind_text(param: p.Param) -> str:
         "joint": lambda: "joint name", "text": lambda: "text", "flag": lambda: "`true` or `false`",
         "count": lambda: "whole number > 0", "size": lambda: 'size: bytes, or `"500 MB"`, `"2 GiB"`',
         "choice": lambda: _choices(param), "points": lambda: "table of named length vectors [m]",
-        "grid": lambda: "`[n, n]` whole numbers", "law": lambda: f"table: a {of} law (below)",
+        "grid": lambda: "`[n, n]` whole numbers", "law": lambda: f"table: a {of.replace('_', ' ')} law (below)",
         "table": lambda: f"table: {of.name} (below)",
         "function": lambda: ("function of time: an angle [rad] or a length [m]" if of == "coordinate"
                              else f"function of time: {_quantity(of)}"),
@@ -84,11 +84,20 @@ def table_text(table: p.Table, heading: str) -> str:
         meaning = param.doc + ("" if param.in_spec else " (read by the front end; not sent to the core)")
         out.append("| " + " | ".join(_cell(c) for c in (f"`{param.key}`", kind_text(param), p.range_text(param),
                                                              default, meaning)) + " |")
+    if table.relations:
+        out += ["", "Also checked: " + "; ".join(relation.text() for relation in table.relations) + "."]
     return "\n".join(out)
 
 
 def _family(tables: dict[str, p.Table], level: str) -> list[str]:
     return [table_text(t, f'{level} `{t.tag} = "{t.name}"`') for t in p.variants(tables)]
+
+
+def _family_heading(key: str) -> str:
+    heading = f"### {key.replace('_', ' ').capitalize()} laws\n\n`{key} = {{ law = ..., ... }}`"
+    if key in p.UNTAGGED_LAWS:
+        heading += f" (`law` may be left out: `{p.UNTAGGED_LAWS[key]}` is the only one)"
+    return heading + "."
 
 
 def text() -> str:
@@ -97,7 +106,7 @@ def text() -> str:
                      f"{' and '.join(f'`{m}`' for m in p.REYNOLDS_MODELS)} models; given with a closed-form model "
                      "they are an error.")
     laws = [block for key, tables in p.LAWS.items()
-            for block in (f"### {key.capitalize()} laws\n\n`{key} = {{ law = ..., ... }}`.", *_family(tables, "####"))]
+            for block in (_family_heading(key), *_family(tables, "####"))]
     blocks = [HEADER,
               table_text(p.MODEL, "## `[model]`"),
               table_text(p.GROUND, "## `[ground]`"),
@@ -113,8 +122,9 @@ def text() -> str:
               *laws,
               table_text(p.DRIVER, "## `[drivers.NAME]`"),
               "## Functions of time\n\n`function = { kind = ..., ... }` of a driver, `fx`, `fy` of a point "
-              "force, `torque` of a torque; a bare quantity is a constant. \"value\" has the unit of what is "
-              "prescribed: rad or m for a driver, N for a point force, N m for a torque.",
+              "force, `torque` of a torque, `cap_inflow`, `rod_inflow` of a hydraulic cylinder; a bare quantity is "
+              "a constant. \"value\" has the unit of what is prescribed: rad or m for a driver, N for a point "
+              "force, N m for a torque, m^3/s for an inflow.",
               *_family(p.FUNCTIONS, "###"),
               "## `[forces.NAME]`\n\nEvery force element has a `type`.",
               *_family(p.FORCES, "###"),

@@ -99,10 +99,11 @@ def function(f: dict, kind: str) -> dict:
     return out
 
 
-def _law(law: dict | str | None, laws: dict[str, p.Table]) -> dict:
-    """A law's table; the core's ``hertz_cylinder_exponent`` is ``hertz_cylinder`` with ``exponent``."""
-    law = {"law": law} if isinstance(law, str) else dict(law)
-    table = laws[law["law"]]
+def _law(law: dict | str, family: str) -> dict:
+    """A law's table; the core's ``hertz_cylinder_exponent`` is ``hertz_cylinder`` with ``exponent``, and an
+    untagged law (the core's seal friction) gets its tag."""
+    law = {"law": law} if isinstance(law, str) else p.tagged_law(dict(law), family)
+    table = p.LAWS[family][law["law"]]
     law["law"] = table.name
     return {key: (value if key == "law" else _value_of(table[key], value)) for key, value in law.items()}
 
@@ -122,8 +123,8 @@ def _lubrication(lub: dict) -> dict:
 
 def _value_of(param: p.Param, value: Any) -> Any:
     """The TOML value of one key of the core's spec (None: the key is left out)."""
-    if param.kind == "law":
-        return _law(param.default if value is None else value, p.LAWS[param.of])
+    if param.kind == "law" and (value is not None or param.default is not None):
+        return _law(param.default if value is None else value, param.of)
     if value is None:
         return None
     if param.kind == "vector":
