@@ -200,3 +200,17 @@ def test_figures_mark_the_tracked_peaks_that_coarse_samples_miss(dry_runs):
     assert tracked_peak_point(coarse, "slider.x") is None
     assert sampling_note(coarse) == f"{len(coarse)} samples saved every 1 ms"
     assert sampling_note(dry_runs[None]).endswith("samples, one per accepted step")
+
+
+def test_a_cylinders_peak_chamber_pressures_are_in_the_summary_whatever_the_output_step(tmp_path):
+    boom = ROOT / "examples" / "hydraulic_boom.toml"
+    coarse, fine = run(boom, 0.5).summary(), run(boom, None)
+    every_step = fine.summary()
+    for name in ("lift.p_cap", "lift.p_rod"):
+        # tracked at every step: the same for samples every 0.5 s and at every step, and at least
+        # the largest sample
+        assert coarse["peak_pressures"][name] == pytest.approx(every_step["peak_pressures"][name], rel=1e-9)
+        assert every_step["peak_pressures"][name] >= np.max(np.abs(fine[name]))
+    result = invoke("run", str(boom), "--output-step", "0.5 s", "-o", str(tmp_path / "boom.nc"))
+    assert result.exit_code == 0, result.output
+    assert "lift.p_cap" in result.output and "lift.p_rod" in result.output

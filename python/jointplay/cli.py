@@ -395,7 +395,7 @@ def print_summary(results) -> None:
     for name, value in s["point_accelerations"].items():
         at = s["point_acceleration_times"].get(name)
         peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"), _ms(at) if tracked else "(samples)")
-    for name, value in s["peak_forces"].items():
+    for name, value in [*s["peak_forces"].items(), *s["peak_pressures"].items()]:
         peaks.add_row(name, _fmt(value, results.unit(name)), _ms(s["peak_times"].get(name)))
     out.print(peaks)
     if s["clearance_joints"]:

@@ -242,7 +242,8 @@ class Results:
         """Headline numbers: peak |value| of every force, moment, acceleration and pressure channel
         (``peaks``, with their times in ``peak_times``), per clearance joint the impacts, time and
         fraction in contact, deepest penetration and, when lubricated, thinnest film and peak film
-        pressure; integrator statistics and wall time.
+        pressure; ``peak_forces`` and ``peak_pressures`` (hydraulic chambers) pick from ``peaks``;
+        integrator statistics and wall time.
 
         These come from :attr:`extrema`, tracked at every accepted step whatever the output step
         (``extrema_source`` is ``"accepted steps"``, ``steps`` their number), as do the peak
@@ -265,6 +266,7 @@ class Results:
         else:
             out["point_accelerations"], out["point_acceleration_times"] = self._sampled_point_accelerations()
         out["peak_forces"] = {n: v for n, v in out["peaks"].items() if n.rsplit(".", 1)[1] in FORCE_QUANTITIES}
+        out["peak_pressures"] = {n: v for n, v in out["peaks"].items() if n.rsplit(".", 1)[1] in PRESSURE_QUANTITIES}
         out["error"] = None if self.error is None else dict(self.error)
         out["statistics"] = dict(self.statistics)
         out["wall_time"] = self.wall_time
@@ -326,6 +328,9 @@ class Results:
 PEAK_UNITS = ("N", "N m", "m/s^2", "rad/s^2", "Pa")
 #: Quantities listed as forces (and torques) in the summary's ``peak_forces``.
 FORCE_QUANTITIES = ("f", "fn", "force", "torque")
+#: Quantities listed as chamber pressures in the summary's ``peak_pressures`` (a film's peak
+#: pressure is reported with its clearance joint).
+PRESSURE_QUANTITIES = ("p_cap", "p_rod")
 #: What the summary reports per clearance joint from :attr:`Results.extrema`.
 JOINT_KEYS = ("impacts", "contact_time", "contact_fraction", "max_penetration", "max_penetration_time",
               "max_eccentricity_ratio",
