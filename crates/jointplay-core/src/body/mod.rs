@@ -101,6 +101,20 @@ impl BodyKind {
         }
     }
 
+    /// Whether [`Self::position_rates`] is the identity `q_dot = v` (the engine then copies `v`).
+    pub fn has_identity_position_rates(&self) -> bool {
+        match self {
+            Self::PlanarRigid(_) => true,
+        }
+    }
+
+    /// Whether [`Self::add_inertial_forces`] adds anything (the engine skips it otherwise).
+    pub fn has_inertial_forces(&self) -> bool {
+        match self {
+            Self::PlanarRigid(_) => false,
+        }
+    }
+
     /// Adds the velocity-dependent inertial forces (gyroscopic, centrifugal
     /// terms of a moving frame) to the body's generalised forces `out` [N, N m].
     #[inline]

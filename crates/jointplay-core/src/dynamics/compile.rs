@@ -118,7 +118,7 @@ impl<'s> Compiler<'s> {
             let index = BodyIndex(k + 1);
             self.body_index.insert(&b.name, index);
             let kind = BodyKind::PlanarRigid(PlanarRigidBody::new(b.mass, b.inertia));
-            self.model.layout.push_body(kind.nq(), kind.nv());
+            self.model.layout.push_body(&kind);
             let MassBlock::ConstantDiagonal(inverse_mass) = kind.mass_block();
             self.model.inverse_mass.extend_from_slice(inverse_mass);
             self.model.initial_coordinates.extend([b.position[0], b.position[1], b.angle]);

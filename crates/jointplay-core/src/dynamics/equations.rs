@@ -134,8 +134,10 @@ fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> 
 /// force elements and clearance contacts (whose evaluations are kept in the workspace).
 fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
     ws.generalised_force.fill(0.0);
-    for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
-        body.kind.add_inertial_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
+    if model.layout.has_inertial_forces {
+        for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
+            body.kind.add_inertial_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
+        }
     }
     let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout);
     forces.add_gravity(model.gravity);

@@ -7,6 +7,7 @@
 use std::ops::Range;
 
 use super::frame::BodyIndex;
+use crate::body::BodyKind;
 
 /// Addresses of one body's coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,11 +50,21 @@ pub struct StateLayout {
     pub nv: usize,
     /// Number of continuous element states.
     pub nz: usize,
+    /// Whether `q_dot = v` for every body (so `q` and `v` have the same layout).
+    pub identity_position_rates: bool,
+    /// Whether some body has velocity-dependent inertial forces.
+    pub has_inertial_forces: bool,
 }
 
 impl StateLayout {
-    /// Appends a body of `nq` position and `nv` velocity coordinates.
-    pub fn push_body(&mut self, nq: usize, nv: usize) {
+    /// Appends a body of kind `kind`.
+    pub fn push_body(&mut self, kind: &BodyKind) {
+        let (nq, nv) = (kind.nq(), kind.nv());
+        if self.bodies.is_empty() {
+            self.identity_position_rates = true;
+        }
+        self.identity_position_rates &= kind.has_identity_position_rates() && self.nq == self.nv;
+        self.has_inertial_forces |= kind.has_inertial_forces();
         self.bodies.push(BodyAddress { q: self.nq, nq, v: self.nv, nv });
         self.nq += nq;
         self.nv += nv;
@@ -102,12 +113,29 @@ impl StateLayout {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::body::PlanarRigidBody;
+
+    fn planar() -> BodyKind {
+        BodyKind::PlanarRigid(PlanarRigidBody::new(1.0, 1.0))
+    }
+
+    #[test]
+    fn planar_bodies_have_q_dot_equal_to_v_and_no_inertial_forces() {
+        let mut layout = StateLayout::default();
+        layout.push_body(&planar());
+        layout.push_body(&planar());
+        assert!(layout.identity_position_rates && !layout.has_inertial_forces);
+        assert_eq!(layout.body(BodyIndex(2)), Some(&BodyAddress { q: 3, nq: 3, v: 3, nv: 3 }));
+    }
 
     #[test]
     fn addresses_follow_the_declared_sizes() {
+        // (a second body of 7 and 6 coordinates, as a spatial body will have: its
+        // addresses are what the layout must get right, the kinematics are not used)
         let mut layout = StateLayout::default();
-        layout.push_body(3, 3);
-        layout.push_body(7, 6);
+        layout.push_body(&planar());
+        layout.bodies.push(BodyAddress { q: layout.nq, nq: 7, v: layout.nv, nv: 6 });
+        (layout.nq, layout.nv) = (layout.nq + 7, layout.nv + 6);
         layout.push_force_states(0);
         layout.push_force_states(3);
         assert_eq!(layout.body(BodyIndex(2)), Some(&BodyAddress { q: 3, nq: 7, v: 3, nv: 6 }));

@@ -190,8 +190,12 @@ impl OdeSystem for MechanismSystem<'_> {
         let layout = &self.model.layout;
         let (q, v, _) = layout.split(y);
         let (qdot, vdot, zdot) = layout.split_mut(dydt);
-        for (body, address) in self.model.bodies.iter().zip(&layout.bodies) {
-            body.kind.position_rates(&q[address.q_range()], &v[address.v_range()], &mut qdot[address.q_range()]);
+        if layout.identity_position_rates {
+            qdot.copy_from_slice(v);
+        } else {
+            for (body, address) in self.model.bodies.iter().zip(&layout.bodies) {
+                body.kind.position_rates(&q[address.q_range()], &v[address.v_range()], &mut qdot[address.q_range()]);
+            }
         }
         vdot.copy_from_slice(&self.ws.accelerations);
         zdot.copy_from_slice(&self.ws.element_state_rates);
