@@ -31,6 +31,13 @@ def problems(overrides: list[str], path: Path = DRY) -> list[str]:
 # one test per class of bad input, message pinned --------------------------------
 
 @pytest.mark.parametrize("override, message", [
+    ('joints.B.friction={law = "stiction", static_coefficient = 0.05, kinetic_coefficient = 0.1}',
+     "joints.B.friction.static_coefficient: must be at least kinetic_coefficient = 0.1 (the break-away coefficient "
+     "is not below the sliding one), got 0.05"),
+    ('joints.B.friction={law = "stiction", static_coefficient = 0.15, kinetic_coefficient = 0.1, '
+     'stiction_velocity = "1 mm/s", transition_velocity = "0.5 mm/s"}',
+     "joints.B.friction.transition_velocity: must be greater than stiction_velocity = 1 mm/s (the kinetic "
+     "coefficient is reached after the static one), got 0.5 mm/s"),
     ("joints.B.clearance=-0.1 mm", "joints.B.clearance: must be > 0, got -0.1 mm"),
     ("bodies.crank.mass=0", "bodies.crank.mass: must be > 0, got 0 kg"),
     ("joints.B.contact.restitution=1.5", "joints.B.contact.restitution: must lie in (0, 1], got 1.5"),

@@ -276,7 +276,9 @@ FRICTION_LAWS = family(
               example="a friction coefficient, e.g. 0.1"),
         Param("stiction_velocity", "velocity", "velocity at which the static coefficient is reached", 1e-4, gt=0),
         Param("transition_velocity", "velocity", "velocity from which the kinetic coefficient holds", 1e-3, gt=0),
-    ), tag="law"),
+    ), tag="law", relations=(
+        Relation("static_coefficient", ">=", "kinetic_coefficient", "the break-away coefficient is not below the sliding one"),
+        Relation("transition_velocity", ">", "stiction_velocity", "the kinetic coefficient is reached after the static one"),)),
 )
 
 TRANSITION_LAWS = family(
