@@ -190,6 +190,10 @@ def test_upright_cylinder_with_closed_chambers_settles_where_the_pressures_carry
      "forces.lift.seal_friction.static_force: must be at least kinetic_force = 340 N (the break-away force is not "
      "below the sliding force), got 300 N"),
     ("forces.lift.cap_pressure=-2 bar", "forces.lift.cap_pressure: must be >= -101325 Pa, got -2 bar"),
+    # a bound only the core knows (the seal's dissipativity), located at its key
+    ("forces.lift.seal_friction.bristle_damping=1e7 N s/m",
+     "forces.lift.seal_friction.bristle_damping: bristle damping must be <= 4 sqrt(2e) F_C / v_D = 3.171036e6 N s/m "
+     "for the law to dissipate energy, got 10000000 N s/m"),
     ("forces.lift.cap_inflow.values.3=1 L",
      "forces.lift.cap_inflow.values[3]: must be a volume flow (e.g. \"10 L/min\"), got '1 L', which is a volume"),
 ])

@@ -111,7 +111,7 @@ impl LugreFriction {
         let bound = 4.0 * (2.0 * std::f64::consts::E).sqrt() * self.kinetic_force / self.damping_velocity;
         if self.bristle_damping > bound {
             return Err(format!(
-                "bristle damping must be <= 4 sqrt(2e) F_C / v_D = {bound:.6e} N s/m for the law to dissipate energy, got {}",
+                "bristle damping must be <= 4 sqrt(2e) F_C / v_D = {bound:.6e} N s/m for the law to dissipate energy, got {} N s/m",
                 self.bristle_damping
             ));
         }

@@ -242,7 +242,7 @@ fn test_lugre_constructor_messages() {
     );
     assert_eq!(
         err(LugreFriction::new(385.0, 340.0, 3e-5, 1e7, 1e9, 0.0)),
-        "bristle damping must be <= 4 sqrt(2e) F_C / v_D = 3.171036e6 N s/m for the law to dissipate energy, got 1000000000"
+        "bristle damping must be <= 4 sqrt(2e) F_C / v_D = 3.171036e6 N s/m for the law to dissipate energy, got 1000000000 N s/m"
     );
     assert_eq!(err(seal().with_stick_velocity(0.0)), "stick velocity must be finite and > 0 m/s, got 0");
     assert_eq!(err(seal().with_damping_velocity(-1.0)), "damping velocity must be finite and > 0 m/s, got -1");

@@ -60,11 +60,26 @@ pub(super) fn build_cylinder(
     Some((element, states))
 }
 
+/// The words each message of [`LugreFriction`] starts with, and the key they locate.
+const SEAL_KEYS: [(&str, &str); 8] = [
+    ("static force", "static_force"),
+    ("kinetic force", "kinetic_force"),
+    ("Stribeck velocity", "stribeck_velocity"),
+    ("bristle stiffness", "bristle_stiffness"),
+    ("bristle damping", "bristle_damping"),
+    ("viscous coefficient", "viscous_coefficient"),
+    ("damping velocity", "damping_velocity"),
+    ("stick velocity", "stick_velocity"),
+];
+
 fn build_seal(s: &SealFrictionSpec, loc: &str, errors: &mut ModelErrors) -> Option<SealFriction> {
     LugreFriction::new(s.static_force, s.kinetic_force, s.stribeck_velocity, s.bristle_stiffness, s.bristle_damping, s.viscous_coefficient)
         .and_then(|law| law.with_damping_velocity(s.damping_velocity))
         .and_then(|law| law.with_stick_velocity(s.stick_velocity))
         .map(SealFriction::Lugre)
-        .map_err(|message| errors.push(loc, message))
+        .map_err(|message| {
+            let key = SEAL_KEYS.iter().find(|(words, _)| message.starts_with(words)).map(|(_, key)| *key);
+            errors.push(key.map_or(loc.to_string(), |key| format!("{loc}.{key}")), message)
+        })
         .ok()
 }
