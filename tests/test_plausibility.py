@@ -58,6 +58,14 @@ def test_each_implausible_value_gives_its_warning(override, message):
     assert warned([override])[0] == message  # a tiny mass also gives a large radius of gyration
 
 
+def test_a_bulk_modulus_in_the_wrong_unit_gives_a_warning():
+    boom = ROOT / "examples" / "hydraulic_boom.toml"
+    assert warned(["forces.lift.bulk_modulus=1.5 MPa"], boom) == [
+        "forces.lift.bulk_modulus: 1.5e+06 Pa is outside the range of hydraulic liquids (10 MPa with much entrained "
+        "air to 5 GPa; mineral oil 1.5-1.8 GPa): check the units"]
+    assert warned(["forces.lift.bulk_modulus=1 GPa"], boom) == []
+
+
 def test_springs_far_from_the_other_springs_warn_but_not_against_contacts():
     assert warned(SPRINGS) == ["forces.hard.stiffness: 1e+09 N/m is 1e+07 times the typical value of the springs "
                                "(100 N/m): check the units"]

@@ -23,6 +23,9 @@ warning almost always means a slip:
 - a radius of gyration sqrt(I/m) above 10 L (a kg mm^2 value written as
   kg m^2 gives 1000 times the true radius);
 - a Young's modulus outside [1 MPa, 1.2 TPa] (soft rubber to diamond);
+- a hydraulic cylinder's bulk modulus outside [10 MPa, 5 GPa] (a liquid with
+  much entrained air to beyond any hydraulic liquid; mineral oil is 1.5-1.8
+  GPa, water 2.2 GPa): "1.5 MPa" for "1.5 GPa" is a slip of 1000;
 - a contact stiffness (linearised at a penetration of 1 % of the clearance)
   1e4 times above or below that of the other contacts (a polymer bushing
   beside steel is about 1e2; it grows as E* sqrt(R_b R_j)), a spring
@@ -53,6 +56,7 @@ CONTACT_FACTOR = 1e4
 SPRING_FACTOR = 1e6
 FAR_FACTOR = 100.0
 YOUNGS_RANGE = (1e6, 1.2e12)  # [Pa]
+BULK_MODULUS_RANGE = (1e7, 5e9)  # [Pa]
 
 
 def plausibility(spec: dict) -> list[Problem]:
@@ -64,6 +68,7 @@ def plausibility(spec: dict) -> list[Problem]:
     problems += _outliers(spec, "inertia", INERTIA_FACTOR, "kg m^2")
     problems += _gyration(spec, size)
     problems += _materials(spec)
+    problems += _liquids(spec)
     problems += _stiffnesses(spec)
     problems += _onset_floors(spec, size)
     problems += _far_bodies(spec, size)
@@ -156,6 +161,18 @@ def _materials(spec: dict) -> list[Problem]:
                 out.append(Problem(join("joints", j["name"], side, "youngs_modulus"),
                                    f"{e:.3g} Pa is outside the range of solids (1 MPa for soft rubber to 1.2 TPa "
                                    "for diamond): check the units"))
+    return out
+
+
+def _liquids(spec: dict) -> list[Problem]:
+    low, high = BULK_MODULUS_RANGE
+    out = []
+    for force in spec["forces"]:
+        beta = force.get("bulk_modulus") if force.get("type") == "hydraulic_cylinder" else None
+        if beta is not None and not low <= beta <= high:
+            out.append(Problem(join("forces", force["name"], "bulk_modulus"),
+                               f"{beta:.3g} Pa is outside the range of hydraulic liquids (10 MPa with much entrained "
+                               "air to 5 GPa; mineral oil 1.5-1.8 GPa): check the units"))
     return out
 
 
