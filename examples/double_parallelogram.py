@@ -32,14 +32,13 @@ Run: python examples/double_parallelogram.py [--out DIR] [--t-end SECONDS]
 
 from __future__ import annotations
 
-import argparse
 import math
 from pathlib import Path
 
 import numpy as np
 
 import jointplay as jp
-from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS, T_END, simulate
+from parallelogram_four_bar import CRANK_SPEED, GRAVITY, INERTIA, LENGTH, MASS, energy_report, run_example
 from parallelogram_four_bar import flat_passages as bar_flat_passages
 
 COUPLER_MASS = 2 * MASS  # kg: a 2 m bar of the same section
@@ -97,21 +96,12 @@ def write_figure(results: jp.Results, path: Path) -> Path:
     return path
 
 
+def report(results: jp.Results) -> str:
+    return f"flat positions passed: {flat_passages(results)}, {energy_report(results)}"
+
+
 def main(argv: list[str] | None = None) -> jp.Results:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", type=Path, default=None, help="folder for the figure and the NetCDF file")
-    parser.add_argument("--t-end", type=float, default=T_END, help="simulated time [s]")
-    args = parser.parse_args(argv)
-    results = simulate(build_model(), args.t_end)
-    e = results["system.energy"]
-    print(results)
-    print(f"flat positions passed: {flat_passages(results)}, "
-          f"largest relative energy change {np.max(np.abs(e - e[0])) / abs(e[0]):.2e}")
-    if args.out is not None:
-        args.out.mkdir(parents=True, exist_ok=True)
-        results.save(args.out / "double_parallelogram.nc")
-        print(f"wrote {write_figure(results, args.out / 'double_parallelogram.png')}")
-    return results
+    return run_example(argv, "double_parallelogram", __doc__, build_model, report, write_figure)
 
 
 if __name__ == "__main__":

@@ -120,22 +120,36 @@ def write_figure(results: jp.Results, path: Path) -> Path:
     return path
 
 
-def main(argv: list[str] | None = None) -> jp.Results:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def energy_report(results: jp.Results) -> str:
+    """The largest relative change of the total energy, as the examples print it."""
+    e = results["system.energy"]
+    return f"largest relative energy change {np.max(np.abs(e - e[0])) / abs(e[0]):.2e}"
+
+
+def run_example(argv: list[str] | None, name: str, description: str, build, report, figure) -> jp.Results:
+    """The command line of the parallelogram examples: run ``build()`` to ``--t-end``, print the run and
+    ``report(results)``; with ``--out``, save ``<name>.nc`` and ``figure(results, <name>.png)`` there."""
+    parser = argparse.ArgumentParser(description=description.splitlines()[0])
     parser.add_argument("--out", type=Path, default=None, help="folder for the figure and the NetCDF file")
     parser.add_argument("--t-end", type=float, default=T_END, help="simulated time [s]")
     args = parser.parse_args(argv)
-    results = simulate(build_model(), args.t_end)
-    e = results["system.energy"]
+    results = simulate(build(), args.t_end)
     print(results)
-    print(f"flat positions passed: {flat_passages(results)}, "
-          f"largest |coupler angle| {np.max(np.abs(results['coupler.angle'])):.2e} rad, "
-          f"largest relative energy change {np.max(np.abs(e - e[0])) / abs(e[0]):.2e}")
+    print(report(results))
     if args.out is not None:
         args.out.mkdir(parents=True, exist_ok=True)
-        results.save(args.out / "parallelogram_four_bar.nc")
-        print(f"wrote {write_figure(results, args.out / 'parallelogram_four_bar.png')}")
+        results.save(args.out / f"{name}.nc")
+        print(f"wrote {figure(results, args.out / f'{name}.png')}")
     return results
+
+
+def report(results: jp.Results) -> str:
+    return (f"flat positions passed: {flat_passages(results)}, "
+            f"largest |coupler angle| {np.max(np.abs(results['coupler.angle'])):.2e} rad, {energy_report(results)}")
+
+
+def main(argv: list[str] | None = None) -> jp.Results:
+    return run_example(argv, "parallelogram_four_bar", __doc__, build_model, report, write_figure)
 
 
 if __name__ == "__main__":

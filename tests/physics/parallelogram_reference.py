@@ -25,6 +25,8 @@ accelerations (unique) and, of all multipliers that balance them, the one of lea
 
 from __future__ import annotations
 
+import functools
+import importlib
 import math
 from dataclasses import dataclass
 
@@ -145,10 +147,26 @@ def state_from_results(results, bodies: list[Body], k: int):
     return q, qd
 
 
+@functools.cache
 def run_model_file(path):
-    """The model file's own run: its [simulation] settings to its t_end."""
+    """The model file's own run: its [simulation] settings to its t_end (run once per path)."""
     import jointplay as jp
 
     model = jp.load(path)
     options = dict(model.simulation)
     return model.simulate(options.pop("t_end"), **options)
+
+
+@functools.cache
+def one_dof_to_end_of(path, k: float, length: float, theta0: float, omega0: float):
+    """:func:`one_dof_solution` to the model file's t_end (computed once per case)."""
+    import jointplay as jp
+
+    return one_dof_solution(k, length, theta0, omega0, jp.load(path).simulation["t_end"])
+
+
+def example_builds_the_model_file(example: str, path) -> bool:
+    """Whether the Python example ``example`` (a module in examples/) builds the model file's spec."""
+    import jointplay as jp
+
+    return importlib.import_module(example).build_model().to_spec() == jp.load(path).to_spec()

@@ -55,6 +55,24 @@ impl fmt::Display for ModelErrors {
 
 impl std::error::Error for ModelErrors {}
 
+/// A parameter of a law checked to be finite and > 0 [`unit`]; the message names it and its value.
+pub(crate) fn positive(name: &str, unit: &str, value: f64) -> Result<f64, String> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(format!("{name} must be finite and > 0 {unit}, got {value}"))
+    }
+}
+
+/// A parameter of a law checked to be finite and >= 0 [`unit`]; the message names it and its value.
+pub(crate) fn non_negative(name: &str, unit: &str, value: f64) -> Result<f64, String> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(format!("{name} must be finite and >= 0 {unit}, got {value}"))
+    }
+}
+
 /// Why a simulation stopped early. Every variant names the time [s]; those
 /// raised by an element name it too.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

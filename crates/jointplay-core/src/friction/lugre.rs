@@ -25,6 +25,7 @@
 //! dissipativity bound checked by [`LugreFriction::new`] is derived on the
 //! theory page: `docs/theory/friction-lugre.md`.
 
+use crate::error::{non_negative, positive};
 /// Default stick velocity [m/s]: 0.01 mm/s, the stiction tolerance of the
 /// rod-seal friction of paper 002 (below it that law is in its sticking band).
 pub const DEFAULT_STICK_VELOCITY: f64 = 1.0e-5;
@@ -225,24 +226,6 @@ impl LugreFriction {
 /// exp(-r²) [-].
 fn gaussian(ratio: f64) -> f64 {
     (-ratio * ratio).exp()
-}
-
-/// Checks that a parameter is finite and > 0.
-fn positive(name: &str, unit: &str, value: f64) -> Result<f64, String> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(format!("{name} must be finite and > 0 {unit}, got {value}"))
-    }
-}
-
-/// Checks that a parameter is finite and >= 0.
-fn non_negative(name: &str, unit: &str, value: f64) -> Result<f64, String> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(value)
-    } else {
-        Err(format!("{name} must be finite and >= 0 {unit}, got {value}"))
-    }
 }
 
 #[cfg(test)]

@@ -16,6 +16,7 @@
 //! effective bulk modulus; its pressure equations were lost in extraction).
 //! Theory page: `docs/theory/hydraulic-cylinder.md`.
 
+use crate::error::positive;
 use super::chamber::{compression_energy, pressure_rate};
 use super::SealFriction;
 use std::fmt;
@@ -324,15 +325,6 @@ impl HydraulicCylinder {
             SealFriction::None => liquid,
             SealFriction::Lugre(law) => liquid + law.bristle_energy(states[2]),
         }
-    }
-}
-
-/// Checks that a parameter is finite and > 0.
-fn positive(name: &str, unit: &str, value: f64) -> Result<f64, String> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(format!("{name} must be finite and > 0 {unit}, got {value}"))
     }
 }
 
