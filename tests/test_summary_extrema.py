@@ -77,10 +77,13 @@ def test_peak_contact_force_lies_inside_a_step_and_bounds_every_1us_sample(dry_r
     k = np.searchsorted(step_ends, at)
     assert step_ends[k - 1] < at < step_ends[k], "the peak is not strictly inside a step"
     assert peak > np.max(np.abs(dry_runs[None]["B.fn"]))
-    # no channel has a 1 us sample above its tracked peak; the finest samples come within 0.1 %
+    # the tracked peaks bound the 1 us samples except where a spike lies wholly inside one step
+    # (docs/theory/summary-extrema.md, "Limits"): in this run rod.ax's samples rise 0.19 % above
+    # its tracked peak; 0.5 % catches a tracker that stops searching (the step ends alone are 6 % low)
     for name, c in channels.items():
         sampled = float(np.max(np.abs(fine[name])))
-        assert sampled <= c["peak"] * (1 + 1e-9), (name, sampled, c["peak"])
+        assert sampled <= c["peak"] * (1 + 5e-3), (name, sampled, c["peak"])
+    assert float(np.max(np.abs(fine["B.fn"]))) <= peak * (1 + 1e-9)
     sampled_fn = np.abs(fine["B.fn"])
     assert close(float(sampled_fn.max()), peak, 1e-3)
     assert abs(fine.time[np.argmax(sampled_fn)] - at) <= 1e-6

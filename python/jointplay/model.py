@@ -38,6 +38,7 @@ Quantity = Any  # a number in SI units, a string with a unit ("0.5 mm") or a pin
 
 METHODS = {**{m: m for m in p.METHODS}, **dict(p.METHOD_ALIASES)}
 STABILIZATIONS = p.STABILIZATIONS
+FORMULATIONS = p.FORMULATIONS
 _CLEARANCE, _SIMULATION = p.CLEARANCE_REVOLUTE, p.SIMULATION
 
 
@@ -282,7 +283,8 @@ class Model:
                  rtol: float = _SIMULATION.default("rtol"), atol: float = _SIMULATION.default("atol"),
                  max_step: float | None = None, output_step: float | None = None,
                  initial_step: float | None = None, min_step: float | None = None, max_steps: int | None = None,
-                 stabilization: str = _SIMULATION.default("stabilization"), t0: float = _SIMULATION.default("t0"),
+                 stabilization: str = _SIMULATION.default("stabilization"),
+                 formulation: str = _SIMULATION.default("formulation"), t0: float = _SIMULATION.default("t0"),
                  progress: Callable[[float], None] | None = None, output_file: str | os.PathLike | None = None,
                  max_output_bytes: int | str | None = None) -> Results:
         """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
@@ -316,7 +318,7 @@ class Model:
 
         warn(self._spec)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
-                           max_steps, stabilization)
+                           max_steps, stabilization, formulation)
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
@@ -379,7 +381,7 @@ def _function(raw: Any, kind: str, where: str) -> dict:
 
 
 def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,
-             stabilization) -> dict:
+             stabilization, formulation=_SIMULATION.default("formulation")) -> dict:
     problems = []
 
     def positive(key, value, allow_none=True):
@@ -397,11 +399,13 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
         problems.append(("simulation.method", f"must be one of {sorted(set(METHODS.values()))}, got {method!r}"))
     if stabilization not in STABILIZATIONS:
         problems.append(("simulation.stabilization", f"must be one of {list(STABILIZATIONS)}, got {stabilization!r}"))
+    if formulation not in FORMULATIONS:
+        problems.append(("simulation.formulation", f"must be one of {list(FORMULATIONS)}, got {formulation!r}"))
     options = {
         "method": METHODS.get(key, _SIMULATION.default("method")), "rtol": positive("rtol", rtol, False),
         "atol": None, "max_step": positive("max_step", max_step), "output_step": positive("output_step", output_step),
         "initial_step": positive("initial_step", initial_step), "min_step": positive("min_step", min_step),
-        "max_steps": None, "stabilization": stabilization,
+        "max_steps": None, "stabilization": stabilization, "formulation": formulation,
     }
     if not (isinstance(atol, (int, float)) and math.isfinite(atol) and atol >= 0):
         problems.append(("simulation.atol", f"must be >= 0, got {atol!r}"))

@@ -590,6 +590,7 @@ FORCES = family(SPRING_DAMPER, ROTATIONAL_SPRING_DAMPER, POINT_FORCE, TORQUE, HY
 METHODS = ("dopri5", "adams", "bdf")
 METHOD_ALIASES = (("rk45", "dopri5"), ("dormand_prince", "dopri5"), ("adams_pc", "adams"), ("ndf", "bdf"))
 STABILIZATIONS = ("projection", "baumgarte", "none")
+FORMULATIONS = ("auto", "absolute", "joint_coordinates")
 
 SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Model.simulate(**model.simulation)`; "
                    "all optional.", (
@@ -607,7 +608,12 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
     Param("min_step", "time", "smallest step", None, gt=0, default_text="automatic"),
     Param("max_steps", "count", "most attempted (accepted + rejected) steps; a run that exceeds it stops with an "
           "error naming this key, keeping what was computed", None, default_text="10 000 000 (set by the core)"),
-    Param("stabilization", "choice", "constraint drift control", "projection", of=STABILIZATIONS),
+    Param("stabilization", "choice", "constraint drift control (absolute formulation)", "projection",
+          of=STABILIZATIONS),
+    Param("formulation", "choice", "form of the equations of motion: joint coordinates when the ideal joints form a "
+          "tree (every clearance joint cuts the loop it closes; no constraint equations to solve), else absolute "
+          "coordinates with constraints; `absolute` always uses the latter, `joint_coordinates` refuses a model "
+          "with a closed loop of ideal joints", "auto", of=FORMULATIONS),
     Param("max_output_bytes", "size", 'budget of samples x channels x 8 bytes, a whole number of bytes or `"500 MB"`, '
           '`"2 GiB"`: checked before the run when `output_step` makes the sample count known, otherwise the run stops '
           "when it reaches it, keeping what was computed", None,

@@ -1,6 +1,6 @@
 //! All conversions between Python objects and core types live here.
 
-use jointplay_core::dynamics::{ChannelInfo, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
+use jointplay_core::dynamics::{ChannelInfo, Formulation, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::body::BodyKind;
 use jointplay_core::integrate::Method;
 use jointplay_core::SimulationError;
@@ -52,6 +52,14 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
             other => return Err(PyValueError::new_err(format!("unknown stabilization {other:?}"))),
         };
     }
+    if let Some(s) = d.get_item("formulation")?.filter(|v| !v.is_none()) {
+        o.formulation = match s.extract::<String>()?.as_str() {
+            "auto" => Formulation::Auto,
+            "absolute" => Formulation::Absolute,
+            "joint_coordinates" => Formulation::JointCoordinates,
+            other => return Err(PyValueError::new_err(format!("unknown formulation {other:?}"))),
+        };
+    }
     o.integrator.validate().map_err(PyValueError::new_err)?;
     Ok(o)
 }
@@ -95,6 +103,7 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
     stats.set_item("restarts", s.restarts)?;
     stats.set_item("jacobian_evaluations", s.jacobian_evaluations)?;
     stats.set_item("factorizations", s.factorizations)?;
+    stats.set_item("formulation", o.formulation.name())?;
     out.set_item("statistics", stats)?;
     let g = &o.diagnostics;
     let diag = PyDict::new(py);

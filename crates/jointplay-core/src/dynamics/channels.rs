@@ -76,6 +76,12 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
 /// Fills `ws.constraint_forces` for every element acting during the
 /// simulation (assembly locks keep zero).
 pub(crate) fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
+    if ws.joint.active {
+        if let Ok(tree) = &model.joint_tree {
+            tree.reactions(model, ws);
+        }
+        return;
+    }
     for (e, element) in model.elements.iter().enumerate() {
         if element.constraints.end <= model.n_dynamic_constraints {
             ws.constraint_forces[e] = constraint_force_on_second(model, e, ws);

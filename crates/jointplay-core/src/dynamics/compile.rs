@@ -11,6 +11,7 @@ use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
+use super::joint_coordinates::JointTree;
 use crate::spec::{ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, GROUND};
 
 #[path = "compile/hydraulic.rs"]
@@ -77,6 +78,7 @@ impl<'s> Compiler<'s> {
             initial_velocities: Vec::new(),
             initial_element_states: Vec::new(),
             channels: Vec::new(),
+            joint_tree: Err("not compiled".to_string()),
         };
         Self {
             spec,
@@ -491,6 +493,7 @@ impl<'s> Compiler<'s> {
         // (more equations than coordinates is no error by itself: dependent equations are
         // handled, and a mechanism that cannot move as driven is reported at assembly)
         self.analyse_constraint_matrix();
+        self.model.joint_tree = JointTree::of(&self.model);
         for (q, (quantity, description)) in [("kinetic_energy", "kinetic energy"), ("potential_energy", "potential energy (gravity, springs, contact)"), ("energy", "total mechanical energy")].iter().enumerate() {
             self.channel("system", quantity, "J", description.to_string(), Source::Energy(q as u8));
         }

@@ -132,7 +132,7 @@ fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> 
 
 /// Applied generalised forces: velocity-dependent inertial forces, gravity,
 /// force elements and clearance contacts (whose evaluations are kept in the workspace).
-fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
+pub(crate) fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
     ws.generalised_force.fill(0.0);
     if model.layout.has_inertial_forces {
         for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
@@ -224,7 +224,7 @@ pub fn accelerations(
 }
 
 /// Names the first element whose output is not finite.
-fn check_finite(model: &Model, t: f64, ws: &Workspace) -> Result<(), SimulationError> {
+pub(crate) fn check_finite(model: &Model, t: f64, ws: &Workspace) -> Result<(), SimulationError> {
     if ws.accelerations.iter().all(|a| a.is_finite()) {
         return Ok(());
     }

@@ -2,6 +2,7 @@
 
 use super::channels::Channel;
 use super::frame::{BodyIndex, Vec2};
+use super::joint_coordinates::JointTree;
 use super::layout::StateLayout;
 use crate::body::BodyKind;
 use crate::force::ForceElement;
@@ -102,6 +103,9 @@ pub struct Model {
     pub initial_element_states: Vec<f64>,
     /// Output channels, in recording order.
     pub(crate) channels: Vec<Channel>,
+    /// The tree of the ideal joints, for the joint-coordinate formulation, or
+    /// why the model needs absolute coordinates (a joint closing a loop, ...).
+    pub joint_tree: Result<JointTree, String>,
 }
 
 /// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)`, `a >= b`, of

@@ -2,7 +2,8 @@
 //! whatever was computed even when the run fails.
 
 use super::trajectory::{SampleSink, Trajectory};
-use super::equations::Stabilization;
+use super::equations::{update_frames, Stabilization};
+use super::joint_coordinates::{self, Formulation, JointTree};
 use super::extrema::ExtremaTracker;
 use super::frame::{BodyIndex, Vec2};
 use super::extrema_summary::{is_peak_unit, Extrema};
@@ -21,6 +22,8 @@ pub struct SimulationOptions {
     /// Largest constraint residual left by the projection [m or rad], and of
     /// the velocity constraints [m/s or rad/s].
     pub position_tolerance: f64,
+    /// Form of the equations of motion (joint coordinates for a tree of ideal joints by default).
+    pub formulation: Formulation,
     /// Largest output allowed, samples x channels x 8 [bytes]; `None`: no limit.
     /// The run stops with [`SimulationError::OutputBudgetExceeded`] before exceeding it.
     pub max_output_bytes: Option<u64>,
@@ -34,6 +37,7 @@ impl Default for SimulationOptions {
             integrator: IntegratorOptions::default(),
             stabilization: Stabilization::Projection,
             position_tolerance: 1e-10,
+            formulation: Formulation::Auto,
             max_output_bytes: None,
         }
     }
@@ -66,6 +70,8 @@ pub struct SimulationOutcome {
     pub extrema: Extrema,
     /// Why the run stopped early, if it did.
     pub error: Option<SimulationError>,
+    /// The form of the equations that was integrated (`Absolute` or `JointCoordinates`).
+    pub formulation: Formulation,
 }
 
 /// Integrates `model` from `state` to `t_end` [s]; `state` is advanced in place.
@@ -100,7 +106,20 @@ pub fn simulate_with_sink(
     }
     let mut diagnostics = Diagnostics::default();
     let t0 = state.time;
-    let mut y = state.y.clone();
+    let tree = match joint_tree(model, options.formulation, t0) {
+        Ok(tree) => tree,
+        Err(error) => {
+            let tracking = new_tracking(model, 0);
+            let extrema = summarize(model, &tracking.tracker, &tracking.channels, &vec![0; model.clearance_joints.len()]);
+            return SimulationOutcome { trajectory, statistics: Statistics::default(), diagnostics, extrema, error: Some(error), formulation: options.formulation };
+        }
+    };
+    ws.joint.active = tree.is_some();
+    let mut y = match tree {
+        Some(tree) => joint_state(model, tree, &state.y, &mut ws),
+        None => state.y.clone(),
+    };
+    ws.sample.resize(y.len(), 0.0);
     let mut tracking = new_tracking(model, y.len());
     let (statistics, result, last_accepted) = {
         let mut system = MechanismSystem {
@@ -114,6 +133,7 @@ pub fn simulate_with_sink(
             last_accepted: f64::NAN,
             step_end: StepEndCache::new(y.len()),
             tracking: &mut tracking,
+            tree,
         };
         let (statistics, result) = match system.update_contact_memory(t0, &y) {
             Ok(_) => integrate(&mut system, t0, t_end, &mut y, &options.integrator),
@@ -126,12 +146,44 @@ pub fn simulate_with_sink(
     // the state of the last accepted step: time and coordinates of one instant, also after a failure
     if !last_accepted.is_nan() {
         state.time = last_accepted;
-        state.y = tracking.accepted_state;
+        match tree {
+            Some(tree) => {
+                joint_coordinates::place(model, tree, last_accepted, &tracking.accepted_state, &mut ws);
+                state.y.copy_from_slice(&ws.joint.body_state);
+            }
+            None => state.y = tracking.accepted_state,
+        }
     }
     diagnostics.impacts = state.contacts.iter().map(|c| c.impacts).collect();
     let extrema = summarize(model, &tracking.tracker, &tracking.channels, &diagnostics.impacts);
     let error = result.err().map(|e| name_likely_cause(model, e, &ws));
-    SimulationOutcome { trajectory, statistics, diagnostics, extrema, error }
+    let formulation = if tree.is_some() { Formulation::JointCoordinates } else { Formulation::Absolute };
+    SimulationOutcome { trajectory, statistics, diagnostics, extrema, error, formulation }
+}
+
+/// The joint tree to integrate in, if the formulation asks for it and the model has one.
+fn joint_tree(model: &Model, formulation: Formulation, t0: f64) -> Result<Option<&JointTree>, SimulationError> {
+    match (formulation, &model.joint_tree) {
+        (Formulation::Absolute, _) | (Formulation::Auto, Err(_)) => Ok(None),
+        (_, Ok(tree)) => Ok(Some(tree)),
+        (Formulation::JointCoordinates, Err(why)) => Err(SimulationError::InvalidInput {
+            time: t0,
+            message: format!("the joint-coordinate formulation needs a tree of ideal joints, but {why}; use the absolute formulation"),
+        }),
+    }
+}
+
+/// The joint state `[theta, theta_dot, z]` of the (assembled) body-space state `y`.
+fn joint_state(model: &Model, tree: &JointTree, y: &[f64], ws: &mut Workspace) -> Vec<f64> {
+    let (q, v, z) = model.layout.split(y);
+    update_frames(model, q, v, &mut ws.frames);
+    let n = tree.n_dofs;
+    let mut joint = vec![0.0; 2 * n + z.len()];
+    let (theta, rest) = joint.split_at_mut(n);
+    let (theta_dot, zj) = rest.split_at_mut(n);
+    tree.joint_state(&ws.frames, theta, theta_dot);
+    zj.copy_from_slice(z);
+    joint
 }
 
 /// The tracker of the channels with a unit in [`super::PEAK_UNITS`], of the

@@ -6,6 +6,7 @@ use super::channels::{update_constraint_forces, value};
 use super::extrema::{ExtremaTracker, StepProbe};
 use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
+use super::joint_coordinates::{self, joint_accelerations, JointTree};
 use super::frame::{BodyIndex, Vec2};
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
@@ -38,6 +39,9 @@ pub(crate) struct MechanismSystem<'a> {
     pub step_end: StepEndCache,
     /// Summary quantities tracked at every accepted step.
     pub tracking: &'a mut Tracking,
+    /// The tree whose joint coordinates are integrated, `y = [theta, theta_dot, z]`;
+    /// `None`: absolute coordinates, `y = [q, v, z]`.
+    pub tree: Option<&'a JointTree>,
 }
 
 /// The tracker of summary quantities with what it reads.
@@ -100,8 +104,7 @@ impl MechanismSystem<'_> {
     pub(crate) fn update_contact_memory(&mut self, t: f64, y: &[f64]) -> Result<bool, SimulationError> {
         if !self.step_end.holds_evaluation(t, y) {
             // (the frames of the evaluation at this very state are already there)
-            let (q, v, _) = self.model.layout.split(y);
-            update_frames(self.model, q, v, &mut self.ws.frames);
+            self.place_frames(t, y);
         }
         let mut changed = false;
         for (k, joint) in self.model.clearance_joints.iter().enumerate() {
@@ -136,7 +139,7 @@ impl MechanismSystem<'_> {
     /// Checks that every element's accepted state is within the range of its law
     /// (the frames are those of `y`: [`Self::update_contact_memory`] made them).
     fn check_elements(&self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
-        let (_, _, z) = self.model.layout.split(y);
+        let z = self.element_states(y);
         for (k, element) in self.model.forces.iter().enumerate() {
             if let Err(cause) = element.check(&self.ws.frames, &z[self.model.layout.force_states[k].clone()]) {
                 return Err(SimulationError::ElementOutOfRange { time: t, element: self.model.force_names[k].clone(), cause });
@@ -148,6 +151,9 @@ impl MechanismSystem<'_> {
     /// Projects positions and velocities of y onto the constraints at t (the
     /// workspace no longer holds the last evaluation afterwards).
     fn project_state(&mut self, t: f64, y: &mut [f64]) -> Result<(), SimulationError> {
+        if self.tree.is_some() {
+            return Ok(()); // joint coordinates satisfy the joints by construction
+        }
         self.step_end.evaluated_at = None;
         let m = self.model.n_dynamic_constraints;
         let (q, qdot, _) = self.model.layout.split_mut(y);
@@ -158,10 +164,56 @@ impl MechanismSystem<'_> {
 }
 
 impl MechanismSystem<'_> {
+    /// Frames of all bodies at `(t, y)` into the workspace (in joint coordinates
+    /// also the body-space state); the workspace no longer holds an evaluation.
+    fn place_frames(&mut self, t: f64, y: &[f64]) {
+        self.step_end.evaluated_at = None;
+        match self.tree {
+            Some(tree) => joint_coordinates::place(self.model, tree, t, y, self.ws),
+            None => {
+                let (q, v, _) = self.model.layout.split(y);
+                update_frames(self.model, q, v, &mut self.ws.frames);
+            }
+        }
+    }
+
+    /// The continuous element states `z` of `y`.
+    fn element_states<'y>(&self, y: &'y [f64]) -> &'y [f64] {
+        match self.tree {
+            Some(tree) => &y[2 * tree.n_dofs..],
+            None => self.model.layout.split(y).2,
+        }
+    }
+
+    /// Evaluates the accelerations at `(t, y)` in the formulation being integrated.
+    fn evaluate(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        match self.tree {
+            Some(tree) => joint_accelerations(self.model, tree, self.memory, t, y, self.ws),
+            None => accelerations(self.model, self.memory, t, y, self.options.stabilization, self.ws),
+        }
+    }
+
+    /// Records the sample at `(t, y)` from the evaluation the workspace holds there
+    /// (in joint coordinates, with the body-space state of that evaluation).
+    fn push_sample(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        if self.tree.is_none() {
+            return self.trajectory.push(self.model, t, y, self.ws);
+        }
+        let body = std::mem::take(&mut self.ws.joint.body_state);
+        let pushed = self.trajectory.push(self.model, t, &body, self.ws);
+        self.ws.joint.body_state = body;
+        pushed
+    }
+
     /// Frames of the bodies of the clearance joints from the state y (the
     /// only frames the event functions read), in their own buffer so that
     /// the workspace keeps the last evaluation.
-    fn update_clearance_frames(&mut self, y: &[f64]) {
+    fn update_clearance_frames(&mut self, t: f64, y: &[f64]) {
+        if let Some(tree) = self.tree {
+            let n = tree.n_dofs;
+            tree.place(t, &y[..n], &y[n..2 * n], &mut self.ws.event_frames);
+            return;
+        }
         let (q, v, _) = self.model.layout.split(y);
         for joint in &self.model.clearance_joints {
             for body in [joint.bearing.body, joint.journal.body] {
@@ -177,7 +229,10 @@ impl MechanismSystem<'_> {
 
 impl OdeSystem for MechanismSystem<'_> {
     fn len(&self) -> usize {
-        self.model.layout.len()
+        match self.tree {
+            Some(tree) => 2 * tree.n_dofs + self.model.layout.nz,
+            None => self.model.layout.len(),
+        }
     }
 
     fn rhs(&mut self, t: f64, y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError> {
@@ -185,7 +240,17 @@ impl OdeSystem for MechanismSystem<'_> {
         // there, or a restart at the state just evaluated): reuse it
         if !self.step_end.holds_evaluation(t, y) {
             self.step_end.evaluated_at = None;
-            accelerations(self.model, self.memory, t, y, self.options.stabilization, self.ws)?;
+            self.evaluate(t, y)?;
+        }
+        if let Some(tree) = self.tree {
+            let n = tree.n_dofs;
+            dydt[..n].copy_from_slice(&y[n..2 * n]);
+            dydt[n..2 * n].copy_from_slice(&self.ws.joint.accelerations);
+            dydt[2 * n..].copy_from_slice(&self.ws.element_state_rates);
+            if self.step_end.evaluated_at.is_none() {
+                self.step_end.remember_evaluation(t, y, false);
+            }
+            return Ok(());
         }
         let layout = &self.model.layout;
         let (q, v, _) = layout.split(y);
@@ -207,6 +272,15 @@ impl OdeSystem for MechanismSystem<'_> {
 
     fn absolute_tolerance_scales(&self, scales: &mut [f64]) {
         let layout = &self.model.layout;
+        if let Some(tree) = self.tree {
+            // joint angles [rad] and displacements [m] as the bodies' coordinates
+            let (joint, z) = scales.split_at_mut(2 * tree.n_dofs);
+            joint.fill(1.0);
+            for (element, states) in self.model.forces.iter().zip(&layout.force_states) {
+                element.tolerance_scales(&mut z[states.clone()]);
+            }
+            return;
+        }
         let (q, v, _) = layout.split_mut(scales);
         for (body, address) in self.model.bodies.iter().zip(&layout.bodies) {
             body.kind.tolerance_scales(&mut q[address.q_range()], &mut v[address.v_range()]);
@@ -221,15 +295,15 @@ impl OdeSystem for MechanismSystem<'_> {
         self.model.clearance_joints.len()
     }
 
-    fn event_functions(&mut self, _t: f64, y: &[f64], g: &mut [f64]) {
-        self.update_clearance_frames(y);
+    fn event_functions(&mut self, t: f64, y: &[f64], g: &mut [f64]) {
+        self.update_clearance_frames(t, y);
         for (k, joint) in self.model.clearance_joints.iter().enumerate() {
             g[k] = joint.penetration(&self.ws.event_frames);
         }
     }
 
-    fn event_functions_and_rates(&mut self, _t: f64, y: &[f64], g: &mut [f64], rates: &mut [f64]) -> bool {
-        self.update_clearance_frames(y);
+    fn event_functions_and_rates(&mut self, t: f64, y: &[f64], g: &mut [f64], rates: &mut [f64]) -> bool {
+        self.update_clearance_frames(t, y);
         for (k, joint) in self.model.clearance_joints.iter().enumerate() {
             g[k] = joint.penetration(&self.ws.event_frames);
             rates[k] = joint.penetration_rate(&self.ws.event_frames);
@@ -237,10 +311,8 @@ impl OdeSystem for MechanismSystem<'_> {
         true
     }
 
-    fn on_event(&mut self, _t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {
-        self.step_end.evaluated_at = None;
-        let (q, v, _) = self.model.layout.split(y);
-        update_frames(self.model, q, v, &mut self.ws.frames);
+    fn on_event(&mut self, t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {
+        self.place_frames(t, y);
         let joint = &self.model.clearance_joints[event];
         self.memory[event].onset_velocity = Some(joint.onset_velocity(&self.ws.frames));
         self.memory[event].impacts += 1;
@@ -248,7 +320,7 @@ impl OdeSystem for MechanismSystem<'_> {
     }
 
     fn project(&mut self, t: f64, y: &mut [f64]) -> Result<(), SimulationError> {
-        if self.options.stabilization != Stabilization::Projection {
+        if self.options.stabilization != Stabilization::Projection || self.tree.is_some() {
             return Ok(());
         }
         // project a copy: y stays as it was should the projection fail
@@ -281,7 +353,8 @@ impl OdeSystem for MechanismSystem<'_> {
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         if self.step_end.holds_evaluation(t, y) && !self.model.has_lubricated_joints() {
             // the step end the integrator just evaluated (and projected): record its evaluation
-            self.trajectory.push(self.model, t, y, self.ws)?;
+            self.check_elements(t, y)?;
+            self.push_sample(t, y)?;
         } else {
             self.evaluate_and_push(t, y)?;
         }
@@ -304,7 +377,8 @@ impl MechanismSystem<'_> {
     fn evaluate_and_push(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         self.evaluate_sample(t, y)?;
         let sample = std::mem::take(&mut self.ws.sample);
-        let pushed = self.trajectory.push(self.model, t, &sample, self.ws);
+        // a sample inside the step where an element left its range is not recorded: the error stops there
+        let pushed = self.check_elements(t, &sample).and_then(|()| self.push_sample(t, &sample));
         self.ws.sample = sample;
         pushed
     }
@@ -323,7 +397,7 @@ impl MechanismSystem<'_> {
         }
         if evaluated.is_ok() {
             self.ws.detailed = true;
-            evaluated = accelerations(self.model, self.memory, t, &sample, self.options.stabilization, self.ws);
+            evaluated = self.evaluate(t, &sample);
             self.ws.detailed = false;
         }
         if evaluated.is_ok() {
@@ -353,6 +427,8 @@ impl MechanismSystem<'_> {
     fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
         update_constraint_forces(self.model, self.ws);
         let ws = &*self.ws;
+        // (in joint coordinates the evaluation's body-space state)
+        let state = if self.tree.is_some() { &ws.joint.body_state[..] } else { state };
         let (channels, points) = values.split_at_mut(self.tracking.channels.len());
         for (v, &c) in channels.iter_mut().zip(&self.tracking.channels) {
             // (tracked channels read forces and accelerations, never the energy)

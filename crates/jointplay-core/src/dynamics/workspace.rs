@@ -2,6 +2,7 @@
 //! never allocates.
 
 use super::frame::Frame;
+use super::joint_coordinates::JointWorkspace;
 use super::Model;
 use crate::force::ForceOutput;
 use crate::joint::{ContactEvaluation, FilmEvaluation, RowJacobian};
@@ -64,6 +65,8 @@ pub struct Workspace {
     /// Constraint force `(fx [N], fy [N], moment about the centre of mass [N m])`
     /// of each element on its second body at the last recorded sample.
     pub constraint_forces: Vec<[f64; 3]>,
+    /// Scratch of the joint-coordinate formulation (empty when the model is no tree).
+    pub joint: JointWorkspace,
 }
 
 impl Workspace {
@@ -98,6 +101,10 @@ impl Workspace {
             detailed: false,
             force_outputs: vec![ForceOutput::default(); model.forces.len()],
             constraint_forces: vec![[0.0; 3]; model.elements.len()],
+            joint: match &model.joint_tree {
+                Ok(tree) => JointWorkspace::new(tree, n, model.layout.len(), model.bodies.len()),
+                Err(_) => JointWorkspace::default(),
+            },
         }
     }
 }

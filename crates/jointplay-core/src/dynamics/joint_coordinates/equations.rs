@@ -1,0 +1,103 @@
+//! Equations of motion in joint coordinates: `R^T M R theta_ddot = R^T (Q - M b)`.
+
+use super::tree::JointTree;
+use crate::dynamics::equations::{applied_forces, check_finite};
+use crate::dynamics::frame::Frame;
+use crate::dynamics::state::ContactMemory;
+use crate::dynamics::{Model, Workspace};
+use crate::error::SimulationError;
+use crate::linalg::{cholesky_factor, cholesky_solve};
+
+impl JointTree {
+    /// Writes the body-space state `[q, v, z]` (the model's `StateLayout`) of the
+    /// placed `frames` and element states `z` into `out`.
+    pub fn body_state(&self, model: &Model, frames: &[Frame], z: &[f64], out: &mut [f64]) {
+        let (q, rest) = out.split_at_mut(model.layout.nq);
+        let (v, zb) = rest.split_at_mut(model.layout.nv);
+        for (k, address) in model.layout.bodies.iter().enumerate() {
+            let f = &frames[k + 1];
+            q[address.q_range()].copy_from_slice(&[f.position.x, f.position.y, f.angle]);
+            v[address.v_range()].copy_from_slice(&[f.velocity.x, f.velocity.y, f.angular_velocity]);
+        }
+        zb.copy_from_slice(z);
+    }
+}
+
+/// Places the bodies from the joint state `y = [theta, theta_dot, z]` at `t`:
+/// the frames into `ws.frames`, the body-space state into `ws.joint.body_state`.
+pub(crate) fn place(model: &Model, tree: &JointTree, t: f64, y: &[f64], ws: &mut Workspace) {
+    let n = tree.n_dofs;
+    tree.place(t, &y[..n], &y[n..2 * n], &mut ws.frames);
+    tree.body_state(model, &ws.frames, &y[2 * n..], &mut ws.joint.body_state);
+}
+
+/// Evaluates the joint accelerations `ws.joint.accelerations` at `(t, y)`,
+/// `y = [theta, theta_dot, z]`, with the bodies' accelerations in
+/// `ws.accelerations`, their applied forces in `ws.generalised_force` and the
+/// element state rates in `ws.element_state_rates`. Never allocates.
+pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ContactMemory], t: f64, y: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
+    let n = tree.n_dofs;
+    let (theta, rest) = y.split_at(n);
+    let (theta_dot, z) = rest.split_at(n);
+    tree.place_and_linearise(t, theta, theta_dot, &mut ws.frames, &mut ws.joint.velocity_map, &mut ws.joint.bias);
+    let mut body = std::mem::take(&mut ws.joint.body_state);
+    tree.body_state(model, &ws.frames, z, &mut body);
+    let applied = applied_forces(model, memory, t, model.layout.split(&body), ws);
+    ws.joint.body_state = body;
+    applied?;
+    let j = &mut ws.joint;
+    let (r, mass, theta_ddot, scale) = (&j.velocity_map, &mut j.mass, &mut j.accelerations, &mut j.scale);
+    // R^T M R (lower triangle) and R^T (Q - M b)
+    mass.fill(0.0);
+    theta_ddot.fill(0.0);
+    for (row, ((&m, &q), &b)) in tree.mass.iter().zip(&ws.generalised_force).zip(&j.bias).enumerate() {
+        let r_row = &r[row * n..(row + 1) * n];
+        let effective = q - m * b;
+        for k in 0..n {
+            let mk = m * r_row[k];
+            if mk == 0.0 {
+                continue;
+            }
+            theta_ddot[k] += r_row[k] * effective;
+            for l in 0..=k {
+                mass[k * n + l] += mk * r_row[l];
+            }
+        }
+    }
+    if n > 0 {
+        solve_scaled(mass, n, theta_ddot, scale).map_err(|(k, pivot)| SimulationError::SingularConfiguration {
+            time: t,
+            element: "joint coordinates".to_string(),
+            cause: format!("the mass matrix of the joint coordinates is singular at coordinate {k} (relative pivot {pivot:.2e})"),
+        })?;
+    }
+    // the bodies' accelerations v_dot = R theta_ddot + b
+    for (row, (a, &b)) in ws.accelerations.iter_mut().zip(&j.bias).enumerate() {
+        *a = b + r[row * n..(row + 1) * n].iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
+    }
+    check_finite(model, t, ws)
+}
+
+/// Solves `A x = b` in place for the symmetric positive definite `A` (lower
+/// triangle of the row-major `n x n` buffer, overwritten by the factor) with
+/// its diagonal scaled to one first: the joint coordinates mix lengths and
+/// angles, so their entries differ by orders of magnitude that say nothing
+/// about singularity. `scale` (length `n`) is scratch. On failure, the
+/// coordinate and the relative pivot.
+fn solve_scaled(a: &mut [f64], n: usize, b: &mut [f64], scale: &mut [f64]) -> Result<(), (usize, f64)> {
+    for (i, s) in scale.iter_mut().enumerate() {
+        *s = 1.0 / a[i * n + i].sqrt();
+    }
+    for i in 0..n {
+        for j in 0..=i {
+            a[i * n + j] *= scale[i] * scale[j];
+        }
+        b[i] *= scale[i];
+    }
+    cholesky_factor(a, n).map_err(|d| (d.row, d.relative_pivot))?;
+    cholesky_solve(a, n, b);
+    for (x, s) in b.iter_mut().zip(scale.iter()) {
+        *x *= s;
+    }
+    Ok(())
+}

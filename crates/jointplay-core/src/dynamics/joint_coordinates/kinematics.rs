@@ -1,0 +1,207 @@
+//! Forward kinematics over the tree: body frames from the joint state, the
+//! velocity transformation `R` and the bias accelerations `b`, edge by edge
+//! from the ground out; and the joint state of given body frames.
+//!
+//! For an edge from parent `p` to child `c` with `d = r_c - r_p` and joint
+//! rate `s_dot` along the joint's motion `h` (a revolute joint turns the child
+//! about the joint point `P`: `h = sigma (perp(r_c - P), 1)`; a translational
+//! joint slides it along the axis `u`: `h = (+-u, 0)`):
+//!
+//! ```text
+//! v_c     = v_p + omega_p perp(d) + h s_dot,            omega_c = omega_p + h_omega s_dot
+//! a_c     = a_p + alpha_p perp(d) + omega_p perp(d_dot) + h_dot s_dot + h s_ddot
+//! ```
+//!
+//! with `h_dot = sigma perp(v_c - v_P)` for the revolute joint and
+//! `+-omega perp(u)` for the translational one.
+
+use super::tree::{EdgeCoordinate, EdgeJoint, JointTree, TreeEdge};
+use crate::dynamics::frame::{perp, Frame, Vec2};
+
+/// The joint's relative coordinate `s` (revolute: `phi_second - phi_first`),
+/// its rate and, when driven, its acceleration at `t`. The coordinate of a
+/// free revolute joint is the child's absolute angle (so that its size, which
+/// the relative error control sees, does not grow with the turns of the parent);
+/// its relative value comes from the parent's frame.
+#[inline]
+fn coordinate(edge: &TreeEdge, parent: &Frame, t: f64, theta: &[f64], theta_dot: &[f64]) -> (f64, f64, f64) {
+    match &edge.coordinate {
+        EdgeCoordinate::Dofs(k) => match edge.joint {
+            EdgeJoint::Revolute { sign, .. } => (sign * (theta[*k] - parent.angle), sign * (theta_dot[*k] - parent.angular_velocity), 0.0),
+            _ => (theta[*k], theta_dot[*k], 0.0),
+        },
+        EdgeCoordinate::Driven(f) => {
+            let s = f.sample(t);
+            (s.value, s.rate, s.acceleration)
+        }
+        EdgeCoordinate::Locked => (0.0, 0.0, 0.0),
+    }
+}
+
+/// Frame with position, angle and velocities (computing its sine and cosine).
+#[inline]
+fn frame(position: Vec2, angle: f64, velocity: Vec2, angular_velocity: f64) -> Frame {
+    let (sin, cos) = angle.sin_cos();
+    Frame { position, angle, cos, sin, velocity, angular_velocity }
+}
+
+/// The motion `h = (h_lin, h_omega)` of a one-coordinate joint and its rate `h_dot`
+/// (linear part only; `h_omega` is constant), at the placed child frame.
+#[inline]
+fn joint_motion(edge: &TreeEdge, parent: &Frame, child: &Frame) -> (Vec2, f64, Vec2) {
+    match &edge.joint {
+        EdgeJoint::Revolute { parent_point, sign, .. } => {
+            let p = parent.point(*parent_point);
+            let v_p = parent.point_velocity(*parent_point);
+            (perp(child.position - p) * *sign, *sign, perp(child.velocity - v_p) * *sign)
+        }
+        EdgeJoint::Translational { axis, parent_is_first, .. } => {
+            let (first, sign) = if *parent_is_first { (parent, 1.0) } else { (child, -1.0) };
+            let u = first.rotate(*axis);
+            (u * sign, 0.0, perp(u) * (sign * first.angular_velocity))
+        }
+        EdgeJoint::Fixed { .. } | EdgeJoint::Free => (Vec2::zeros(), 0.0, Vec2::zeros()),
+    }
+}
+
+/// Places the child of `edge`: its frame from the parent frame and the joint's coordinate `s` and rate `s_dot`.
+#[inline]
+fn place_child(edge: &TreeEdge, parent: &Frame, theta: &[f64], theta_dot: &[f64], (s, s_dot): (f64, f64)) -> Frame {
+    match &edge.joint {
+        EdgeJoint::Free => {
+            let EdgeCoordinate::Dofs(k) = edge.coordinate else { unreachable!("a free body has three coordinates") };
+            let position = Vec2::new(theta[k], theta[k + 1]);
+            frame(position, theta[k + 2], Vec2::new(theta_dot[k], theta_dot[k + 1]), theta_dot[k + 2])
+        }
+        EdgeJoint::Revolute { parent_point, child_point, sign } => {
+            let p = parent.point(*parent_point);
+            let omega = parent.angular_velocity + sign * s_dot;
+            let mut child = frame(Vec2::zeros(), parent.angle + sign * s, Vec2::zeros(), omega);
+            child.position = p - child.rotate(*child_point);
+            let d = child.position - parent.position;
+            child.velocity = parent.velocity + perp(d) * parent.angular_velocity + perp(child.position - p) * (sign * s_dot);
+            child
+        }
+        EdgeJoint::Translational { parent_point, child_point, axis, parent_is_first, relative_angle } => {
+            let sign = if *parent_is_first { 1.0 } else { -1.0 };
+            let mut child = frame(Vec2::zeros(), parent.angle + sign * relative_angle, Vec2::zeros(), parent.angular_velocity);
+            let u = if *parent_is_first { parent.rotate(*axis) } else { child.rotate(*axis) };
+            child.position = parent.point(*parent_point) + u * (sign * s) - child.rotate(*child_point);
+            let d = child.position - parent.position;
+            child.velocity = parent.velocity + perp(d) * parent.angular_velocity + u * (sign * s_dot);
+            child
+        }
+        EdgeJoint::Fixed { parent_point, child_point, relative_angle } => {
+            let mut child = frame(Vec2::zeros(), parent.angle + relative_angle, Vec2::zeros(), parent.angular_velocity);
+            child.position = parent.point(*parent_point) - child.rotate(*child_point);
+            child.velocity = parent.velocity + perp(child.position - parent.position) * parent.angular_velocity;
+            child
+        }
+    }
+}
+
+impl JointTree {
+    /// Frames of all bodies (index 0, the ground, untouched) from the joint state at `t`.
+    pub fn place(&self, t: f64, theta: &[f64], theta_dot: &[f64], frames: &mut [Frame]) {
+        for edge in &self.edges {
+            let parent = frames[edge.parent.0];
+            let (s, s_dot, _) = coordinate(edge, &parent, t, theta, theta_dot);
+            frames[edge.child.0] = place_child(edge, &parent, theta, theta_dot, (s, s_dot));
+        }
+    }
+
+    /// [`JointTree::place`], and the velocity transformation `R` (`velocity_map`,
+    /// row-major `nv x n_dofs`) and the bias accelerations `b` (`nv`) of the bodies'
+    /// velocity coordinates `(vx, vy, omega)` (three per body, in body order).
+    pub fn place_and_linearise(&self, t: f64, theta: &[f64], theta_dot: &[f64], frames: &mut [Frame], velocity_map: &mut [f64], bias: &mut [f64]) {
+        let n = self.n_dofs;
+        for edge in &self.edges {
+            let parent = frames[edge.parent.0];
+            let (s, s_dot, mut s_ddot) = coordinate(edge, &parent, t, theta, theta_dot);
+            let child = place_child(edge, &parent, theta, theta_dot, (s, s_dot));
+            frames[edge.child.0] = child;
+            let c = JointTree::body_offset(edge.child);
+            let d = child.position - parent.position;
+            // rows of the child: the parent's rows carried rigidly, then the joint's own column
+            if edge.parent.is_ground() {
+                velocity_map[c * n..(c + 3) * n].fill(0.0);
+                bias[c..c + 3].fill(0.0);
+            } else {
+                let p = JointTree::body_offset(edge.parent);
+                for k in 0..n {
+                    let omega = velocity_map[(p + 2) * n + k];
+                    velocity_map[c * n + k] = velocity_map[p * n + k] - d.y * omega;
+                    velocity_map[(c + 1) * n + k] = velocity_map[(p + 1) * n + k] + d.x * omega;
+                    velocity_map[(c + 2) * n + k] = omega;
+                }
+                let (alpha, w) = (bias[p + 2], parent.angular_velocity);
+                let carried = Vec2::new(bias[p], bias[p + 1]) + perp(d) * alpha + perp(child.velocity - parent.velocity) * w;
+                bias[c] = carried.x;
+                bias[c + 1] = carried.y;
+                bias[c + 2] = alpha;
+            }
+            let (h, h_omega, h_dot) = joint_motion(edge, &parent, &child);
+            match &edge.coordinate {
+                EdgeCoordinate::Dofs(k) if edge.joint == EdgeJoint::Free => {
+                    for i in 0..3 {
+                        velocity_map[(c + i) * n + k + i] = 1.0;
+                    }
+                }
+                EdgeCoordinate::Dofs(k) if matches!(edge.joint, EdgeJoint::Revolute { .. }) => {
+                    // s_dot = sigma (theta_dot_k - omega_p): h sigma times (e_k - the parent's omega row)
+                    let sigma = h_omega;
+                    for l in 0..n {
+                        let parent_omega = if edge.parent.is_ground() { 0.0 } else { velocity_map[(JointTree::body_offset(edge.parent) + 2) * n + l] };
+                        let rate = sigma * (f64::from(u8::from(l == *k)) - parent_omega);
+                        velocity_map[c * n + l] += h.x * rate;
+                        velocity_map[(c + 1) * n + l] += h.y * rate;
+                        velocity_map[(c + 2) * n + l] += h_omega * rate;
+                    }
+                    // and s_ddot = -sigma alpha_p at zero joint accelerations
+                    if !edge.parent.is_ground() {
+                        s_ddot = -sigma * bias[JointTree::body_offset(edge.parent) + 2];
+                    }
+                }
+                EdgeCoordinate::Dofs(k) => {
+                    velocity_map[c * n + k] += h.x;
+                    velocity_map[(c + 1) * n + k] += h.y;
+                    velocity_map[(c + 2) * n + k] += h_omega;
+                }
+                EdgeCoordinate::Driven(_) | EdgeCoordinate::Locked => {}
+            }
+            let extra = h_dot * s_dot + h * s_ddot;
+            bias[c] += extra.x;
+            bias[c + 1] += extra.y;
+            bias[c + 2] += h_omega * s_ddot;
+        }
+    }
+
+    /// The joint state `(theta, theta_dot)` of body frames that satisfy the joints
+    /// (an assembled state), the inverse of [`JointTree::place`].
+    pub fn joint_state(&self, frames: &[Frame], theta: &mut [f64], theta_dot: &mut [f64]) {
+        for edge in &self.edges {
+            let EdgeCoordinate::Dofs(k) = edge.coordinate else { continue };
+            let (parent, child) = (&frames[edge.parent.0], &frames[edge.child.0]);
+            match &edge.joint {
+                EdgeJoint::Free => {
+                    theta[k..k + 3].copy_from_slice(&[child.position.x, child.position.y, child.angle]);
+                    theta_dot[k..k + 3].copy_from_slice(&[child.velocity.x, child.velocity.y, child.angular_velocity]);
+                }
+                EdgeJoint::Revolute { .. } => {
+                    theta[k] = child.angle;
+                    theta_dot[k] = child.angular_velocity;
+                }
+                EdgeJoint::Translational { parent_point, child_point, axis, parent_is_first, .. } => {
+                    let (first, second, first_point, second_point) =
+                        if *parent_is_first { (parent, child, parent_point, child_point) } else { (child, parent, child_point, parent_point) };
+                    let u = first.rotate(*axis);
+                    let d = second.point(*second_point) - first.point(*first_point);
+                    let d_dot = second.point_velocity(*second_point) - first.point_velocity(*first_point);
+                    theta[k] = u.dot(&d);
+                    theta_dot[k] = u.dot(&d_dot) + perp(u).dot(&d) * first.angular_velocity;
+                }
+                EdgeJoint::Fixed { .. } => {}
+            }
+        }
+    }
+}
