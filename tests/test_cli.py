@@ -47,6 +47,16 @@ def test_check_prints_the_assembled_mechanism():
     assert result.output.rstrip().endswith("ok")
 
 
+def test_check_says_which_formulation_the_simulation_uses():
+    # the dry joint cuts the slider-crank's loop: a tree of ideal joints, two joint coordinates
+    output = " ".join(invoke("check", DRY).output.split())
+    assert "formulation (auto): joint coordinates, 2 of them" in output
+    # the ideal slider-crank is a closed loop of ideal joints
+    output = " ".join(invoke("check", IDEAL).output.split())
+    assert "formulation (auto): absolute coordinates with constraints, because joint" in output
+    assert "closes a loop of ideal joints" in output
+
+
 def test_check_prints_a_hydraulic_cylinder_and_counts_its_states():
     result = invoke("check", str(ROOT / "examples" / "hydraulic_boom.toml"))
     assert result.exit_code == 0

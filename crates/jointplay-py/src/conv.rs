@@ -213,6 +213,16 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
     d.set_item("n_element_states", m.layout.nz)?;
     d.set_item("n_equations", m.n_dynamic_equations())?;
     d.set_item("degrees_of_freedom", m.degrees_of_freedom())?;
+    match &m.joint_tree {
+        Ok(tree) => {
+            d.set_item("joint_coordinates", tree.n_dofs)?;
+            d.set_item("absolute_because", py.None())?;
+        }
+        Err(why) => {
+            d.set_item("joint_coordinates", py.None())?;
+            d.set_item("absolute_because", why)?;
+        }
+    }
     channel_infos(py, &d, &m.channel_infos())?;
     Ok(d)
 }
