@@ -38,11 +38,13 @@ fn coordinate(edge: &TreeEdge, parent: &Frame, t: f64, theta: &[f64], theta_dot:
     }
 }
 
-/// Frame with position, angle and velocities (computing its sine and cosine).
+/// Frame at `angle` with zero position and velocities, taking sine and cosine
+/// from `previous` when its angle is bit for bit the same (a body whose angle
+/// is locked, or unchanged between evaluations).
 #[inline]
-fn frame(position: Vec2, angle: f64, velocity: Vec2, angular_velocity: f64) -> Frame {
-    let (sin, cos) = angle.sin_cos();
-    Frame { position, angle, cos, sin, velocity, angular_velocity }
+fn turned(previous: &Frame, angle: f64, angular_velocity: f64) -> Frame {
+    let (sin, cos) = if previous.angle.to_bits() == angle.to_bits() { (previous.sin, previous.cos) } else { angle.sin_cos() };
+    Frame { position: Vec2::zeros(), angle, cos, sin, velocity: Vec2::zeros(), angular_velocity }
 }
 
 /// The motion `h = (h_lin, h_omega)` of a one-coordinate joint and its rate `h_dot`
@@ -64,19 +66,22 @@ fn joint_motion(edge: &TreeEdge, parent: &Frame, child: &Frame) -> (Vec2, f64, V
     }
 }
 
-/// Places the child of `edge`: its frame from the parent frame and the joint's coordinate `s` and rate `s_dot`.
+/// Places the child of `edge`: its frame from the parent frame and the joint's
+/// coordinate `s` and rate `s_dot` (`previous`: the child's last frame).
 #[inline]
-fn place_child(edge: &TreeEdge, parent: &Frame, theta: &[f64], theta_dot: &[f64], (s, s_dot): (f64, f64)) -> Frame {
+fn place_child(edge: &TreeEdge, parent: &Frame, previous: &Frame, theta: &[f64], theta_dot: &[f64], (s, s_dot): (f64, f64)) -> Frame {
     match &edge.joint {
         EdgeJoint::Free => {
             let EdgeCoordinate::Dofs(k) = edge.coordinate else { unreachable!("a free body has three coordinates") };
-            let position = Vec2::new(theta[k], theta[k + 1]);
-            frame(position, theta[k + 2], Vec2::new(theta_dot[k], theta_dot[k + 1]), theta_dot[k + 2])
+            let mut child = turned(previous, theta[k + 2], theta_dot[k + 2]);
+            child.position = Vec2::new(theta[k], theta[k + 1]);
+            child.velocity = Vec2::new(theta_dot[k], theta_dot[k + 1]);
+            child
         }
         EdgeJoint::Revolute { parent_point, child_point, sign } => {
             let p = parent.point(*parent_point);
             let omega = parent.angular_velocity + sign * s_dot;
-            let mut child = frame(Vec2::zeros(), parent.angle + sign * s, Vec2::zeros(), omega);
+            let mut child = turned(previous, parent.angle + sign * s, omega);
             child.position = p - child.rotate(*child_point);
             let d = child.position - parent.position;
             child.velocity = parent.velocity + perp(d) * parent.angular_velocity + perp(child.position - p) * (sign * s_dot);
@@ -84,7 +89,7 @@ fn place_child(edge: &TreeEdge, parent: &Frame, theta: &[f64], theta_dot: &[f64]
         }
         EdgeJoint::Translational { parent_point, child_point, axis, parent_is_first, relative_angle } => {
             let sign = if *parent_is_first { 1.0 } else { -1.0 };
-            let mut child = frame(Vec2::zeros(), parent.angle + sign * relative_angle, Vec2::zeros(), parent.angular_velocity);
+            let mut child = turned(previous, parent.angle + sign * relative_angle, parent.angular_velocity);
             let u = if *parent_is_first { parent.rotate(*axis) } else { child.rotate(*axis) };
             child.position = parent.point(*parent_point) + u * (sign * s) - child.rotate(*child_point);
             let d = child.position - parent.position;
@@ -92,7 +97,7 @@ fn place_child(edge: &TreeEdge, parent: &Frame, theta: &[f64], theta_dot: &[f64]
             child
         }
         EdgeJoint::Fixed { parent_point, child_point, relative_angle } => {
-            let mut child = frame(Vec2::zeros(), parent.angle + relative_angle, Vec2::zeros(), parent.angular_velocity);
+            let mut child = turned(previous, parent.angle + relative_angle, parent.angular_velocity);
             child.position = parent.point(*parent_point) - child.rotate(*child_point);
             child.velocity = parent.velocity + perp(child.position - parent.position) * parent.angular_velocity;
             child
@@ -106,7 +111,7 @@ impl JointTree {
         for edge in &self.edges {
             let parent = frames[edge.parent.0];
             let (s, s_dot, _) = coordinate(edge, &parent, t, theta, theta_dot);
-            frames[edge.child.0] = place_child(edge, &parent, theta, theta_dot, (s, s_dot));
+            frames[edge.child.0] = place_child(edge, &parent, &frames[edge.child.0], theta, theta_dot, (s, s_dot));
         }
     }
 
@@ -118,7 +123,7 @@ impl JointTree {
         for edge in &self.edges {
             let parent = frames[edge.parent.0];
             let (s, s_dot, mut s_ddot) = coordinate(edge, &parent, t, theta, theta_dot);
-            let child = place_child(edge, &parent, theta, theta_dot, (s, s_dot));
+            let child = place_child(edge, &parent, &frames[edge.child.0], theta, theta_dot, (s, s_dot));
             frames[edge.child.0] = child;
             let c = JointTree::body_offset(edge.child);
             let d = child.position - parent.position;
