@@ -13,7 +13,9 @@
 //! ```
 //!
 //! with `h_dot = sigma perp(v_c - v_P)` for the revolute joint and
-//! `+-omega perp(u)` for the translational one.
+//! `+-omega perp(u)` for the translational one. `s` is the joint's relative
+//! coordinate; a free revolute joint's state coordinate is the child's
+//! absolute angle, so its `s_dot` is `sigma (theta_dot_k - omega_p)`.
 
 use super::tree::{EdgeCoordinate, EdgeJoint, JointTree, TreeEdge};
 use crate::dynamics::frame::{perp, Frame, Vec2};
