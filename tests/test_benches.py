@@ -22,7 +22,7 @@ def test_dry_benchmark_runs_engine_baseline_and_practical_limit(capsys):
     bench = load("bench_flores_dry")
     rows = bench.main(["--repeats", "1", "--markdown"])
     with_limit = importlib.util.find_spec("numba") is not None
-    assert [r["name"] for r in rows] == ["jointplay dopri5", "jointplay adams",
+    assert [r["name"] for r in rows] == ["jointplay dopri5", "jointplay adams", "jointplay dopri5, absolute coordinates",
                                          *([bench.LIMIT_NAME] if with_limit else []),
                                          "SciPy solve_ivp RK45 (baseline)"]
     assert all(r["steps"] > 100 and r["rhs"] > r["steps"] and r["impacts"] > 0 for r in rows)
@@ -44,7 +44,8 @@ def test_dry_benchmark_runs_without_numba(capsys, monkeypatch):
     bench = load("bench_flores_dry")
     assert bench.limit is None
     rows = bench.main(["--repeats", "1"])
-    assert [r["name"] for r in rows] == ["jointplay dopri5", "jointplay adams", "SciPy solve_ivp RK45 (baseline)"]
+    assert [r["name"] for r in rows] == ["jointplay dopri5", "jointplay adams", "jointplay dopri5, absolute coordinates",
+                                         "SciPy solve_ivp RK45 (baseline)"]
     out = capsys.readouterr().out
     assert f"{bench.LIMIT_NAME}: skipped, numba is not installed (pip install numba)" in out
     assert "goal (issue 10), dopri5 at most 2.5x the practical limit: not measured" in out
