@@ -1,7 +1,8 @@
 """Benchmark: the dry-clearance Flores slider-crank, two crank revolutions.
 
-Times the jointplay engine and two baselines of the same model in the same
-run: what a user would script, ``solve_ivp`` (RK45) on the independent
+Times the jointplay engine (by default in joint coordinates, the mechanism
+being a tree once its clearance joint cuts the loop; once more in absolute
+coordinates) and two baselines of the same model in the same run: what a user would script, ``solve_ivp`` (RK45) on the independent
 minimal-coordinate model in ``tests/physics/reference_slider_crank.py``, and
 the practical limit, a hand-written numba Dormand-Prince on the same
 minimal-coordinate model (``benches/limit_slider_crank.py``), both with the
