@@ -4,8 +4,10 @@
 //! addresses in the state come from [`crate::dynamics::StateLayout`]; a kind
 //! sees only its own slices) and provides:
 //!
-//! - the frame of a body marker (pose, velocity) from its coordinates, and the
-//!   Jacobian of a marker point by its velocity coordinates;
+//! - the frame of a body marker (pose, velocity) from its coordinates; the
+//!   velocity coordinates a marker moves with, the Jacobian of a marker point
+//!   and of a marker's angle by them, and the velocity-dependent part of the
+//!   marker's acceleration (what constraint rows are built from);
 //! - its mass block and the solve with it ([`MassBlock`]);
 //! - velocity-dependent inertial forces;
 //! - the map from `v` to `q_dot`, and a position displaced by a velocity-coordinate increment;
@@ -19,6 +21,8 @@
 mod planar_rigid;
 
 pub use planar_rigid::PlanarRigidBody;
+
+use std::ops::Range;
 
 use crate::dynamics::frame::{Frame, Vec2};
 
@@ -69,6 +73,52 @@ impl BodyKind {
     pub fn marker_jacobian(&self, frame: &Frame, local: Vec2, jx: &mut [f64], jy: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, local, jx, jy),
+        }
+    }
+
+    /// The velocity coordinates (counted from the body's first) that a marker
+    /// at `local` [m] moves with: the width of its constraint-Jacobian block.
+    /// Fixed for a marker, so the Jacobian's pattern is known at compile time.
+    pub fn marker_coordinates(&self, _local: Vec2) -> Range<usize> {
+        match self {
+            Self::PlanarRigid(_) => 0..PlanarRigidBody::NV,
+        }
+    }
+
+    /// Adds `along . d(v_P)/d(v)`, the Jacobian of the marker point's velocity
+    /// projected on `along`, to the marker's block `out` (see
+    /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`].
+    #[inline]
+    pub fn add_marker_jacobian(&self, frame: &Frame, local: Vec2, along: Vec2, out: &mut [f64]) {
+        match self {
+            Self::PlanarRigid(_) => PlanarRigidBody::add_marker_jacobian(frame, local, along, out),
+        }
+    }
+
+    /// Adds `scale d(omega_P)/d(v)`, the Jacobian of the marker's angular
+    /// velocity, to the marker's block `out` [rad/rad times `scale`].
+    #[inline]
+    pub fn add_marker_angle_jacobian(&self, _local: Vec2, scale: f64, out: &mut [f64]) {
+        match self {
+            Self::PlanarRigid(_) => out[2] += scale,
+        }
+    }
+
+    /// The marker point's acceleration at zero coordinate accelerations (the
+    /// velocity-dependent part, `-omega^2 A s` for a rigid body) [m/s^2].
+    #[inline]
+    pub fn marker_bias_acceleration(&self, frame: &Frame, local: Vec2) -> Vec2 {
+        match self {
+            Self::PlanarRigid(_) => PlanarRigidBody::marker_acceleration(frame, &[0.0; 3], local),
+        }
+    }
+
+    /// The marker's angular acceleration at zero coordinate accelerations
+    /// (zero for a rigid body) [rad/s^2].
+    #[inline]
+    pub fn marker_bias_angular_acceleration(&self, _frame: &Frame, _local: Vec2) -> f64 {
+        match self {
+            Self::PlanarRigid(_) => 0.0,
         }
     }
 

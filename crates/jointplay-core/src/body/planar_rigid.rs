@@ -66,6 +66,15 @@ impl PlanarRigidBody {
         jy.copy_from_slice(&[0.0, 1.0, s.x]);
     }
 
+    /// Adds `along . [[1, 0, -(A s)_y], [0, 1, (A s)_x]]` to `out`.
+    #[inline]
+    pub fn add_marker_jacobian(frame: &Frame, local: Vec2, along: Vec2, out: &mut [f64]) {
+        let s = frame.rotate(local);
+        out[0] += along.x;
+        out[1] += along.y;
+        out[2] += along.dot(&perp(s));
+    }
+
     /// `a_G + alpha perp(A s) - omega^2 A s` [m/s^2].
     #[inline]
     pub fn marker_acceleration(frame: &Frame, a: &[f64], local: Vec2) -> Vec2 {

@@ -90,20 +90,20 @@ pub(crate) fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
 }
 
 /// Generalised constraint force `(fx, fy, moment about the centre of mass)`
-/// that element `e` exerts on its second body (`-Phi_q^T lambda` over its rows).
+/// that element `e` exerts on its second body (on its first, negated, when the
+/// second is the ground): the loads of its rows' multipliers, `-Phi_q^T lambda`,
+/// as each primitive states them at its markers.
 fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 3] {
     let element = &model.elements[e];
-    let (body, sign) = if element.second.is_ground() { (element.first, -1.0) } else { (element.second, 1.0) };
-    let Some(address) = model.layout.body(body) else { return [0.0; 3] };
+    let (slot, sign) = if element.second.is_ground() { (0, -1.0) } else { (1, 1.0) };
+    let centre = ws.frames[if slot == 0 { element.first.0 } else { element.second.0 }].position;
     let mut g = [0.0; 3];
     for k in element.constraints.clone() {
-        for r in model.row_offsets[k]..model.row_offsets[k + 1] {
-            for (block, _) in ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, first)| first == address.v) {
-                for (gi, ji) in g.iter_mut().zip(block) {
-                    *gi -= sign * ji * ws.multipliers[r];
-                }
-            }
-        }
+        let rows = model.row_offsets[k]..model.row_offsets[k + 1];
+        let load = model.constraints[k].kind.loads(&ws.frames, &ws.multipliers[rows])[slot];
+        g[0] += sign * load.force.x;
+        g[1] += sign * load.force.y;
+        g[2] += sign * (load.moment + cross(load.point - centre, load.force));
     }
     g
 }

@@ -4,9 +4,10 @@
 use std::collections::HashMap;
 
 use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES, FILM_QUANTITIES};
+use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use super::frame::{perp, BodyIndex, Marker, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm};
-use crate::body::{BodyKind, MassBlock, PlanarRigidBody};
+use crate::body::{BodyKind, PlanarRigidBody};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
@@ -61,12 +62,11 @@ impl<'s> Compiler<'s> {
             points: Vec::new(),
             gravity: Vec2::new(spec.gravity[0], spec.gravity[1]),
             layout: Default::default(),
-            inverse_mass: Vec::new(),
             constraints: Vec::new(),
             n_dynamic_constraints: 0,
             row_offsets: vec![0],
             row_owner: Vec::new(),
-            row_bodies: Vec::new(),
+            jacobian_pattern: JacobianPattern::default(),
             schur_terms: Vec::new(),
             schur_factor: PatternLdl::analyse(0, &[]),
             elements: Vec::new(),
@@ -121,8 +121,6 @@ impl<'s> Compiler<'s> {
             self.body_index.insert(&b.name, index);
             let kind = BodyKind::PlanarRigid(PlanarRigidBody::new(b.mass, b.inertia));
             self.model.layout.push_body(&kind);
-            let MassBlock::ConstantDiagonal(inverse_mass) = kind.mass_block();
-            self.model.inverse_mass.extend_from_slice(inverse_mass);
             self.model.initial_coordinates.extend([b.position[0], b.position[1], b.angle]);
             self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity]);
             self.model.bodies.push(Body { name: b.name.clone(), kind });
@@ -182,6 +180,13 @@ impl<'s> Compiler<'s> {
         if body.is_ground() { 0.0 } else { self.spec.bodies[body.0 - 1].angle }
     }
 
+    /// The velocity coordinates a marker's constraint rows span (`None` on the ground).
+    fn marker_columns(&self, marker: Marker) -> Option<MarkerColumns> {
+        let address = self.model.layout.body(marker.body)?;
+        let within = self.model.bodies[marker.body.0 - 1].kind.marker_coordinates(marker.local);
+        Some(MarkerColumns { body: marker.body.0 - 1, body_columns: address.v_range(), columns: address.v + within.start..address.v + within.end })
+    }
+
     /// Adds an element owning `kinds`; returns its index.
     fn add_element(&mut self, name: &str, kind: ElementKind, first: Marker, second: Marker, axis: Vec2, kinds: Vec<ConstraintKind>) -> usize {
         let owner = self.model.elements.len();
@@ -191,9 +196,8 @@ impl<'s> Compiler<'s> {
             let last = *self.model.row_offsets.last().unwrap();
             self.model.row_offsets.push(last + rows);
             self.model.row_owner.extend(std::iter::repeat_n(owner, rows));
-            let layout = &self.model.layout;
-            let bodies = k.bodies().map(|b| layout.body(b).map_or(usize::MAX, |address| address.v));
-            self.model.row_bodies.extend(std::iter::repeat_n(bodies, rows));
+            let markers = k.markers().map(|m| self.marker_columns(m));
+            self.model.jacobian_pattern.push_rows(rows, markers);
             self.model.constraints.push(Constraint { kind: k, owner });
         }
         self.model.elements.push(IdealElement {
@@ -464,14 +468,15 @@ impl<'s> Compiler<'s> {
     /// ascending order) and the factorisation of its dynamic rows.
     fn analyse_constraint_matrix(&mut self) {
         let model = &mut self.model;
-        let rows = &model.row_bodies;
-        // (a, b, block of a, block of b, body)
+        let pattern = &model.jacobian_pattern;
+        // (a, b, block of a, block of b)
         let mut terms = Vec::new();
-        for a in 0..rows.len() {
+        for a in 0..pattern.n_rows() {
             for b in 0..=a {
-                for (slot_a, &body) in rows[a].iter().enumerate().filter(|&(_, &k)| k != usize::MAX) {
-                    for (slot_b, _) in rows[b].iter().enumerate().filter(|&(_, &k)| k == body) {
-                        terms.push((a, b, 2 * a + slot_a, 2 * b + slot_b, body));
+                for first in pattern.row_block_indices(a) {
+                    let body = pattern.blocks()[first].body;
+                    for second in pattern.row_block_indices(b).filter(|&k| pattern.blocks()[k].body == body) {
+                        terms.push((a, b, first, second));
                     }
                 }
             }
@@ -482,9 +487,9 @@ impl<'s> Compiler<'s> {
         let narrow = |i: usize| u32::try_from(i).expect("a model has fewer than 2^32 constraint rows");
         model.schur_terms = terms
             .into_iter()
-            .map(|(a, b, first, second, body)| {
+            .map(|(a, b, first, second)| {
                 let entry = if a < m { model.schur_factor.storage_index(a, b) } else { 0 };
-                SchurTerm { row: narrow(a), column: narrow(b), entry: narrow(entry), first: narrow(first), second: narrow(second), body: narrow(body) }
+                SchurTerm { row: narrow(a), column: narrow(b), entry: narrow(entry), first: narrow(first), second: narrow(second) }
             })
             .collect();
     }

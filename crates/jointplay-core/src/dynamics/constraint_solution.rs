@@ -23,6 +23,7 @@
 //!   penalty and by the drift projection after the step, so the motion goes on
 //!   along its branch.
 
+use super::constraint_jacobian::{dot, JacobianBlock};
 use super::model::SchurTerm;
 use super::{Model, Workspace};
 use crate::linalg::{cholesky_solve, RankDeficiency};
@@ -57,22 +58,35 @@ pub(crate) enum FactorKind {
     Spectral,
 }
 
-/// Value of one precomputed term of `S` from the Jacobian blocks.
+/// Value of one precomputed term of `S`: row a's block times `M_c^-1` times row b's block.
 #[inline]
-fn term_value(term: &SchurTerm, blocks: &[[f64; 3]], inverse_mass: &[f64]) -> f64 {
-    let (ra, rb) = (&blocks[term.first as usize], &blocks[term.second as usize]);
-    let w = &inverse_mass[term.body as usize..term.body as usize + 3];
-    ra[0] * w[0] * rb[0] + ra[1] * w[1] * rb[1] + ra[2] * w[2] * rb[2]
+fn term_value(term: &SchurTerm, blocks: &[JacobianBlock], values: &[f64], solved: &[f64]) -> f64 {
+    let (a, b) = (&blocks[term.first as usize], &blocks[term.second as usize]);
+    let start = b.solved + a.offset_in_body;
+    dot(&values[a.values()], &solved[start..start + a.width])
 }
 
-/// Forms the lower triangle of `S` for the first `rows` rows, row-major `rows x rows`, into `out`.
-fn form_dense(model: &Model, rows: usize, ws_jacobian: &[[[f64; 3]; 2]], out: &mut [f64]) {
+/// `M_c^-1 J_c^T` of every block of the first `rows` rows into `ws.jacobian_solved`, each over
+/// all velocity coordinates of its body `c` (the block widened by zeros), with the body kind's solve.
+fn solve_blocks_with_mass(model: &Model, rows: usize, ws: &mut Workspace) {
+    for block in model.jacobian_pattern.blocks_of_rows(rows) {
+        let kind = &model.bodies[block.body].kind;
+        let nv = model.layout.bodies[block.body].nv;
+        let widened = &mut ws.mass_scratch[..nv];
+        widened.fill(0.0);
+        widened[block.offset_in_body..block.offset_in_body + block.width].copy_from_slice(&ws.jacobian[block.values()]);
+        kind.solve_mass(widened, &mut ws.jacobian_solved[block.solved..block.solved + nv]);
+    }
+}
+
+/// Forms the lower triangle of `S` for the first `rows` rows, row-major `rows x rows`, into `out`
+/// (from the solved blocks of [`solve_blocks_with_mass`]).
+fn form_dense(model: &Model, rows: usize, values: &[f64], solved: &[f64], out: &mut [f64]) {
     let out = &mut out[..rows * rows];
     out.fill(0.0);
-    let blocks = ws_jacobian.as_flattened();
-    let inverse_mass = model.inverse_mass.as_slice();
+    let blocks = model.jacobian_pattern.blocks();
     for term in model.schur_terms.iter().take_while(|term| (term.row as usize) < rows) {
-        out[term.row as usize * rows + term.column as usize] += term_value(term, blocks, inverse_mass);
+        out[term.row as usize * rows + term.column as usize] += term_value(term, blocks, values, solved);
     }
 }
 
@@ -80,6 +94,7 @@ fn form_dense(model: &Model, rows: usize, ws_jacobian: &[[[f64; 3]; 2]], out: &m
 /// conditioned, else the regularised factor of the singular path. Fails only
 /// when `S` is not finite or the regularised factor has a non-positive pivot.
 pub(crate) fn factor(model: &Model, rows: usize, ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
+    solve_blocks_with_mass(model, rows, ws);
     let kind = match factor_regular(model, rows, ws) {
         Ok(kind) => kind,
         Err(_) => {
@@ -97,15 +112,14 @@ fn factor_regular(model: &Model, rows: usize, ws: &mut Workspace) -> Result<Fact
     if rows == model.schur_factor.size() {
         let schur = &mut ws.schur[..rows * (rows + 1)];
         schur.fill(0.0);
-        let blocks = ws.jacobian.as_flattened();
-        let inverse_mass = model.inverse_mass.as_slice();
+        let blocks = model.jacobian_pattern.blocks();
         for term in model.schur_terms.iter().take_while(|term| (term.row as usize) < rows) {
-            schur[term.entry as usize] += term_value(term, blocks, inverse_mass);
+            schur[term.entry as usize] += term_value(term, blocks, &ws.jacobian, &ws.jacobian_solved);
         }
         model.schur_factor.factor(schur)?;
         Ok(FactorKind::Pattern)
     } else {
-        form_dense(model, rows, &ws.jacobian, &mut ws.schur);
+        form_dense(model, rows, &ws.jacobian, &ws.jacobian_solved, &mut ws.schur);
         crate::linalg::cholesky_factor(&mut ws.schur, rows)?;
         Ok(FactorKind::Dense)
     }
@@ -113,7 +127,7 @@ fn factor_regular(model: &Model, rows: usize, ws: &mut Workspace) -> Result<Fact
 
 /// The eigendecomposition of `S` into `ws.schur` (eigenvectors) and `ws.schur_eigenvalues`.
 fn factor_spectral(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
-    form_dense(model, rows, &ws.jacobian, &mut ws.schur_matrix);
+    form_dense(model, rows, &ws.jacobian, &ws.jacobian_solved, &mut ws.schur_matrix);
     let a = &mut ws.schur_matrix[..rows * rows];
     for i in 0..rows {
         for j in 0..i {

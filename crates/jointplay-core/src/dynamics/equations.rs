@@ -15,7 +15,7 @@ use super::state::ContactMemory;
 use super::constraint_solution;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::joint::{ConstraintRows, Lubrication, RowJacobian};
+use crate::joint::{ConstraintRows, Lubrication};
 use crate::linalg::RankDeficiency;
 
 /// How constraint drift is controlled.
@@ -47,8 +47,16 @@ pub fn update_frames(model: &Model, q: &[f64], v: &[f64], frames: &mut [Frame]) 
 pub(crate) fn linearise_constraints(model: &Model, n_constraints: usize, t: f64, ws: &mut Workspace) -> usize {
     ws.factored_at = None;
     let rows = model.row_offsets[n_constraints];
+    ws.jacobian.fill(0.0);
     for (k, c) in model.constraints[..n_constraints].iter().enumerate() {
-        let target = ConstraintRows { jacobian: &mut ws.jacobian, row: model.row_offsets[k], nu: &mut ws.nu, gamma: &mut ws.gamma };
+        let target = ConstraintRows {
+            jacobian: &mut ws.jacobian,
+            pattern: &model.jacobian_pattern,
+            bodies: &model.bodies,
+            row: model.row_offsets[k],
+            nu: &mut ws.nu,
+            gamma: &mut ws.gamma,
+        };
         c.kind.linearise(&ws.frames, t, target);
     }
     rows
@@ -64,38 +72,14 @@ pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, 
     ws.residual[..rows].iter().enumerate().fold((0.0, 0), |(m, i), (r, v)| if v.abs() > m { (v.abs(), r) } else { (m, i) })
 }
 
-/// The velocity coordinates of a Jacobian block starting at `address`.
-#[inline]
-fn block_of(v: &[f64], address: usize) -> &[f64; 3] {
-    v[address..address + 3].try_into().expect("a Jacobian block spans three velocity coordinates")
+/// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's blocks.
+pub(crate) fn jacobian_times(model: &Model, rows: usize, jacobian: &[f64], v: &[f64], out: &mut [f64]) {
+    model.jacobian_pattern.times(rows, jacobian, v, out);
 }
 
-/// `out[r] = (Phi_q v)_r` for the first `rows` rows, summing only over each row's bodies.
-pub(crate) fn jacobian_times(model: &Model, rows: usize, jacobian: &[RowJacobian], v: &[f64], out: &mut [f64]) {
-    for ((o, bodies), row) in out[..rows].iter_mut().zip(&model.row_bodies).zip(jacobian) {
-        let mut sum = 0.0;
-        for (block, &address) in row.iter().zip(bodies) {
-            if address != usize::MAX {
-                let x = block_of(v, address);
-                sum += block[0] * x[0] + block[1] * x[1] + block[2] * x[2];
-            }
-        }
-        *o = sum;
-    }
-}
-
-/// `out = Phi_q^T w` over the first `rows` rows, touching only each row's bodies.
-pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &[RowJacobian], w: &[f64], out: &mut [f64]) {
-    out.fill(0.0);
-    for ((&wr, bodies), row) in w[..rows].iter().zip(&model.row_bodies).zip(jacobian) {
-        for (block, &address) in row.iter().zip(bodies) {
-            if address != usize::MAX {
-                for (oi, ji) in out[address..address + 3].iter_mut().zip(block) {
-                    *oi += ji * wr;
-                }
-            }
-        }
-    }
+/// `out = Phi_q^T w` over the first `rows` rows, touching only each row's blocks.
+pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &[f64], w: &[f64], out: &mut [f64]) {
+    model.jacobian_pattern.transpose_times(rows, jacobian, w, out);
 }
 
 /// Factors `S = Phi_q M^-1 Phi_q^T` for the first `rows` rows at `(t, q)`
@@ -203,9 +187,7 @@ pub fn accelerations(
             factor_constraint_matrix_at(model, rows, t, q, ws)?;
         }
         // the right-hand side J M^-1 Q - gamma, solved in place into lambda
-        for ((a, w), f) in ws.accelerations.iter_mut().zip(&model.inverse_mass).zip(&ws.generalised_force) {
-            *a = w * f;
-        }
+        model.solve_mass(&ws.generalised_force, &mut ws.accelerations);
         let lambda = &mut ws.multipliers;
         jacobian_times(model, rows, &ws.jacobian, &ws.accelerations, lambda);
         for (l, g) in lambda[..rows].iter_mut().zip(&ws.gamma) {
@@ -213,12 +195,13 @@ pub fn accelerations(
         }
         solve_in_multipliers(model, rows, ws);
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
+        // q_ddot = M^-1 (Q - J^T lambda)
+        for (c, f) in ws.scratch.iter_mut().zip(&ws.generalised_force) {
+            *c = f - *c;
+        }
+        model.solve_mass(&ws.scratch, &mut ws.accelerations);
     } else {
-        ws.scratch.fill(0.0);
-    }
-    // q_ddot = M^-1 (Q - J^T lambda)
-    for (((a, w), f), c) in ws.accelerations.iter_mut().zip(&model.inverse_mass).zip(&ws.generalised_force).zip(&ws.scratch) {
-        *a = w * (f - c);
+        model.solve_mass(&ws.generalised_force, &mut ws.accelerations);
     }
     check_finite(model, t, ws)
 }

@@ -3,6 +3,7 @@
 use super::channels::Channel;
 use super::frame::{BodyIndex, Vec2};
 use super::joint_coordinates::JointTree;
+use super::constraint_jacobian::JacobianPattern;
 use super::layout::StateLayout;
 use crate::body::BodyKind;
 use crate::force::ForceElement;
@@ -67,9 +68,6 @@ pub struct Model {
     pub layout: StateLayout,
     /// Gravitational acceleration [m/s^2].
     pub gravity: Vec2,
-    /// Diagonal of `M^-1` over all velocity coordinates, from the bodies'
-    /// constant diagonal mass blocks [1/kg, 1/(kg m^2)].
-    pub inverse_mass: Vec<f64>,
     /// Constraints: the dynamic ones first, then the assembly locks of the clearance joints.
     pub constraints: Vec<Constraint>,
     /// How many of `constraints` act during the simulation.
@@ -78,9 +76,8 @@ pub struct Model {
     pub row_offsets: Vec<usize>,
     /// Owner (index into `elements`) of every equation row.
     pub row_owner: Vec<usize>,
-    /// For each equation row, the first velocity coordinate (see [`StateLayout`]) of its first
-    /// and of its second body, in the order of the row's Jacobian blocks; `usize::MAX` for the ground.
-    pub row_bodies: Vec<[usize; 2]>,
+    /// The blocks of every equation row of `Phi_q` (one per non-ground marker, as wide as its body kind says).
+    pub jacobian_pattern: JacobianPattern,
     /// The terms of `Phi_q M^-1 Phi_q^T` over all rows, rows in ascending order (see [`SchurTerm`]).
     pub schur_terms: Vec<SchurTerm>,
     /// Factorisation of `Phi_q M^-1 Phi_q^T` for the dynamic rows, chosen from its pattern.
@@ -109,8 +106,8 @@ pub struct Model {
 }
 
 /// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)`, `a >= b`, of
-/// `Phi_q M^-1 Phi_q^T`, by indices of Jacobian blocks and the body's first
-/// velocity coordinate (32-bit: the terms are read at every evaluation).
+/// `Phi_q M^-1 Phi_q^T`, by indices of the two rows' Jacobian blocks on that
+/// body (32-bit: the terms are read at every evaluation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SchurTerm {
     /// Row a.
@@ -119,18 +116,23 @@ pub struct SchurTerm {
     pub column: u32,
     /// Where entry (a, b) is stored for [`Model::schur_factor`] (dynamic rows only).
     pub entry: u32,
-    /// Row a's block for the body: `2 a + slot` among the Jacobian's blocks.
+    /// Row a's block on the body (index into [`JacobianPattern::blocks`]).
     pub first: u32,
-    /// Row b's block for the body: `2 b + slot`.
+    /// Row b's block on the body.
     pub second: u32,
-    /// The body's first velocity coordinate (in `M^-1`).
-    pub body: u32,
 }
 
 impl Model {
     /// Number of velocity coordinates (the size of `M`, of `Q` and of `q_ddot`).
     pub fn n_velocities(&self) -> usize {
         self.layout.nv
+    }
+
+    /// `out = M^-1 f` over all velocity coordinates, body by body with each body kind's mass block.
+    pub fn solve_mass(&self, f: &[f64], out: &mut [f64]) {
+        for (body, address) in self.bodies.iter().zip(&self.layout.bodies) {
+            body.kind.solve_mass(&f[address.v_range()], &mut out[address.v_range()]);
+        }
     }
 
     /// Number of constraint equations active during the simulation.

@@ -60,11 +60,12 @@ pub(crate) fn project_positions(
         solve_in_multipliers(model, rows, ws);
         jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
         // the step -M^-1 Phi_q^T lambda in velocity coordinates, taken by each body
-        for (s, w) in ws.scratch.iter_mut().zip(&model.inverse_mass) {
-            *s *= -w;
+        for s in ws.scratch.iter_mut() {
+            *s = -*s;
         }
+        model.solve_mass(&ws.scratch, &mut ws.correction);
         for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
-            body.kind.displace(&mut q[address.q_range()], &ws.scratch[address.v_range()]);
+            body.kind.displace(&mut q[address.q_range()], &ws.correction[address.v_range()]);
         }
         if ws.factor_kind == FactorKind::Spectral {
             // at a singular position Newton converges only linearly (by about half per step)
@@ -105,8 +106,9 @@ pub(crate) fn project_velocities(
     factor_constraint_matrix_at(model, rows, t, q, ws)?;
     solve_in_multipliers(model, rows, ws);
     jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
-    for ((v, w), s) in qdot.iter_mut().zip(&model.inverse_mass).zip(&ws.scratch) {
-        *v -= w * s;
+    model.solve_mass(&ws.scratch, &mut ws.correction);
+    for (v, correction) in qdot.iter_mut().zip(&ws.correction) {
+        *v -= correction;
     }
     Ok(())
 }

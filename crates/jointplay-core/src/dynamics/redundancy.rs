@@ -70,8 +70,7 @@ pub fn constraint_rank(model: &Model, state: &State, ws: &mut Workspace) -> Cons
 
 /// Entry (r, k) of the constraint Jacobian, from the row's body blocks.
 pub(crate) fn jacobian_entry(model: &Model, ws: &Workspace, r: usize, k: usize) -> f64 {
-    // (a block covers the three velocity coordinates from its body's first one)
-    ws.jacobian[r].iter().zip(model.row_bodies[r]).filter(|&(_, first)| first != usize::MAX && (first..first + 3).contains(&k)).map(|(block, first)| block[k - first]).sum()
+    model.jacobian_pattern.entry(&ws.jacobian, r, k)
 }
 
 #[cfg(test)]

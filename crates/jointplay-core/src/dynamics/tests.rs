@@ -504,10 +504,18 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     assert_eq!(super::constraint_solution::factor(&model, rows, &mut ws).unwrap(), super::constraint_solution::FactorKind::Pattern);
     let sparse = ws.schur[..rows * (rows + 1)].to_vec();
     // the same matrix formed densely from the Jacobian and factored by the dense kernel
+    // (M^-1 column by column through the body kinds' solves)
+    let mut inverse_mass = vec![0.0; n * n];
+    for k in 0..n {
+        let mut unit = vec![0.0; n];
+        unit[k] = 1.0;
+        model.solve_mass(&unit, &mut inverse_mass[k * n..(k + 1) * n]);
+    }
+    let entry = |r: usize, k: usize| redundancy::jacobian_entry(&model, &ws, r, k);
     let mut dense = vec![0.0; rows * rows];
     for a in 0..rows {
         for b in 0..=a {
-            dense[a * rows + b] = (0..n).map(|k| redundancy::jacobian_entry(&model, &ws, a, k) * model.inverse_mass[k] * redundancy::jacobian_entry(&model, &ws, b, k)).sum();
+            dense[a * rows + b] = (0..n).flat_map(|k| (0..n).map(move |l| (k, l))).map(|(k, l)| entry(a, k) * inverse_mass[l * n + k] * entry(b, l)).sum();
         }
     }
     crate::linalg::cholesky_factor(&mut dense, rows).unwrap();

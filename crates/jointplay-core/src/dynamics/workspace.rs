@@ -5,7 +5,7 @@ use super::frame::Frame;
 use super::joint_coordinates::JointWorkspace;
 use super::Model;
 use crate::force::ForceOutput;
-use crate::joint::{ContactEvaluation, FilmEvaluation, RowJacobian};
+use crate::joint::{ContactEvaluation, FilmEvaluation};
 use crate::lubrication::reynolds::ReynoldsSolver;
 
 /// Buffers sized once for a model.
@@ -17,8 +17,13 @@ pub struct Workspace {
     pub event_frames: Vec<Frame>,
     /// Generalised applied force `Q` over the velocity coordinates.
     pub generalised_force: Vec<f64>,
-    /// Constraint Jacobian `Phi_q` by rows and bodies (all rows including assembly locks).
-    pub jacobian: Vec<RowJacobian>,
+    /// Values of the constraint Jacobian `Phi_q`, block by block (all rows including
+    /// assembly locks; the pattern is `Model::jacobian_pattern`).
+    pub jacobian: Vec<f64>,
+    /// `M_c^-1 J_c^T` of every Jacobian block over its body's velocity coordinates.
+    pub jacobian_solved: Vec<f64>,
+    /// One body's velocity coordinates (the widest body).
+    pub mass_scratch: Vec<f64>,
     /// Constraint residuals `Phi`.
     pub residual: Vec<f64>,
     /// Velocity right-hand side `nu`.
@@ -50,6 +55,8 @@ pub struct Workspace {
     pub element_state_rates: Vec<f64>,
     /// Scratch vector of velocity length.
     pub scratch: Vec<f64>,
+    /// A projection's correction `M^-1 Phi_q^T lambda` in velocity coordinates.
+    pub correction: Vec<f64>,
     /// Copy of the state for an output sample, projected before it is recorded.
     pub sample: Vec<f64>,
     /// Last evaluation of each clearance joint.
@@ -78,7 +85,9 @@ impl Workspace {
             frames: vec![Frame::GROUND; model.bodies.len() + 1],
             event_frames: vec![Frame::GROUND; model.bodies.len() + 1],
             generalised_force: vec![0.0; n],
-            jacobian: vec![[[0.0; 3]; 2]; m],
+            jacobian: vec![0.0; model.jacobian_pattern.n_values()],
+            jacobian_solved: vec![0.0; model.jacobian_pattern.n_solved()],
+            mass_scratch: vec![0.0; model.layout.bodies.iter().map(|b| b.nv).max().unwrap_or(0)],
             residual: vec![0.0; m],
             nu: vec![0.0; m],
             gamma: vec![0.0; m],
@@ -93,6 +102,7 @@ impl Workspace {
             multipliers: vec![0.0; m],
             accelerations: vec![0.0; n],
             scratch: vec![0.0; n],
+            correction: vec![0.0; n],
             sample: vec![0.0; model.layout.len()],
             element_state_rates: vec![0.0; model.layout.nz],
             contacts: vec![ContactEvaluation::default(); model.clearance_joints.len()],

@@ -3,7 +3,7 @@
 //! keeps the second point on the line of a translational joint; with `u'`
 //! along the axis it is the displacement driver of that joint.
 
-use super::{ConstraintRows, Target};
+use super::{ConstraintRows, MarkerLoad, Target};
 use crate::dynamics::frame::{perp, Marker, Frame, Vec2};
 
 /// Projection of the point-to-point vector on a body-fixed direction is prescribed.
@@ -27,21 +27,33 @@ impl AxialProjection {
         out[0] = fi.rotate(self.direction).dot(&d) - self.target.sample(t).value;
     }
 
-    /// Jacobian: `r_i: -u`, `phi_i: perp(u).d - u.perp(A_i s_i)`, `r_j: u`,
-    /// `phi_j: u.perp(A_j s_j)`; `nu = f_dot`;
-    /// `gamma = w_i^2 u.d - 2 w_i perp(u).d_dot + u.(w_j^2 A_j s_j - w_i^2 A_i s_i) + f_ddot`.
-    pub fn linearise(&self, frames: &[Frame], t: f64, rows: ConstraintRows<'_>) {
+    /// Jacobian: `u . (J_Pj - J_Pi) + (perp(u) . d) J_phi_i` (the markers'
+    /// point Jacobians and the first body's angle Jacobian, `u` turning with it);
+    /// `nu = f_dot`; `gamma = w_i^2 u.d - 2 w_i perp(u).d_dot - u.(a0_Pj - a0_Pi) + f_ddot`
+    /// with `a0` the markers' velocity-dependent accelerations.
+    pub fn linearise(&self, frames: &[Frame], t: f64, mut rows: ConstraintRows<'_>) {
         let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
-        let (si, sj) = (fi.rotate(self.first.local), fj.rotate(self.second.local));
         let u = fi.rotate(self.direction);
-        let d = fj.position + sj - fi.position - si;
+        let d = fj.point(self.second.local) - fi.point(self.first.local);
         let d_dot = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
-        rows.jacobian[rows.row] = [[-u.x, -u.y, perp(u).dot(&d) - u.dot(&perp(si))], [u.x, u.y, u.dot(&perp(sj))]];
-        let (wi, wj) = (fi.angular_velocity, fj.angular_velocity);
+        rows.add_point_jacobian(frames, 0, 0, &self.first, -u);
+        rows.add_point_jacobian(frames, 0, 1, &self.second, u);
+        rows.add_angle_jacobian(0, 0, self.first.body, perp(u).dot(&d));
+        let wi = fi.angular_velocity;
+        let bias = rows.bias_acceleration(frames, &self.second) - rows.bias_acceleration(frames, &self.first);
         let target = self.target.sample(t);
         rows.nu[rows.row] = target.rate;
-        rows.gamma[rows.row] = wi * wi * u.dot(&d) - 2.0 * wi * perp(u).dot(&d_dot)
-            + u.dot(&(sj * (wj * wj) - si * (wi * wi)))
-            + target.acceleration;
+        rows.gamma[rows.row] = wi * wi * u.dot(&d) - 2.0 * wi * perp(u).dot(&d_dot) - u.dot(&bias) + target.acceleration;
+    }
+
+    /// `-Phi_q^T lambda`: the force `+lambda u` at the first point with the
+    /// moment `-lambda perp(u) . d` of the turning direction on the first body,
+    /// the force `-lambda u` at the second point.
+    pub fn loads(&self, frames: &[Frame], lambda: &[f64]) -> [MarkerLoad; 2] {
+        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
+        let u = fi.rotate(self.direction);
+        let (pi, pj) = (fi.point(self.first.local), fj.point(self.second.local));
+        let l = lambda[0];
+        [MarkerLoad { force: u * l, point: pi, moment: -l * perp(u).dot(&(pj - pi)) }, MarkerLoad { force: -u * l, point: pj, moment: 0.0 }]
     }
 }

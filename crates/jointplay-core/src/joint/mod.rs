@@ -16,7 +16,8 @@ pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication};
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
 
-use crate::dynamics::frame::{BodyIndex, Frame};
+use crate::dynamics::frame::{BodyIndex, Frame, Marker, Vec2};
+use crate::dynamics::{Body, JacobianPattern};
 use crate::motion::{MotionSample, TimeFunction};
 
 /// What a constraint prescribes: a constant or a function of time.
@@ -50,22 +51,74 @@ pub enum ConstraintKind {
     AxialProjection(AxialProjection),
 }
 
-/// One equation row of the constraint Jacobian `Phi_q`: the derivatives by
-/// `(x, y, phi)` of the row's first and of its second body (see
-/// [`ConstraintKind::bodies`]); no row involves more than two bodies, and the
-/// block of a ground body is written but never read.
-pub type RowJacobian = [[f64; 3]; 2];
-
-/// Where a constraint writes its equations for one evaluation.
+/// Where a constraint writes its equations for one evaluation, and the
+/// marker kinematics it builds them from: each row's Jacobian is one block
+/// per non-ground marker ([`JacobianPattern`]), filled through the marker's
+/// body kind, so a primitive never knows how many coordinates a body has.
 pub struct ConstraintRows<'a> {
-    /// Constraint Jacobian `Phi_q` by rows (rows of this constraint start at `row`).
-    pub jacobian: &'a mut [RowJacobian],
+    /// Values of the constraint Jacobian `Phi_q` (every row), zero before the constraint writes.
+    pub jacobian: &'a mut [f64],
+    /// Where each row's blocks sit.
+    pub pattern: &'a JacobianPattern,
+    /// The bodies (body `k` has [`BodyIndex`]`(k + 1)`).
+    pub bodies: &'a [Body],
     /// First row of this constraint.
     pub row: usize,
     /// Right-hand side of the velocity equation `Phi_q qdot = nu` (`nu = -Phi_t`).
     pub nu: &'a mut [f64],
     /// Right-hand side of the acceleration equation `Phi_q qddot = gamma`.
     pub gamma: &'a mut [f64],
+}
+
+impl ConstraintRows<'_> {
+    /// Adds `along . d(v_P)/d(v)` of `marker`'s point to row `row + r` in the
+    /// block of the constraint's marker `slot` (0 first, 1 second; nothing on the ground).
+    #[inline]
+    pub fn add_point_jacobian(&mut self, frames: &[Frame], r: usize, slot: usize, marker: &Marker, along: Vec2) {
+        if let Some(block) = self.pattern.slot(self.row + r, slot) {
+            let kind = &self.bodies[marker.body.0 - 1].kind;
+            kind.add_marker_jacobian(&frames[marker.body.0], marker.local, along, &mut self.jacobian[block.values()]);
+        }
+    }
+
+    /// Adds `scale d(omega)/d(v)` of `body`'s reference marker to row `row + r`, block `slot`.
+    #[inline]
+    pub fn add_angle_jacobian(&mut self, r: usize, slot: usize, body: BodyIndex, scale: f64) {
+        if let Some(block) = self.pattern.slot(self.row + r, slot) {
+            self.bodies[body.0 - 1].kind.add_marker_angle_jacobian(Vec2::zeros(), scale, &mut self.jacobian[block.values()]);
+        }
+    }
+
+    /// The velocity-dependent part of `marker`'s point acceleration (zero on the ground) [m/s^2].
+    #[inline]
+    pub fn bias_acceleration(&self, frames: &[Frame], marker: &Marker) -> Vec2 {
+        if marker.body.is_ground() {
+            return Vec2::zeros();
+        }
+        self.bodies[marker.body.0 - 1].kind.marker_bias_acceleration(&frames[marker.body.0], marker.local)
+    }
+
+    /// The velocity-dependent part of `body`'s angular acceleration (zero on the ground) [rad/s^2].
+    #[inline]
+    pub fn bias_angular_acceleration(&self, frames: &[Frame], body: BodyIndex) -> f64 {
+        if body.is_ground() {
+            return 0.0;
+        }
+        self.bodies[body.0 - 1].kind.marker_bias_angular_acceleration(&frames[body.0], Vec2::zeros())
+    }
+}
+
+/// What a constraint's equations exert on one of its markers' bodies for
+/// given multipliers: the generalised force `-Phi_q^T lambda` of its rows on that
+/// body, as a force at a point and a pure moment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MarkerLoad {
+    /// Force [N].
+    pub force: Vec2,
+    /// Global point where it acts [m].
+    pub point: Vec2,
+    /// Pure moment [N m] (counter-clockwise).
+    pub moment: f64,
 }
 
 impl ConstraintKind {
@@ -77,13 +130,19 @@ impl ConstraintKind {
         }
     }
 
-    /// The first and the second body of every row, in the order of the blocks of [`RowJacobian`].
-    pub fn bodies(&self) -> [BodyIndex; 2] {
+    /// The first and the second marker (slots 0 and 1 of every row's blocks);
+    /// a relative angle has its bodies' reference markers.
+    pub fn markers(&self) -> [Marker; 2] {
         match self {
-            Self::PointCoincidence(c) => [c.first.body, c.second.body],
-            Self::RelativeAngle(c) => [c.first, c.second],
-            Self::AxialProjection(c) => [c.first.body, c.second.body],
+            Self::PointCoincidence(c) => [c.first, c.second],
+            Self::RelativeAngle(c) => [c.first, c.second].map(|body| Marker { body, local: Vec2::zeros() }),
+            Self::AxialProjection(c) => [c.first, c.second],
         }
+    }
+
+    /// The first and the second body.
+    pub fn bodies(&self) -> [BodyIndex; 2] {
+        self.markers().map(|m| m.body)
     }
 
     /// Residuals `Phi(q, t)` into `out` (length `n_equations`) [m or rad].
@@ -99,8 +158,19 @@ impl ConstraintKind {
     pub fn linearise(&self, frames: &[Frame], t: f64, rows: ConstraintRows<'_>) {
         match self {
             Self::PointCoincidence(c) => c.linearise(frames, rows),
-            Self::RelativeAngle(c) => c.linearise(t, rows),
+            Self::RelativeAngle(c) => c.linearise(frames, t, rows),
             Self::AxialProjection(c) => c.linearise(frames, t, rows),
+        }
+    }
+
+    /// What the equations exert on the first and on the second marker's body
+    /// for the multipliers `lambda` of its rows: the generalised force
+    /// `-Phi_q^T lambda` as a force at a point plus a pure moment.
+    pub fn loads(&self, frames: &[Frame], lambda: &[f64]) -> [MarkerLoad; 2] {
+        match self {
+            Self::PointCoincidence(c) => c.loads(frames, lambda),
+            Self::RelativeAngle(c) => c.loads(frames, lambda),
+            Self::AxialProjection(c) => c.loads(frames, lambda),
         }
     }
 }

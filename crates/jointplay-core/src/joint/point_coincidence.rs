@@ -1,7 +1,7 @@
 //! Point coincidence `P_i + offset - P_j = 0`: the revolute joint, half of
 //! the fixed joint, and the temporary lock of a clearance joint at assembly.
 
-use super::ConstraintRows;
+use super::{ConstraintRows, MarkerLoad};
 use crate::dynamics::frame::{Marker, Frame, Vec2};
 
 /// Two body points held at a constant global offset (zero for a revolute joint).
@@ -25,19 +25,26 @@ impl PointCoincidence {
         out[1] = r.y;
     }
 
-    /// Jacobian `[I, perp(A_i s_i); -I, -perp(A_j s_j)]`, `nu = 0`,
-    /// `gamma = A_i s_i w_i^2 - A_j s_j w_j^2`.
-    pub fn linearise(&self, frames: &[Frame], rows: ConstraintRows<'_>) {
-        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
-        let si = fi.rotate(self.first.local);
-        let sj = fj.rotate(self.second.local);
+    /// Jacobian: the marker Jacobians, `+J_Pi - J_Pj`, row x along `e_x` and
+    /// row y along `e_y`; `nu = 0`; `gamma = -(a0_Pi - a0_Pj)` with `a0` the
+    /// markers' velocity-dependent accelerations (`-omega^2 A s` on a rigid body).
+    pub fn linearise(&self, frames: &[Frame], mut rows: ConstraintRows<'_>) {
+        for (r, axis) in [Vec2::x(), Vec2::y()].into_iter().enumerate() {
+            rows.add_point_jacobian(frames, r, 0, &self.first, axis);
+            rows.add_point_jacobian(frames, r, 1, &self.second, -axis);
+        }
+        let g = rows.bias_acceleration(frames, &self.second) - rows.bias_acceleration(frames, &self.first);
         let r = rows.row;
-        rows.jacobian[r] = [[1.0, 0.0, -si.y], [-1.0, 0.0, sj.y]];
-        rows.jacobian[r + 1] = [[0.0, 1.0, si.x], [0.0, -1.0, -sj.x]];
-        let g = si * fi.angular_velocity.powi(2) - sj * fj.angular_velocity.powi(2);
         rows.nu[r] = 0.0;
         rows.nu[r + 1] = 0.0;
         rows.gamma[r] = g.x;
         rows.gamma[r + 1] = g.y;
+    }
+
+    /// `-Phi_q^T lambda`: the force `-lambda` at the first point, `+lambda` at the second.
+    pub fn loads(&self, frames: &[Frame], lambda: &[f64]) -> [MarkerLoad; 2] {
+        let f = Vec2::new(lambda[0], lambda[1]);
+        let at = |m: &Marker, force: Vec2| MarkerLoad { force, point: frames[m.body.0].point(m.local), moment: 0.0 };
+        [at(&self.first, -f), at(&self.second, f)]
     }
 }

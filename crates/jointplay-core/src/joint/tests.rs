@@ -1,9 +1,12 @@
 //! Finite-difference checks of every constraint primitive: the Jacobian
 //! against `dPhi/dq`, `nu` against `-dPhi/dt`, and `gamma` against the
-//! second time derivative of `Phi` along a smooth trajectory.
+//! second time derivative of `Phi` along a smooth trajectory; and the loads a
+//! primitive reports against `-Phi_q^T lambda` by virtual work.
 
 use super::*;
-use crate::dynamics::frame::{BodyIndex, Marker, Frame, Vec2};
+use crate::body::{BodyKind, PlanarRigidBody};
+use crate::dynamics::frame::{cross, BodyIndex, Marker, Frame, Vec2};
+use crate::dynamics::{Body, JacobianPattern, MarkerColumns};
 use crate::motion::{Sine, TimeFunction};
 
 const N: usize = 6; // two bodies
@@ -47,21 +50,33 @@ fn residual(c: &ConstraintKind, q: &[f64], t: f64) -> Vec<f64> {
     out
 }
 
-/// The dense m x N Jacobian from the rows' body blocks (the blocks of the ground dropped).
-fn dense(c: &ConstraintKind, blocks: &[RowJacobian]) -> DenseJacobian {
-    let mut jac = DenseJacobian(vec![[0.0; N]; blocks.len()]);
-    for (r, row) in blocks.iter().enumerate() {
-        for (slot, body) in c.bodies().iter().enumerate() {
-            // (the test bodies are planar and laid out in order, three coordinates each)
-            if !body.is_ground() {
-                let col = 3 * (body.0 - 1);
-                for i in 0..3 {
-                    jac.0[r][col + i] += row[slot][i];
-                }
-            }
-        }
-    }
-    jac
+/// Two planar rigid bodies, laid out in order (three velocity coordinates each).
+fn bodies() -> Vec<Body> {
+    (0..2).map(|k| Body { name: format!("b{k}"), kind: BodyKind::PlanarRigid(PlanarRigidBody::new(1.0 + k as f64, 0.1)) }).collect()
+}
+
+/// The pattern of the primitive's rows: a block per non-ground marker, over its body's three coordinates.
+fn pattern_of(c: &ConstraintKind) -> JacobianPattern {
+    let mut pattern = JacobianPattern::default();
+    let columns = |m: Marker| (!m.body.is_ground()).then(|| {
+        let first = 3 * (m.body.0 - 1);
+        MarkerColumns { body: m.body.0 - 1, body_columns: first..first + 3, columns: first..first + 3 }
+    });
+    pattern.push_rows(c.n_equations(), c.markers().map(columns));
+    pattern
+}
+
+/// The primitive's Jacobian, `nu` and `gamma` at `(q, qd, t)`, the Jacobian dense (m x N).
+fn linearised(c: &ConstraintKind, q: &[f64], qd: &[f64], t: f64) -> (DenseJacobian, Vec<f64>, Vec<f64>) {
+    let m = c.n_equations();
+    let pattern = pattern_of(c);
+    let bodies = bodies();
+    let mut values = vec![0.0; pattern.n_values()];
+    let (mut nu, mut gamma) = (vec![0.0; m], vec![0.0; m]);
+    let rows = ConstraintRows { jacobian: &mut values, pattern: &pattern, bodies: &bodies, row: 0, nu: &mut nu, gamma: &mut gamma };
+    c.linearise(&frames_at(q, qd), t, rows);
+    let jac = DenseJacobian((0..m).map(|r| std::array::from_fn(|k| pattern.entry(&values, r, k))).collect());
+    (jac, nu, gamma)
 }
 
 struct DenseJacobian(Vec<[f64; N]>);
@@ -78,10 +93,7 @@ fn jacobian_nu_and_gamma_match_finite_differences() {
     for (k, c) in primitives().iter().enumerate() {
         let m = c.n_equations();
         let (q, qd) = trajectory(t);
-        let mut blocks = vec![[[f64::NAN; 3]; 2]; m];
-        let (mut nu, mut gamma) = (vec![0.0; m], vec![0.0; m]);
-        c.linearise(&frames_at(&q, &qd), t, ConstraintRows { jacobian: &mut blocks, row: 0, nu: &mut nu, gamma: &mut gamma });
-        let jac = dense(c, &blocks);
+        let (jac, nu, gamma) = linearised(c, &q, &qd, t);
         // jacobian column by column
         let h = 1e-6;
         for col in 0..N {
@@ -105,6 +117,31 @@ fn jacobian_nu_and_gamma_match_finite_differences() {
             let d2 = (pp[r] - 2.0 * p0[r] + pm[r]) / (ht * ht);
             assert!((jqd - nu[r] - d1).abs() < 1e-7, "primitive {k} row {r}: nu {}", jqd - nu[r] - d1);
             assert!((jqdd - gamma[r] - d2).abs() < 2e-4, "primitive {k} row {r}: gamma {} vs {}", jqdd - gamma[r], d2);
+        }
+    }
+}
+
+#[test]
+fn the_loads_of_a_primitive_are_minus_its_jacobian_transpose_times_the_multipliers() {
+    let t = 0.37;
+    let (q, qd) = trajectory(t);
+    let frames = frames_at(&q, &qd);
+    for (k, c) in primitives().iter().enumerate() {
+        let (jac, _, _) = linearised(c, &q, &qd, t);
+        let lambda: Vec<f64> = (0..c.n_equations()).map(|r| 1.7 - 2.3 * r as f64).collect();
+        let loads = c.loads(&frames, &lambda);
+        for (slot, marker) in c.markers().iter().enumerate() {
+            if marker.body.is_ground() {
+                continue;
+            }
+            // the generalised force of the load on the body: force, and its moment about the centre of mass
+            let (load, frame) = (&loads[slot], &frames[marker.body.0]);
+            let generalised = [load.force.x, load.force.y, load.moment + cross(load.point - frame.position, load.force)];
+            for (i, g) in generalised.iter().enumerate() {
+                let col = 3 * (marker.body.0 - 1) + i;
+                let expected: f64 = -(0..c.n_equations()).map(|r| jac.get(r, col) * lambda[r]).sum::<f64>();
+                assert!((g - expected).abs() < 1e-12, "primitive {k} slot {slot} coordinate {i}: {g} vs {expected}");
+            }
         }
     }
 }

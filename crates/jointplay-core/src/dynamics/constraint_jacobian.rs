@@ -1,0 +1,175 @@
+//! The constraint Jacobian `Phi_q` as sparse rows of body blocks.
+//!
+//! A row of a constraint between two markers depends only on the velocity
+//! coordinates of the markers' bodies, and of those only on the coordinates a
+//! marker moves with (all three of a planar rigid body; the nodes of one element
+//! of a beam). Each row therefore stores one block per non-ground marker: a run of
+//! consecutive velocity coordinates of one body, as wide as the body kind says
+//! ([`crate::body::BodyKind::marker_coordinates`]). The pattern is fixed at
+//! compile time; the values are written at every linearisation.
+//!
+//! `Phi_q M^-1 Phi_q^T` is formed from the blocks and the blocks solved with
+//! their body's mass block, `M_b^-1 J_b^T` over all of the body's velocity
+//! coordinates, so a body kind with a full or configuration-dependent mass
+//! block needs nothing here but its own solve.
+
+use std::ops::Range;
+
+/// One block of a constraint row: the derivatives by `width` consecutive
+/// velocity coordinates of one body.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct JacobianBlock {
+    /// The body (index into `Model::bodies`).
+    pub body: usize,
+    /// First velocity coordinate of the block (address in `v`).
+    pub start: usize,
+    /// Number of velocity coordinates it spans.
+    pub width: usize,
+    /// Its first velocity coordinate counted from the body's first.
+    pub offset_in_body: usize,
+    /// Where its values start among the Jacobian's values.
+    pub value: usize,
+    /// Where `M_b^-1` times the block (the body's `nv` values) starts among the solved values.
+    pub solved: usize,
+}
+
+impl JacobianBlock {
+    /// The velocity coordinates of the block.
+    #[inline]
+    pub fn columns(&self) -> Range<usize> {
+        self.start..self.start + self.width
+    }
+
+    /// Its values within the Jacobian's values.
+    #[inline]
+    pub fn values(&self) -> Range<usize> {
+        self.value..self.value + self.width
+    }
+}
+
+/// Where a marker's block sits: its body, the body's velocity coordinates, and
+/// the ones the marker moves with.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MarkerColumns {
+    /// The body (index into `Model::bodies`).
+    pub body: usize,
+    /// All velocity coordinates of the body.
+    pub body_columns: Range<usize>,
+    /// The velocity coordinates of the marker's block (within `body_columns`).
+    pub columns: Range<usize>,
+}
+
+/// The blocks of every row, fixed at compile time.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct JacobianPattern {
+    blocks: Vec<JacobianBlock>,
+    /// The blocks of row `r` are `blocks[row_blocks[r]..row_blocks[r + 1]]`.
+    row_blocks: Vec<usize>,
+    /// The block of each row for the constraint's first and second marker (`None` on the ground).
+    row_slots: Vec<[Option<u32>; 2]>,
+    n_values: usize,
+    n_solved: usize,
+}
+
+impl JacobianPattern {
+    /// Appends `rows` rows, each with a block for the first and the second
+    /// marker (`None` for a marker on the ground).
+    pub fn push_rows(&mut self, rows: usize, markers: [Option<MarkerColumns>; 2]) {
+        if self.row_blocks.is_empty() {
+            self.row_blocks.push(0);
+        }
+        for _ in 0..rows {
+            let mut slots = [None, None];
+            for (slot, marker) in markers.iter().enumerate() {
+                let Some(m) = marker else { continue };
+                let width = m.columns.len();
+                let index = u32::try_from(self.blocks.len()).expect("a model has fewer than 2^32 Jacobian blocks");
+                slots[slot] = Some(index);
+                self.blocks.push(JacobianBlock {
+                    body: m.body,
+                    start: m.columns.start,
+                    width,
+                    offset_in_body: m.columns.start - m.body_columns.start,
+                    value: self.n_values,
+                    solved: self.n_solved,
+                });
+                self.n_values += width;
+                self.n_solved += m.body_columns.len();
+            }
+            self.row_slots.push(slots);
+            self.row_blocks.push(self.blocks.len());
+        }
+    }
+
+    /// Number of rows.
+    pub fn n_rows(&self) -> usize {
+        self.row_slots.len()
+    }
+
+    /// Number of Jacobian values (the length of the values array).
+    pub fn n_values(&self) -> usize {
+        self.n_values
+    }
+
+    /// Number of solved values (`M_b^-1 J_b^T` of every block).
+    pub fn n_solved(&self) -> usize {
+        self.n_solved
+    }
+
+    /// Every block, rows in order.
+    pub fn blocks(&self) -> &[JacobianBlock] {
+        &self.blocks
+    }
+
+    /// The blocks of the first `rows` rows.
+    pub fn blocks_of_rows(&self, rows: usize) -> &[JacobianBlock] {
+        &self.blocks[..self.row_blocks.get(rows).copied().unwrap_or(0)]
+    }
+
+    /// The blocks of row `r`.
+    #[inline]
+    pub fn row(&self, r: usize) -> &[JacobianBlock] {
+        &self.blocks[self.row_blocks[r]..self.row_blocks[r + 1]]
+    }
+
+    /// Index (into [`Self::blocks`]) of the blocks of row `r`.
+    pub fn row_block_indices(&self, r: usize) -> Range<usize> {
+        self.row_blocks[r]..self.row_blocks[r + 1]
+    }
+
+    /// The block of row `r` for the constraint's marker `slot` (0 first, 1 second), if not on the ground.
+    #[inline]
+    pub fn slot(&self, r: usize, slot: usize) -> Option<&JacobianBlock> {
+        self.row_slots[r][slot].map(|b| &self.blocks[b as usize])
+    }
+
+    /// `out[r] = (Phi_q v)_r` for the first `rows` rows.
+    pub fn times(&self, rows: usize, values: &[f64], v: &[f64], out: &mut [f64]) {
+        for (r, o) in out[..rows].iter_mut().enumerate() {
+            *o = self.row(r).iter().map(|b| dot(&values[b.values()], &v[b.columns()])).sum();
+        }
+    }
+
+    /// `out = Phi_q^T w` over the first `rows` rows.
+    pub fn transpose_times(&self, rows: usize, values: &[f64], w: &[f64], out: &mut [f64]) {
+        out.fill(0.0);
+        for (r, &wr) in w[..rows].iter().enumerate() {
+            for b in self.row(r) {
+                for (o, j) in out[b.columns()].iter_mut().zip(&values[b.values()]) {
+                    *o += j * wr;
+                }
+            }
+        }
+    }
+
+    /// Entry `(r, k)` of `Phi_q` (velocity coordinate `k`).
+    pub fn entry(&self, values: &[f64], r: usize, k: usize) -> f64 {
+        self.row(r).iter().filter(|b| b.columns().contains(&k)).map(|b| values[b.value + k - b.start]).sum()
+    }
+}
+
+/// `a . b`.
+#[inline]
+pub fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
