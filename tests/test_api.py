@@ -240,3 +240,20 @@ def test_a_long_simulation_releases_the_gil():
         counted += 1
     worker.join()
     assert counted > 10_000
+
+
+def test_results_keep_the_description_they_ran_and_warnings_come_at_every_run():
+    # the description snapshot and its plausibility check are made once per version of the model
+    m = pendulum()
+    m.add_body("far", mass=1.0, inertia=0.02, position=(50.0, 0))  # a body far from the rest: a warning
+    with pytest.warns(jp.JointplayWarning, match="far"):
+        first = m.simulate(0.01)
+    with pytest.warns(jp.JointplayWarning, match="far"):
+        again = m.simulate(0.01)
+    m.add_ground_point("P", (1.0, 0))
+    with pytest.warns(jp.JointplayWarning, match="far"):
+        changed = m.simulate(0.01)
+    assert [p["name"] for p in first.spec["ground_points"]] == ["O"]
+    assert again.spec is first.spec  # shared, read-only
+    assert [p["name"] for p in changed.spec["ground_points"]] == ["O", "P"]
+    assert m.to_spec() == changed.spec and m.to_spec() is not changed.spec

@@ -102,11 +102,24 @@ class Model:
             "ground_points": [], "bodies": [], "joints": [], "drivers": [], "forces": [],
         }
         self._core: Any = None
+        self._run_inputs: tuple[dict, list] | None = None
 
     # construction ----------------------------------------------------------
 
     def _changed(self) -> None:
         self._core = None
+        self._run_inputs = None
+
+    def _spec_and_findings(self) -> tuple[dict, list]:
+        """A snapshot of the description for results, and its plausibility problems: made once per
+        version of the model (every change calls :meth:`_changed`) and shared, read-only, by the results
+        of its runs, instead of a deep copy and a check at every run."""
+        if self._run_inputs is None:
+            from .modelfile.plausibility import plausibility
+
+            snapshot = self.to_spec()
+            self._run_inputs = (snapshot, plausibility(snapshot))
+        return self._run_inputs
 
     @property
     def name(self) -> str:
@@ -314,9 +327,10 @@ class Model:
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
         """
-        from .modelfile.plausibility import warn
+        from .modelfile.plausibility import emit
 
-        warn(self._spec)
+        spec_snapshot, findings = self._spec_and_findings()
+        emit(findings)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation)
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
@@ -330,7 +344,7 @@ class Model:
         started = _time.perf_counter()
 
         def make_results(raw: dict) -> Results:
-            results = Results.from_core(raw, spec=self.to_spec(), options=options,
+            results = Results.from_core(raw, spec=spec_snapshot, options=options,
                                         wall_time=_time.perf_counter() - started)
             results.description = getattr(self, "description", "")
             results.model_file = getattr(self, "source_file", "")

@@ -76,11 +76,11 @@ def plausibility(spec: dict) -> list[Problem]:
     return problems
 
 
-def warn(spec: dict) -> None:
-    """Each plausibility problem of ``spec`` as a :class:`~jointplay.errors.JointplayWarning` (for the
-    caller of ``Model.simulate``)."""
-    for problem in plausibility(spec):
-        warnings.warn(str(problem), JointplayWarning, stacklevel=3)
+def emit(problems: list[Problem], stacklevel: int = 3) -> None:
+    """Each problem as a :class:`~jointplay.errors.JointplayWarning`, attributed ``stacklevel`` frames up
+    (3: the caller of ``Model.simulate``)."""
+    for problem in problems:
+        warnings.warn(str(problem), JointplayWarning, stacklevel=stacklevel)
 
 
 def mechanism_size(spec: dict) -> float:
