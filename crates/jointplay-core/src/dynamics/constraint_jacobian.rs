@@ -173,3 +173,56 @@ impl JacobianPattern {
 pub fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Rows over blocks of unequal width, one inside a wider body: the products and
+    /// entries against the same Jacobian written densely.
+    #[test]
+    fn products_and_entries_of_blocks_of_any_width_match_the_dense_jacobian() {
+        // body 0: coordinates 0..3; body 1: 3..10, its markers moving with 4..7 (width 3) or 3..10 (all 7)
+        let rigid = MarkerColumns { body: 0, body_columns: 0..3, columns: 0..3 };
+        let inner = MarkerColumns { body: 1, body_columns: 3..10, columns: 4..7 };
+        let whole = MarkerColumns { body: 1, body_columns: 3..10, columns: 3..10 };
+        let mut pattern = JacobianPattern::default();
+        pattern.push_rows(2, [Some(rigid.clone()), Some(inner)]);
+        pattern.push_rows(1, [None, Some(whole)]);
+        pattern.push_rows(1, [Some(rigid), None]);
+        assert_eq!(pattern.n_rows(), 4);
+        assert_eq!(pattern.n_values(), 2 * (3 + 3) + 7 + 3);
+        assert_eq!(pattern.n_solved(), 2 * (3 + 7) + 7 + 3);
+        assert_eq!(pattern.slot(2, 0), None);
+        assert_eq!(pattern.slot(2, 1).map(|b| (b.start, b.width, b.offset_in_body)), Some((3, 7, 0)));
+        assert_eq!(pattern.slot(0, 1).map(|b| (b.start, b.width, b.offset_in_body)), Some((4, 3, 1)));
+        let values: Vec<f64> = (0..pattern.n_values()).map(|k| 0.5 + (k as f64 * 0.37).sin()).collect();
+        // the dense 4 x 10 Jacobian, written from the blocks' definitions
+        let mut dense = [[0.0; 10]; 4];
+        for r in 0..4 {
+            for block in pattern.row(r) {
+                for (i, c) in block.columns().enumerate() {
+                    dense[r][c] += values[block.value + i];
+                }
+            }
+        }
+        assert_eq!(dense[0][3], 0.0, "the inner marker's block leaves the body's first coordinate out");
+        let v: Vec<f64> = (0..10).map(|k| 1.0 - 0.3 * k as f64).collect();
+        let w = [0.7, -1.1, 2.0, 0.4];
+        let mut jv = [0.0; 4];
+        pattern.times(4, &values, &v, &mut jv);
+        let mut jtw = [0.0; 10];
+        pattern.transpose_times(4, &values, &w, &mut jtw);
+        for r in 0..4 {
+            let expected: f64 = (0..10).map(|c| dense[r][c] * v[c]).sum();
+            assert!((jv[r] - expected).abs() < 1e-14, "row {r}");
+            for c in 0..10 {
+                assert_eq!(pattern.entry(&values, r, c), dense[r][c]);
+            }
+        }
+        for c in 0..10 {
+            let expected: f64 = (0..4).map(|r| dense[r][c] * w[r]).sum();
+            assert!((jtw[c] - expected).abs() < 1e-14, "column {c}");
+        }
+    }
+}
