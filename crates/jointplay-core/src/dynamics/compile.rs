@@ -7,7 +7,7 @@ use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES, FILM_Q
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use super::frame::{perp, BodyIndex, Marker, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm};
-use crate::body::{BodyKind, PlanarRigidBody};
+use crate::body::{BodyKind, MassBlock, PlanarRigidBody};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
@@ -67,6 +67,7 @@ impl<'s> Compiler<'s> {
             row_offsets: vec![0],
             row_owner: Vec::new(),
             jacobian_pattern: JacobianPattern::default(),
+            diagonal_inverse_mass: None,
             schur_terms: Vec::new(),
             schur_factor: PatternLdl::analyse(0, &[]),
             elements: Vec::new(),
@@ -485,19 +486,45 @@ impl<'s> Compiler<'s> {
         let lower: Vec<(usize, usize)> = terms.iter().filter(|t| t.0 < m).map(|t| (t.0, t.1)).collect();
         model.schur_factor = PatternLdl::analyse(m, &lower);
         let narrow = |i: usize| u32::try_from(i).expect("a model has fewer than 2^32 constraint rows");
+        let blocks = pattern.blocks();
         model.schur_terms = terms
             .into_iter()
             .map(|(a, b, first, second)| {
                 let entry = if a < m { model.schur_factor.storage_index(a, b) } else { 0 };
-                SchurTerm { row: narrow(a), column: narrow(b), entry: narrow(entry), first: narrow(first), second: narrow(second) }
+                let (ba, bb) = (&blocks[first], &blocks[second]);
+                let common = ba.start.max(bb.start)..(ba.start + ba.width).min(bb.start + bb.width);
+                let start = common.start.min(common.end);
+                SchurTerm {
+                    row: narrow(a),
+                    column: narrow(b),
+                    entry: narrow(entry),
+                    first: narrow(first),
+                    second: narrow(second),
+                    first_value: narrow(ba.value + start - ba.start),
+                    second_value: narrow(bb.value + start - bb.start),
+                    column_start: narrow(start),
+                    common: narrow(common.len()),
+                }
             })
             .collect();
+    }
+
+    /// The diagonal of `M^-1` when every body's mass block is constant and diagonal.
+    fn diagonal_inverse_mass(&mut self) {
+        let mut diagonal = Vec::with_capacity(self.model.layout.nv);
+        for body in &self.model.bodies {
+            match body.kind.mass_block() {
+                MassBlock::ConstantDiagonal(w) => diagonal.extend_from_slice(w),
+            }
+        }
+        self.model.diagonal_inverse_mass = Some(diagonal);
     }
 
     fn finish(mut self) -> Result<Model, ModelErrors> {
         // (more equations than coordinates is no error by itself: dependent equations are
         // handled, and a mechanism that cannot move as driven is reported at assembly)
         self.analyse_constraint_matrix();
+        self.diagonal_inverse_mass();
         self.model.joint_tree = JointTree::of(&self.model);
         for (q, (quantity, description)) in [("kinetic_energy", "kinetic energy"), ("potential_energy", "potential energy (gravity, springs, contact)"), ("energy", "total mechanical energy")].iter().enumerate() {
             self.channel("system", quantity, "J", description.to_string(), Source::Energy(q as u8));

@@ -145,16 +145,16 @@ impl JacobianPattern {
 
     /// `out[r] = (Phi_q v)_r` for the first `rows` rows.
     pub fn times(&self, rows: usize, values: &[f64], v: &[f64], out: &mut [f64]) {
-        for (r, o) in out[..rows].iter_mut().enumerate() {
-            *o = self.row(r).iter().map(|b| dot(&values[b.values()], &v[b.columns()])).sum();
+        for (o, span) in out[..rows].iter_mut().zip(self.row_blocks.windows(2)) {
+            *o = self.blocks[span[0]..span[1]].iter().map(|b| block_dot(&values[b.values()], &v[b.columns()])).sum();
         }
     }
 
     /// `out = Phi_q^T w` over the first `rows` rows.
     pub fn transpose_times(&self, rows: usize, values: &[f64], w: &[f64], out: &mut [f64]) {
         out.fill(0.0);
-        for (r, &wr) in w[..rows].iter().enumerate() {
-            for b in self.row(r) {
+        for (&wr, span) in w[..rows].iter().zip(self.row_blocks.windows(2)) {
+            for b in &self.blocks[span[0]..span[1]] {
                 for (o, j) in out[b.columns()].iter_mut().zip(&values[b.values()]) {
                     *o += j * wr;
                 }
@@ -172,6 +172,15 @@ impl JacobianPattern {
 #[inline]
 pub fn dot(a: &[f64], b: &[f64]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// `a . b` for a block and its columns, unrolled for the planar rigid body's three.
+#[inline(always)]
+fn block_dot(a: &[f64], b: &[f64]) -> f64 {
+    if let (Ok(a), Ok(b)) = (<&[f64; 3]>::try_from(a), <&[f64; 3]>::try_from(b)) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+    dot(a, b)
 }
 
 #[cfg(test)]

@@ -66,6 +66,31 @@ fn term_value(term: &SchurTerm, blocks: &[JacobianBlock], values: &[f64], solved
     dot(&values[a.values()], &solved[start..start + a.width])
 }
 
+/// The same with a diagonal `M^-1`: the sum over the blocks' common columns.
+#[inline(always)]
+fn diagonal_term_value(term: &SchurTerm, values: &[f64], inverse_mass: &[f64]) -> f64 {
+    let (a, b, c, n) = (term.first_value as usize, term.second_value as usize, term.column_start as usize, term.common as usize);
+    if n == 3 {
+        // (the planar rigid body's blocks: unrolled)
+        let (ja, jb, w) = (&values[a..a + 3], &values[b..b + 3], &inverse_mass[c..c + 3]);
+        return ja[0] * w[0] * jb[0] + ja[1] * w[1] * jb[1] + ja[2] * w[2] * jb[2];
+    }
+    (0..n).map(|i| values[a + i] * inverse_mass[c + i] * values[b + i]).sum()
+}
+
+/// Adds the terms of the first `rows` rows of `S` into `out` at the index `at(term)`.
+fn add_terms(model: &Model, rows: usize, ws: &mut Workspace, out: &mut [f64], at: impl Fn(&SchurTerm) -> usize) {
+    let terms = model.schur_terms.iter().take_while(|term| (term.row as usize) < rows);
+    match &model.diagonal_inverse_mass {
+        Some(w) => terms.for_each(|term| out[at(term)] += diagonal_term_value(term, &ws.jacobian, w)),
+        None => {
+            solve_blocks_with_mass(model, rows, ws);
+            let blocks = model.jacobian_pattern.blocks();
+            terms.for_each(|term| out[at(term)] += term_value(term, blocks, &ws.jacobian, &ws.jacobian_solved));
+        }
+    }
+}
+
 /// `M_c^-1 J_c^T` of every block of the first `rows` rows into `ws.jacobian_solved`, each over
 /// all velocity coordinates of its body `c` (the block widened by zeros), with the body kind's solve.
 fn solve_blocks_with_mass(model: &Model, rows: usize, ws: &mut Workspace) {
@@ -79,22 +104,17 @@ fn solve_blocks_with_mass(model: &Model, rows: usize, ws: &mut Workspace) {
     }
 }
 
-/// Forms the lower triangle of `S` for the first `rows` rows, row-major `rows x rows`, into `out`
-/// (from the solved blocks of [`solve_blocks_with_mass`]).
-fn form_dense(model: &Model, rows: usize, values: &[f64], solved: &[f64], out: &mut [f64]) {
+/// Forms the lower triangle of `S` for the first `rows` rows, row-major `rows x rows`, into `out`.
+fn form_dense(model: &Model, rows: usize, ws: &mut Workspace, out: &mut [f64]) {
     let out = &mut out[..rows * rows];
     out.fill(0.0);
-    let blocks = model.jacobian_pattern.blocks();
-    for term in model.schur_terms.iter().take_while(|term| (term.row as usize) < rows) {
-        out[term.row as usize * rows + term.column as usize] += term_value(term, blocks, values, solved);
-    }
+    add_terms(model, rows, ws, out, |term| term.row as usize * rows + term.column as usize);
 }
 
 /// Factors `S` for the first `rows` rows: the regular path when it is well
 /// conditioned, else the regularised factor of the singular path. Fails only
 /// when `S` is not finite or the regularised factor has a non-positive pivot.
 pub(crate) fn factor(model: &Model, rows: usize, ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
-    solve_blocks_with_mass(model, rows, ws);
     let kind = match factor_regular(model, rows, ws) {
         Ok(kind) => kind,
         Err(_) => {
@@ -110,24 +130,28 @@ pub(crate) fn factor(model: &Model, rows: usize, ws: &mut Workspace) -> Result<F
 /// The regular path: patterned `L D L^T` of the dynamic rows or dense Cholesky.
 fn factor_regular(model: &Model, rows: usize, ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
     if rows == model.schur_factor.size() {
-        let schur = &mut ws.schur[..rows * (rows + 1)];
-        schur.fill(0.0);
-        let blocks = model.jacobian_pattern.blocks();
-        for term in model.schur_terms.iter().take_while(|term| (term.row as usize) < rows) {
-            schur[term.entry as usize] += term_value(term, blocks, &ws.jacobian, &ws.jacobian_solved);
-        }
-        model.schur_factor.factor(schur)?;
+        let mut schur = std::mem::take(&mut ws.schur);
+        schur[..rows * (rows + 1)].fill(0.0);
+        add_terms(model, rows, ws, &mut schur, |term| term.entry as usize);
+        let factored = model.schur_factor.factor(&mut schur[..rows * (rows + 1)]);
+        ws.schur = schur;
+        factored?;
         Ok(FactorKind::Pattern)
     } else {
-        form_dense(model, rows, &ws.jacobian, &ws.jacobian_solved, &mut ws.schur);
-        crate::linalg::cholesky_factor(&mut ws.schur, rows)?;
+        let mut schur = std::mem::take(&mut ws.schur);
+        form_dense(model, rows, ws, &mut schur);
+        let factored = crate::linalg::cholesky_factor(&mut schur, rows);
+        ws.schur = schur;
+        factored?;
         Ok(FactorKind::Dense)
     }
 }
 
 /// The eigendecomposition of `S` into `ws.schur` (eigenvectors) and `ws.schur_eigenvalues`.
 fn factor_spectral(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
-    form_dense(model, rows, &ws.jacobian, &ws.jacobian_solved, &mut ws.schur_matrix);
+    let mut matrix = std::mem::take(&mut ws.schur_matrix);
+    form_dense(model, rows, ws, &mut matrix);
+    ws.schur_matrix = matrix;
     let a = &mut ws.schur_matrix[..rows * rows];
     for i in 0..rows {
         for j in 0..i {

@@ -68,6 +68,10 @@ pub struct Model {
     pub layout: StateLayout,
     /// Gravitational acceleration [m/s^2].
     pub gravity: Vec2,
+    /// The diagonal of `M^-1` over all velocity coordinates when every body's
+    /// mass block is constant and diagonal (a fast path of [`Self::solve_mass`]
+    /// and of the constraint matrix); `None` otherwise [1/kg, 1/(kg m^2)].
+    pub diagonal_inverse_mass: Option<Vec<f64>>,
     /// Constraints: the dynamic ones first, then the assembly locks of the clearance joints.
     pub constraints: Vec<Constraint>,
     /// How many of `constraints` act during the simulation.
@@ -120,6 +124,14 @@ pub struct SchurTerm {
     pub first: u32,
     /// Row b's block on the body.
     pub second: u32,
+    /// Where the two blocks' common columns start among row a's values.
+    pub first_value: u32,
+    /// Where they start among row b's values.
+    pub second_value: u32,
+    /// The first common column (velocity coordinate).
+    pub column_start: u32,
+    /// Number of common columns (the term is zero without any when the body's mass is diagonal).
+    pub common: u32,
 }
 
 impl Model {
@@ -130,6 +142,12 @@ impl Model {
 
     /// `out = M^-1 f` over all velocity coordinates, body by body with each body kind's mass block.
     pub fn solve_mass(&self, f: &[f64], out: &mut [f64]) {
+        if let Some(w) = &self.diagonal_inverse_mass {
+            for ((o, w), f) in out.iter_mut().zip(w).zip(f) {
+                *o = w * f;
+            }
+            return;
+        }
         for (body, address) in self.bodies.iter().zip(&self.layout.bodies) {
             body.kind.solve_mass(&f[address.v_range()], &mut out[address.v_range()]);
         }

@@ -73,7 +73,7 @@ pub struct ConstraintRows<'a> {
 impl ConstraintRows<'_> {
     /// Adds `along . d(v_P)/d(v)` of `marker`'s point to row `row + r` in the
     /// block of the constraint's marker `slot` (0 first, 1 second; nothing on the ground).
-    #[inline]
+    #[inline(always)]
     pub fn add_point_jacobian(&mut self, frames: &[Frame], r: usize, slot: usize, marker: &Marker, along: Vec2) {
         if let Some(block) = self.pattern.slot(self.row + r, slot) {
             let kind = &self.bodies[marker.body.0 - 1].kind;
@@ -82,7 +82,7 @@ impl ConstraintRows<'_> {
     }
 
     /// Adds `scale d(omega)/d(v)` of `body`'s reference marker to row `row + r`, block `slot`.
-    #[inline]
+    #[inline(always)]
     pub fn add_angle_jacobian(&mut self, r: usize, slot: usize, body: BodyIndex, scale: f64) {
         if let Some(block) = self.pattern.slot(self.row + r, slot) {
             self.bodies[body.0 - 1].kind.add_marker_angle_jacobian(Vec2::zeros(), scale, &mut self.jacobian[block.values()]);
