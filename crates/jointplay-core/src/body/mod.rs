@@ -67,8 +67,8 @@ impl BodyKind {
     }
 
     /// Jacobian of the global velocity of the marker point `local` [m] (body
-    /// frame) by the velocity coordinates: row x into `jx`, row y into `jy`
-    /// (each `nv` long) [m/m, m/rad].
+    /// frame) by the velocity coordinates the marker moves with
+    /// ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
     #[inline]
     pub fn marker_jacobian(&self, frame: &Frame, local: Vec2, jx: &mut [f64], jy: &mut [f64]) {
         match self {

@@ -67,6 +67,8 @@ pub struct JacobianPattern {
     row_blocks: Vec<usize>,
     /// The block of each row for the constraint's first and second marker (`None` on the ground).
     row_slots: Vec<[Option<u32>; 2]>,
+    /// The row of every block.
+    block_rows: Vec<usize>,
     n_values: usize,
     n_solved: usize,
 }
@@ -93,6 +95,7 @@ impl JacobianPattern {
                     value: self.n_values,
                     solved: self.n_solved,
                 });
+                self.block_rows.push(self.row_slots.len());
                 self.n_values += width;
                 self.n_solved += m.body_columns.len();
             }
@@ -138,26 +141,27 @@ impl JacobianPattern {
     }
 
     /// The block of row `r` for the constraint's marker `slot` (0 first, 1 second), if not on the ground.
-    #[inline]
+    #[inline(always)]
     pub fn slot(&self, r: usize, slot: usize) -> Option<&JacobianBlock> {
         self.row_slots[r][slot].map(|b| &self.blocks[b as usize])
     }
 
     /// `out[r] = (Phi_q v)_r` for the first `rows` rows.
     pub fn times(&self, rows: usize, values: &[f64], v: &[f64], out: &mut [f64]) {
-        for (o, span) in out[..rows].iter_mut().zip(self.row_blocks.windows(2)) {
-            *o = self.blocks[span[0]..span[1]].iter().map(|b| block_dot(&values[b.values()], &v[b.columns()])).sum();
+        let out = &mut out[..rows];
+        out.fill(0.0);
+        for (b, &r) in self.blocks_of_rows(rows).iter().zip(&self.block_rows) {
+            out[r] += block_dot(&values[b.values()], &v[b.columns()]);
         }
     }
 
     /// `out = Phi_q^T w` over the first `rows` rows.
     pub fn transpose_times(&self, rows: usize, values: &[f64], w: &[f64], out: &mut [f64]) {
         out.fill(0.0);
-        for (&wr, span) in w[..rows].iter().zip(self.row_blocks.windows(2)) {
-            for b in &self.blocks[span[0]..span[1]] {
-                for (o, j) in out[b.columns()].iter_mut().zip(&values[b.values()]) {
-                    *o += j * wr;
-                }
+        for (b, &r) in self.blocks_of_rows(rows).iter().zip(&self.block_rows) {
+            let wr = w[r];
+            for (o, j) in out[b.columns()].iter_mut().zip(&values[b.values()]) {
+                *o += j * wr;
             }
         }
     }

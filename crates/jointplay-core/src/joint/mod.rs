@@ -81,6 +81,21 @@ impl ConstraintRows<'_> {
         }
     }
 
+    /// Sets rows `row + r` and `row + r + 1` of the block of marker `slot` to `scale`
+    /// times the Jacobian of the marker point's velocity, x and y (one call to the body kind).
+    #[inline(always)]
+    pub fn set_point_jacobian_rows(&mut self, frames: &[Frame], r: usize, slot: usize, marker: &Marker, scale: f64) {
+        let (Some(x), Some(y)) = (self.pattern.slot(self.row + r, slot), self.pattern.slot(self.row + r + 1, slot)) else { return };
+        let (x, y) = (x.values(), y.values());
+        // (a later row's blocks sit after an earlier row's)
+        let (head, tail) = self.jacobian.split_at_mut(y.start);
+        let (jx, jy) = (&mut head[x], &mut tail[..y.end - y.start]);
+        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.body.0], marker.local, jx, jy);
+        if scale != 1.0 {
+            jx.iter_mut().chain(jy.iter_mut()).for_each(|j| *j *= scale);
+        }
+    }
+
     /// Adds `scale d(omega)/d(v)` of `body`'s reference marker to row `row + r`, block `slot`.
     #[inline(always)]
     pub fn add_angle_jacobian(&mut self, r: usize, slot: usize, body: BodyIndex, scale: f64) {

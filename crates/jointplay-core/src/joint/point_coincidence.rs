@@ -29,10 +29,8 @@ impl PointCoincidence {
     /// row y along `e_y`; `nu = 0`; `gamma = -(a0_Pi - a0_Pj)` with `a0` the
     /// markers' velocity-dependent accelerations (`-omega^2 A s` on a rigid body).
     pub fn linearise(&self, frames: &[Frame], mut rows: ConstraintRows<'_>) {
-        for (r, axis) in [Vec2::x(), Vec2::y()].into_iter().enumerate() {
-            rows.add_point_jacobian(frames, r, 0, &self.first, axis);
-            rows.add_point_jacobian(frames, r, 1, &self.second, -axis);
-        }
+        rows.set_point_jacobian_rows(frames, 0, 0, &self.first, 1.0);
+        rows.set_point_jacobian_rows(frames, 0, 1, &self.second, -1.0);
         let g = rows.bias_acceleration(frames, &self.second) - rows.bias_acceleration(frames, &self.first);
         let r = rows.row;
         rows.nu[r] = 0.0;
