@@ -492,18 +492,20 @@ impl<'s> Compiler<'s> {
             .map(|(a, b, first, second)| {
                 let entry = if a < m { model.schur_factor.storage_index(a, b) } else { 0 };
                 let (ba, bb) = (&blocks[first], &blocks[second]);
+                // (blocks on one body without common columns, in two elements of a beam, have none)
                 let common = ba.start.max(bb.start)..(ba.start + ba.width).min(bb.start + bb.width);
-                let start = common.start.min(common.end);
+                let (start, common) = if common.is_empty() { (ba.start, 0) } else { (common.start, common.len()) };
+                let (first_value, second_value) = if common == 0 { (ba.value, bb.value) } else { (ba.value + start - ba.start, bb.value + start - bb.start) };
                 SchurTerm {
                     row: narrow(a),
                     column: narrow(b),
                     entry: narrow(entry),
                     first: narrow(first),
                     second: narrow(second),
-                    first_value: narrow(ba.value + start - ba.start),
-                    second_value: narrow(bb.value + start - bb.start),
+                    first_value: narrow(first_value),
+                    second_value: narrow(second_value),
                     column_start: narrow(start),
-                    common: narrow(common.len()),
+                    common: narrow(common),
                 }
             })
             .collect();
