@@ -207,8 +207,10 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
         elements.append(e)?;
     }
     d.set_item("elements", elements)?;
-    d.set_item("clearance_joints", m.clearance_names.clone())?;
-    d.set_item("forces", m.force_names.clone())?;
+    let clearance: Vec<&str> = m.clearance_joints().map(|(_, name, _)| name).collect();
+    let forces: Vec<&str> = m.force_names.iter().map(String::as_str).filter(|name| !clearance.contains(name)).collect();
+    d.set_item("clearance_joints", clearance)?;
+    d.set_item("forces", forces)?;
     d.set_item("n_coordinates", m.n_velocities())?;
     d.set_item("n_element_states", m.layout.nz)?;
     d.set_item("n_equations", m.n_dynamic_equations())?;

@@ -29,11 +29,7 @@ pub(crate) enum Source {
     Reaction(usize, u8),
     /// Driver effort (torque or force along the axis).
     DriverEffort(usize),
-    /// Clearance joint quantity (see `clearance_value`).
-    Clearance(usize, u8),
-    /// Film of a lubricated clearance joint (see `film_value`).
-    Film(usize, u8),
-    /// Force element: the index of the output among its channels.
+    /// Force element (clearance joints included): the index of the output among its channels.
     Force(usize, u8),
     /// 0 kinetic, 1 potential, 2 total mechanical energy.
     Energy(u8),
@@ -64,9 +60,7 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
         Source::Acceleration(k) => ws.accelerations[k],
         Source::Reaction(e, which) => reaction_value(model, e, which, ws),
         Source::DriverEffort(e) => driver_effort(model, e, ws),
-        Source::Clearance(j, which) => clearance_value(model, j, which, ws),
-        Source::Film(j, which) => film_value(j, which, ws),
-        Source::Force(f, which) => ws.force_outputs[f].values[which as usize],
+        Source::Force(f, which) => model.forces[f].output(which as usize, &ws.frames, &ws.element_work[f]),
         Source::Energy(0) => energy[0],
         Source::Energy(1) => energy[1],
         Source::Energy(_) => energy[0] + energy[1],
@@ -132,87 +126,13 @@ fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
     }
 }
 
-fn clearance_value(model: &Model, j: usize, which: u8, ws: &Workspace) -> f64 {
-    let c = &ws.contacts[j];
-    let joint = &model.clearance_joints[j];
-    match which {
-        0 => c.eccentricity.x,
-        1 => c.eccentricity.y,
-        2 => c.eccentricity.norm() / joint.clearance,
-        3 => c.penetration.max(0.0),
-        4 => c.normal_force,
-        5 => c.friction_force,
-        // the joint's total force on the journal: dry contact plus film (zero for a dry joint)
-        6 => c.force_on_journal.x + ws.films[j].force_on_journal.x,
-        7 => c.force_on_journal.y + ws.films[j].force_on_journal.y,
-        8 => (c.force_on_journal + ws.films[j].force_on_journal).norm(),
-        9 => if c.in_contact { c.penetration_rate } else { relative_radial_velocity(model, j, ws) },
-        10 => c.sliding_velocity,
-        _ => f64::from(u8::from(c.in_contact)),
-    }
-}
-
-fn film_value(j: usize, which: u8, ws: &Workspace) -> f64 {
-    let f = &ws.films[j];
-    match which {
-        0 => f.film_min,
-        1 => f.force_on_journal.x,
-        2 => f.force_on_journal.y,
-        3 => f.force_on_journal.norm(),
-        4 => f.peak_pressure,
-        5 => f.weight,
-        _ => f64::from(f.mode),
-    }
-}
-
-/// `d|e|/dt` while the journal is free [m/s].
-fn relative_radial_velocity(model: &Model, j: usize, ws: &Workspace) -> f64 {
-    let joint = &model.clearance_joints[j];
-    let (fi, fj) = (&ws.frames[joint.bearing.body.0], &ws.frames[joint.journal.body.0]);
-    let e = ws.contacts[j].eccentricity;
-    let distance = e.norm();
-    if distance == 0.0 {
-        return 0.0;
-    }
-    let e_dot = fj.point_velocity(joint.journal.local) - fi.point_velocity(joint.bearing.local);
-    e_dot.dot(&e) / distance
-}
-
-/// Kinetic and potential energy [J] of the state y (gravity, force elements, contact).
+/// Kinetic and potential energy [J] of the state y (gravity, force elements and contacts).
 fn kinetic_and_potential_energy(model: &Model, y: &[f64], ws: &Workspace) -> [f64; 2] {
     let (q, v, _) = model.layout.split(y);
     let bodies = model.bodies.iter().zip(&model.layout.bodies);
     let kinetic: f64 = bodies.clone().map(|(b, a)| b.kind.kinetic_energy(&v[a.v_range()])).sum();
     let gravity: f64 = bodies.map(|(b, a)| b.kind.gravity_potential_energy(model.gravity, &q[a.q_range()])).sum();
-    let potential = gravity
-        + ws.force_outputs.iter().map(|f| f.potential_energy).sum::<f64>()
-        + model.clearance_joints.iter().zip(&ws.contacts).map(|(j, c)| j.stiffness.elastic_energy(c.penetration.max(0.0))).sum::<f64>();
+    let elements: f64 = model.forces.iter().zip(&ws.element_work).map(|(element, work)| element.potential_energy(work)).sum();
+    let potential = gravity + elements;
     [kinetic, potential]
 }
-
-/// Names of the quantities of a clearance joint, by `Source::Clearance` index.
-pub(crate) const CLEARANCE_QUANTITIES: [(&str, &str, &str); 12] = [
-    ("ex", "m", "eccentricity x (journal centre from bearing centre)"),
-    ("ey", "m", "eccentricity y"),
-    ("eccentricity_ratio", "1", "|e| / clearance"),
-    ("penetration", "m", "penetration depth |e| - c while in contact, else 0"),
-    ("fn", "N", "normal contact force"),
-    ("ft", "N", "friction force along the tangent t = perp(n), on the journal"),
-    ("fx", "N", "force of the joint on the journal (contact plus film), x"),
-    ("fy", "N", "force of the joint on the journal, y"),
-    ("f", "N", "force of the joint on the journal, magnitude"),
-    ("vn", "m/s", "normal relative velocity d|e|/dt (positive when approaching the wall)"),
-    ("vt", "m/s", "sliding velocity of the journal surface on the bore"),
-    ("contact", "1", "1 while in contact, 0 while free"),
-];
-
-/// Names of the film quantities of a lubricated clearance joint, by `Source::Film` index.
-pub(crate) const FILM_QUANTITIES: [(&str, &str, &str); 7] = [
-    ("film_min", "m", "minimum film thickness c - |e| (0 in contact)"),
-    ("fhx", "N", "film (hydrodynamic) force on the journal after the transition weight, x"),
-    ("fhy", "N", "film force on the journal, y"),
-    ("fh", "N", "film force magnitude"),
-    ("peak_pressure", "Pa", "peak film pressure (gauge)"),
-    ("film_weight", "1", "share of the film force in the transition to contact"),
-    ("mode", "1", "0 hydrodynamic, 1 transition, 2 contact"),
-];

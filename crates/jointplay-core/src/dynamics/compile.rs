@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use super::channels::{Channel, ChannelInfo, Source, CLEARANCE_QUANTITIES, FILM_QUANTITIES};
+use super::channels::{Channel, ChannelInfo, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use super::frame::{perp, BodyIndex, Marker, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm};
@@ -49,8 +49,8 @@ struct Compiler<'s> {
     model: Model,
     /// joint name -> (kind, element index) for drivers
     joint_index: HashMap<&'s str, (ElementKind, usize)>,
-    /// clearance joint indices and their spec, for the assembly locks
-    clearance_specs: Vec<&'s ClearanceJointSpec>,
+    /// Clearance joints to lock at assembly: bearing, journal, initial eccentricity [m], name.
+    assembly_locks: Vec<(Marker, Marker, Vec2, String)>,
     names: HashMap<String, String>,
 }
 
@@ -71,10 +71,10 @@ impl<'s> Compiler<'s> {
             schur_terms: Vec::new(),
             schur_factor: PatternLdl::analyse(0, &[]),
             elements: Vec::new(),
-            clearance_joints: Vec::new(),
-            clearance_names: Vec::new(),
             forces: Vec::new(),
             force_names: Vec::new(),
+            event_offsets: vec![0],
+            event_bodies: Vec::new(),
             initial_coordinates: Vec::new(),
             initial_velocities: Vec::new(),
             initial_element_states: Vec::new(),
@@ -88,7 +88,7 @@ impl<'s> Compiler<'s> {
             points: HashMap::new(),
             model,
             joint_index: HashMap::new(),
-            clearance_specs: Vec::new(),
+            assembly_locks: Vec::new(),
             names: HashMap::new(),
         }
     }
@@ -303,8 +303,10 @@ impl<'s> Compiler<'s> {
         }
         let max_penetration = c.max_penetration.unwrap_or(MAX_PENETRATION_FRACTION_OF_RADIUS * journal_radius);
         self.positive(max_penetration, format!("{loc}.max_penetration"), "maximum penetration");
-        let index = self.model.clearance_joints.len();
-        self.model.clearance_joints.push(ClearanceRevolute {
+        if c.lock_at_assembly {
+            self.assembly_locks.push((a, b, e0, c.name.clone()));
+        }
+        let joint = ClearanceRevolute {
             bearing: a,
             journal: b,
             bearing_radius: c.bearing_radius,
@@ -317,17 +319,8 @@ impl<'s> Compiler<'s> {
             max_penetration,
             initial_eccentricity: e0,
             lubrication,
-        });
-        self.model.clearance_names.push(c.name.clone());
-        self.clearance_specs.push(c);
-        for (q, (quantity, unit, description)) in CLEARANCE_QUANTITIES.iter().enumerate() {
-            self.channel(&c.name, quantity, unit, description.to_string(), Source::Clearance(index, q as u8));
-        }
-        if c.lubrication.is_some() {
-            for (q, (quantity, unit, description)) in FILM_QUANTITIES.iter().enumerate() {
-                self.channel(&c.name, quantity, unit, description.to_string(), Source::Film(index, q as u8));
-            }
-        }
+        };
+        self.push_force_element(&c.name, ForceElement::ClearanceRevolute(joint), Vec::new());
     }
 
     fn drivers(&mut self) {
@@ -386,16 +379,28 @@ impl<'s> Compiler<'s> {
         for (k, f) in self.spec.forces.iter().enumerate() {
             let loc = format!("forces[{k}]");
             if let Some((name, element, states)) = self.force(&loc, f) {
-                let index = self.model.forces.len();
-                for (q, (quantity, unit, description)) in element.channels().iter().enumerate() {
-                    self.channel(name, quantity, unit, description.to_string(), Source::Force(index, q as u8));
-                }
-                self.model.layout.push_force_states(element.n_states());
-                self.model.initial_element_states.extend(states);
-                self.model.forces.push(element);
-                self.model.force_names.push(name.to_string());
+                self.push_force_element(name, element, states);
             }
         }
+    }
+
+    /// Adds a force element with its channels, initial states and events.
+    fn push_force_element(&mut self, name: &str, element: ForceElement, initial_states: Vec<f64>) {
+        let index = self.model.forces.len();
+        for (q, (quantity, unit, description)) in element.channels().iter().enumerate() {
+            self.channel(name, quantity, unit, description.to_string(), Source::Force(index, q as u8));
+        }
+        self.model.layout.push_force_states(element.n_states());
+        self.model.initial_element_states.extend(initial_states);
+        let events = self.model.n_events() + element.n_events();
+        self.model.event_offsets.push(events);
+        for body in element.event_bodies() {
+            if !body.is_ground() && !self.model.event_bodies.contains(&body) {
+                self.model.event_bodies.push(body);
+            }
+        }
+        self.model.forces.push(element);
+        self.model.force_names.push(name.to_string());
     }
 
     /// The element described by `f`, with its name and initial states.
@@ -454,14 +459,9 @@ impl<'s> Compiler<'s> {
     /// Clearance joints locked at their initial eccentricity, used only at assembly.
     fn locks(&mut self) {
         self.model.n_dynamic_constraints = self.model.constraints.len();
-        for k in 0..self.model.clearance_joints.len() {
-            if !self.clearance_specs[k].lock_at_assembly {
-                continue;
-            }
-            let joint = self.model.clearance_joints[k].clone();
-            let name = format!("{} (assembly lock)", self.model.clearance_names[k]);
-            let kind = ConstraintKind::PointCoincidence(PointCoincidence { first: joint.bearing, second: joint.journal, offset: joint.initial_eccentricity });
-            self.add_element(&name, ElementKind::AssemblyLock, joint.bearing, joint.journal, Vec2::zeros(), vec![kind]);
+        for (bearing, journal, eccentricity, name) in std::mem::take(&mut self.assembly_locks) {
+            let kind = ConstraintKind::PointCoincidence(PointCoincidence { first: bearing, second: journal, offset: eccentricity });
+            self.add_element(&format!("{name} (assembly lock)"), ElementKind::AssemblyLock, bearing, journal, Vec2::zeros(), vec![kind]);
         }
     }
 

@@ -11,11 +11,11 @@
 
 use super::frame::Frame;
 use super::generalised_force::GeneralisedForces;
-use super::state::ContactMemory;
 use super::constraint_solution;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::joint::{ConstraintRows, Lubrication};
+use crate::force::{ElementMemory, ForceElement};
+use crate::joint::ConstraintRows;
 use crate::linalg::RankDeficiency;
 
 /// How constraint drift is controlled.
@@ -114,9 +114,10 @@ fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> 
     }
 }
 
-/// Applied generalised forces: velocity-dependent inertial forces, gravity,
-/// force elements and clearance contacts (whose evaluations are kept in the workspace).
-pub(crate) fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
+/// Applied generalised forces: velocity-dependent inertial forces, gravity
+/// and the force elements (clearance joints included), whose evaluations are
+/// kept in the workspace.
+pub(crate) fn applied_forces(model: &Model, memory: &[ElementMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
     ws.generalised_force.fill(0.0);
     if model.layout.has_inertial_forces {
         for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
@@ -127,28 +128,10 @@ pub(crate) fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, (q
     forces.add_gravity(model.gravity);
     for (k, element) in model.forces.iter().enumerate() {
         let states = model.layout.force_states[k].clone();
-        ws.force_outputs[k] = element.apply(&ws.frames, t, &z[states.clone()], &mut ws.element_state_rates[states], &mut forces);
-    }
-    for (k, joint) in model.clearance_joints.iter().enumerate() {
-        let c = joint.evaluate(&ws.frames, memory[k].onset_velocity);
-        let (bi, bj) = (joint.bearing.body, joint.journal.body);
-        if c.in_contact {
-            forces.add_point_force(bj, &ws.frames[bj.0], c.journal_contact_point, c.force_on_journal);
-            forces.add_point_force(bi, &ws.frames[bi.0], c.bearing_contact_point, -c.force_on_journal);
-        }
-        ws.contacts[k] = c;
-        if let Some(lubrication) = &joint.lubrication {
-            let (fi, fj) = (&ws.frames[bi.0], &ws.frames[bj.0]);
-            let (pi, pj) = (fi.point(joint.bearing.local), fj.point(joint.journal.local));
-            let kinematics = Lubrication::kinematics(fi, fj, pi, pj);
-            let film = lubrication.evaluate(&kinematics, ws.film_solvers[k].as_mut(), ws.detailed).map_err(|cause| SimulationError::FilmModel {
-                time: t,
-                element: model.clearance_names[k].clone(),
-                cause,
-            })?;
-            Lubrication::apply(&film, &mut forces, (&ws.frames[bi.0], bi, pi), (&ws.frames[bj.0], bj, pj));
-            ws.films[k] = film;
-        }
+        let own = (&z[states.clone()], &mut ws.element_state_rates[states]);
+        element
+            .apply(&ws.frames, t, own, &memory[k], &mut ws.element_work[k], ws.detailed, &mut forces)
+            .map_err(|fault| fault.at(t, &model.force_names[k]))?;
     }
     Ok(())
 }
@@ -158,7 +141,7 @@ pub(crate) fn applied_forces(model: &Model, memory: &[ContactMemory], t: f64, (q
 /// Never allocates.
 pub fn accelerations(
     model: &Model,
-    memory: &[ContactMemory],
+    memory: &[ElementMemory],
     t: f64,
     y: &[f64],
     stabilization: Stabilization,
@@ -212,11 +195,10 @@ pub(crate) fn check_finite(model: &Model, t: f64, ws: &Workspace) -> Result<(), 
         return Ok(());
     }
     let element = ws
-        .contacts
+        .element_work
         .iter()
-        .position(|c| !(c.normal_force.is_finite() && c.friction_force.is_finite()))
-        .map(|k| model.clearance_names[k].clone())
-        .or_else(|| ws.force_outputs.iter().position(|f| !f.values.iter().all(|v| v.is_finite())).map(|k| model.force_names[k].clone()))
+        .position(|work| !ForceElement::outputs_finite(work))
+        .map(|k| model.force_names[k].clone())
         .unwrap_or_else(|| "state".to_string());
     Err(SimulationError::NonFinite { time: t, element })
 }

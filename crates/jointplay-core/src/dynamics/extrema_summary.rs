@@ -77,11 +77,24 @@ pub struct Extrema {
     pub clearance_joints: Vec<JointExtrema>,
 }
 
+/// A clearance joint as the summary needs it.
+pub(crate) struct JointToSummarize {
+    /// Name.
+    pub name: String,
+    /// Index of its event function (its gap `|e| - c`) among the tracked ones.
+    pub event: usize,
+    /// Contact onsets counted.
+    pub impacts: usize,
+    /// Whether it carries a film.
+    pub lubricated: bool,
+    /// Radial clearance [m].
+    pub clearance: f64,
+}
+
 impl ExtremaTracker {
     /// The summary: `names` and `units` of the tracked quantities (the first
-    /// `n_channels` channels, then point accelerations), then for each clearance
-    /// joint its name, impacts, whether it is lubricated and its clearance [m].
-    pub(crate) fn summary(&self, names: &[(String, &'static str)], n_channels: usize, joints: &[(String, usize, bool, f64)]) -> Extrema {
+    /// `n_channels` channels, then point accelerations), then the clearance joints.
+    pub(crate) fn summary(&self, names: &[(String, &'static str)], n_channels: usize, joints: &[JointToSummarize]) -> Extrema {
         let duration = self.t_last - self.t_start;
         let peaks = |range: std::ops::Range<usize>| -> Vec<ChannelPeak> {
             names[range.clone()]
@@ -95,14 +108,14 @@ impl ExtremaTracker {
         let point_accelerations = peaks(n_channels..names.len());
         let clearance_joints = joints
             .iter()
-            .zip(self.gaps.peaks.iter().zip(&self.contact_time))
-            .map(|((name, impacts, lubricated, clearance), (gap, &contact_time))| {
+            .map(|&JointToSummarize { ref name, event, impacts, lubricated, clearance }| {
+                let (gap, contact_time) = (&self.gaps.peaks[event], self.contact_time[event]);
                 // (a joint observed at no step at all has no extrema: NaN)
                 let observed = !gap.time.is_nan();
                 let touched = gap.score > 0.0;
                 JointExtrema {
                     name: name.clone(),
-                    impacts: *impacts,
+                    impacts,
                     contact_time,
                     contact_fraction: if duration > 0.0 { contact_time / duration } else { 0.0 },
                     max_penetration: if touched { gap.score } else { 0.0 },

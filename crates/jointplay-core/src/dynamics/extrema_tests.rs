@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::dynamics::maximize;
+use crate::dynamics::extrema_summary::JointToSummarize;
 
 /// A probe whose single channel and single gap are known functions of time.
 struct Known<F: Fn(f64) -> f64, G: Fn(f64) -> f64> {
@@ -87,7 +88,7 @@ fn test_contact_time_and_deepest_gap_of_a_sine_match_the_closed_form() {
     let deepest = tracker.gaps.peaks[0];
     assert!((deepest.score - 0.5).abs() < 1e-10, "{deepest:?}");
     assert!((deepest.time - 0.25).abs() < 1e-4, "{deepest:?}");
-    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[("B".to_string(), 3, true, 2.0)]);
+    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[JointToSummarize { name: "B".to_string(), event: 0, impacts: 3, lubricated: true, clearance: 2.0 }]);
     let joint = &summary.clearance_joints[0];
     assert_eq!(joint.impacts, 3);
     assert!((joint.contact_fraction - expected / 1.05).abs() < 1e-7);
@@ -102,7 +103,7 @@ fn test_minimum_film_of_a_joint_never_in_contact_is_the_smallest_clearance_left(
     let gap = |t: f64| -1e-5 + 4e-6 * (t - 0.42).cos();
     let mut probe = Known { channel: |_| 0.0, gap, evaluations: 0 };
     let tracker = track(&mut probe, 0.1, 1.0);
-    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[("B".to_string(), 0, true, 2e-5)]);
+    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[JointToSummarize { name: "B".to_string(), event: 0, impacts: 0, lubricated: true, clearance: 2e-5 }]);
     let joint = &summary.clearance_joints[0];
     assert!((joint.min_film.unwrap() - 6e-6).abs() < 6e-6 * 1e-8, "{joint:?}");
     assert!((joint.min_film_time.unwrap() - 0.42).abs() < 1e-3, "{joint:?}");

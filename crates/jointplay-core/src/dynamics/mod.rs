@@ -48,3 +48,5 @@ pub use workspace::Workspace;
 pub(crate) use brent::maximize;
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod element_tests;

@@ -6,7 +6,7 @@ use super::joint_coordinates::JointTree;
 use super::constraint_jacobian::JacobianPattern;
 use super::layout::StateLayout;
 use crate::body::BodyKind;
-use crate::force::ForceElement;
+use crate::force::{ElementMemory, ForceElement};
 use crate::joint::{ClearanceRevolute, Constraint};
 use crate::linalg::PatternLdl;
 
@@ -88,14 +88,15 @@ pub struct Model {
     pub schur_factor: PatternLdl,
     /// Joints, drivers and assembly locks that own constraints.
     pub elements: Vec<IdealElement>,
-    /// Clearance joints.
-    pub clearance_joints: Vec<ClearanceRevolute>,
-    /// Names of the clearance joints.
-    pub clearance_names: Vec<String>,
-    /// Force elements.
+    /// Elements acting through forces (clearance joints included), in the
+    /// order of the description: clearance joints with the joints, then the forces.
     pub forces: Vec<ForceElement>,
     /// Names of the force elements.
     pub force_names: Vec<String>,
+    /// First event function of every force element, plus the total at the end.
+    pub event_offsets: Vec<usize>,
+    /// The bodies some event function reads (each once, ground excluded).
+    pub event_bodies: Vec<BodyIndex>,
     /// Approximate initial coordinates from the description.
     pub initial_coordinates: Vec<f64>,
     /// Approximate initial velocities from the description.
@@ -169,9 +170,27 @@ impl Model {
         self.n_velocities() as i64 - self.n_dynamic_equations() as i64
     }
 
-    /// Whether some clearance joint carries a film (its samples need the detailed film outputs).
-    pub fn has_lubricated_joints(&self) -> bool {
-        self.clearance_joints.iter().any(|joint| joint.lubrication.is_some())
+    /// Whether some element has outputs only recorded samples need (a film's peak pressure).
+    pub fn has_detailed_outputs(&self) -> bool {
+        self.forces.iter().any(ForceElement::has_detailed_outputs)
+    }
+
+    /// Number of event functions of all elements.
+    pub fn n_events(&self) -> usize {
+        *self.event_offsets.last().unwrap_or(&0)
+    }
+
+    /// The discrete memory of every force element at the start of a run.
+    pub fn initial_memory(&self) -> Vec<ElementMemory> {
+        self.forces.iter().map(ForceElement::new_memory).collect()
+    }
+
+    /// The clearance joints: index in [`Self::forces`], name and joint.
+    pub fn clearance_joints(&self) -> impl Iterator<Item = (usize, &str, &ClearanceRevolute)> + Clone {
+        self.forces.iter().enumerate().filter_map(|(k, element)| match element {
+            ForceElement::ClearanceRevolute(joint) => Some((k, self.force_names[k].as_str(), joint)),
+            _ => None,
+        })
     }
 
     /// Name of a body index (`ground` for 0).

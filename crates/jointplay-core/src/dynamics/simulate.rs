@@ -6,10 +6,11 @@ use super::equations::{update_frames, Stabilization};
 use super::joint_coordinates::{self, Formulation, JointTree};
 use super::extrema::ExtremaTracker;
 use super::frame::{BodyIndex, Vec2};
-use super::extrema_summary::{is_peak_unit, Extrema};
+use super::extrema_summary::{is_peak_unit, Extrema, JointToSummarize};
 use super::system::{MechanismSystem, StepEndCache, Tracking};
 use super::{Model, Progress, State, Workspace};
 use crate::error::SimulationError;
+use crate::force::{ElementMemory, ElementWork};
 use crate::integrate::{integrate, IntegratorOptions, Statistics};
 
 /// Options of one simulation.
@@ -110,7 +111,7 @@ pub fn simulate_with_sink(
         Ok(tree) => tree,
         Err(error) => {
             let tracking = new_tracking(model, 0);
-            let extrema = summarize(model, &tracking.tracker, &tracking.channels, &vec![0; model.clearance_joints.len()]);
+            let extrema = summarize(model, &tracking.tracker, &tracking.channels, &model.initial_memory());
             return SimulationOutcome { trajectory, statistics: Statistics::default(), diagnostics, extrema, error: Some(error), formulation: options.formulation };
         }
     };
@@ -124,7 +125,7 @@ pub fn simulate_with_sink(
     let (statistics, result, last_accepted) = {
         let mut system = MechanismSystem {
             model,
-            memory: &mut state.contacts,
+            memory: &mut state.memory,
             ws: &mut ws,
             trajectory: &mut trajectory,
             diagnostics: &mut diagnostics,
@@ -135,7 +136,7 @@ pub fn simulate_with_sink(
             tracking: &mut tracking,
             tree,
         };
-        let (statistics, result) = match system.update_contact_memory(t0, &y) {
+        let (statistics, result) = match system.accept_elements(t0, &y) {
             Ok(_) => integrate(&mut system, t0, t_end, &mut y, &options.integrator),
             Err(e) => (Statistics::default(), Err(e)),
         };
@@ -154,8 +155,8 @@ pub fn simulate_with_sink(
             None => state.y = tracking.accepted_state,
         }
     }
-    diagnostics.impacts = state.contacts.iter().map(|c| c.impacts).collect();
-    let extrema = summarize(model, &tracking.tracker, &tracking.channels, &diagnostics.impacts);
+    diagnostics.impacts = model.clearance_joints().map(|(k, _, _)| state.memory[k].impacts()).collect();
+    let extrema = summarize(model, &tracking.tracker, &tracking.channels, &state.memory);
     let error = result.err().map(|e| name_likely_cause(model, e, &ws));
     let formulation = if tree.is_some() { Formulation::JointCoordinates } else { Formulation::Absolute };
     SimulationOutcome { trajectory, statistics, diagnostics, extrema, error, formulation }
@@ -187,12 +188,13 @@ fn joint_state(model: &Model, tree: &JointTree, y: &[f64], ws: &mut Workspace) -
 }
 
 /// The tracker of the channels with a unit in [`super::PEAK_UNITS`], of the
-/// acceleration of every named point of a moving body and of every clearance joint.
+/// acceleration of every named point of a moving body and of every event function
+/// (a clearance joint's gap).
 fn new_tracking(model: &Model, len: usize) -> Tracking {
     let channels: Vec<usize> = (0..model.channels.len()).filter(|&c| is_peak_unit(model.channels[c].info.unit)).collect();
     let points: Vec<(BodyIndex, Vec2)> = model.points.iter().filter(|p| !p.1.is_ground()).map(|p| (p.1, p.2)).collect();
     Tracking {
-        tracker: ExtremaTracker::new(channels.len() + points.len(), model.clearance_joints.len()),
+        tracker: ExtremaTracker::new(channels.len() + points.len(), model.n_events()),
         channels,
         points,
         state: vec![0.0; len],
@@ -200,15 +202,20 @@ fn new_tracking(model: &Model, len: usize) -> Tracking {
     }
 }
 
-/// The tracked summary with the names of its channels and joints.
-fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], impacts: &[usize]) -> Extrema {
+/// The tracked summary with the names of its channels and joints (`memory`: every element's at the end).
+fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], memory: &[ElementMemory]) -> Extrema {
     let points = model.points.iter().filter(|p| !p.1.is_ground()).map(|p| (p.0.clone(), "m/s^2"));
     let names: Vec<(String, &'static str)> =
         channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).chain(points).collect();
-    let joints: Vec<(String, usize, bool, f64)> = (0..model.clearance_joints.len())
-        .map(|k| {
-            let joint = &model.clearance_joints[k];
-            (model.clearance_names[k].clone(), impacts[k], joint.lubrication.is_some(), joint.clearance)
+    // (a clearance joint's one event function is its gap)
+    let joints: Vec<JointToSummarize> = model
+        .clearance_joints()
+        .map(|(k, name, joint)| JointToSummarize {
+            name: name.to_string(),
+            event: model.event_offsets[k],
+            impacts: memory[k].impacts(),
+            lubricated: joint.lubrication.is_some(),
+            clearance: joint.clearance,
         })
         .collect();
     let mut extrema = tracker.summary(&names, channels.len(), &joints);
@@ -223,13 +230,14 @@ fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], impact
 fn name_likely_cause(model: &Model, error: SimulationError, ws: &Workspace) -> SimulationError {
     match error {
         SimulationError::StepSizeUnderflow { time, step, element: None } => {
-            let element = ws
-                .contacts
-                .iter()
-                .enumerate()
-                .filter(|(_, c)| c.in_contact)
-                .max_by(|a, b| a.1.penetration.total_cmp(&b.1.penetration))
-                .map(|(k, _)| format!("contact in {}", model.clearance_names[k]));
+            let element = model
+                .clearance_joints()
+                .filter_map(|(k, name, _)| match &ws.element_work[k] {
+                    ElementWork::Clearance(work) if work.contact.in_contact => Some((name, work.contact.penetration)),
+                    _ => None,
+                })
+                .max_by(|a, b| a.1.total_cmp(&b.1))
+                .map(|(name, _)| format!("contact in {name}"));
             SimulationError::StepSizeUnderflow { time, step, element }
         }
         other => other,

@@ -1,15 +1,8 @@
 //! The state of a simulation: coordinates, velocities and the discrete
-//! memory of each contact.
+//! memory of each element.
 
-/// Discrete memory of one clearance joint.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct ContactMemory {
-    /// Normal approach velocity latched at the accepted step where contact
-    /// began [m/s]; `None` while the journal is free.
-    pub onset_velocity: Option<f64>,
-    /// Number of contact onsets so far.
-    pub impacts: usize,
-}
+pub use crate::joint::ContactMemory;
+use crate::force::ElementMemory;
 
 /// Everything that changes during a simulation.
 #[derive(Clone, Debug, PartialEq)]
@@ -20,19 +13,18 @@ pub struct State {
     /// (`(x, y, phi)` per planar body [m, rad]), velocity coordinates [m/s, rad/s],
     /// continuous element states (chamber pressures [Pa], ...).
     pub y: Vec<f64>,
-    /// Memory of each clearance joint, in model order.
-    pub contacts: Vec<ContactMemory>,
+    /// Discrete memory of each force element (`Model::forces` order).
+    pub memory: Vec<ElementMemory>,
     /// Lengths of `q` and `v` in `y`.
     split: (usize, usize),
 }
 
 impl State {
     /// State of `model` at time `t` [s] with `y` laid out as its [`super::StateLayout`]
-    /// and every clearance joint free of contact memory.
+    /// and every element's memory as at the start of a run.
     pub fn new(model: &super::Model, time: f64, y: Vec<f64>) -> Self {
         debug_assert_eq!(y.len(), model.layout.len());
-        let contacts = vec![ContactMemory::default(); model.clearance_joints.len()];
-        Self { time, y, contacts, split: (model.layout.nq, model.layout.nv) }
+        Self { time, y, memory: model.initial_memory(), split: (model.layout.nq, model.layout.nv) }
     }
 
     /// Position coordinates `q`.

@@ -1,6 +1,7 @@
 //! The mechanism as an ODE system for the integrators: the right-hand side,
-//! contact-onset events, latching of the onset velocity, drift projection
-//! after each accepted step, and recording of the channels.
+//! the elements' events and their discrete memory at accepted steps (a
+//! clearance joint's contact onset and latched onset velocity), drift
+//! projection after each accepted step, and recording of the channels.
 
 use super::channels::{update_constraint_forces, value};
 use super::extrema::{ExtremaTracker, StepProbe};
@@ -10,23 +11,19 @@ use super::joint_coordinates::{self, joint_accelerations, JointTree};
 use super::frame::{BodyIndex, Vec2};
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
-use super::state::ContactMemory;
 use super::{Model, Progress, Workspace};
 use crate::error::SimulationError;
+use crate::force::{ElementFault, ElementMemory};
 use crate::integrate::OdeSystem;
-use crate::joint::Lubrication;
 
 /// Newton iterations allowed when projecting after a step: the drift of one
 /// step is at the level of the integration tolerance, so one or two suffice.
 const PROJECTION_ITERATIONS: usize = 8;
 
-/// A penetration deeper than this fraction of the clearance is counted in
-/// the diagnostics (a hint that the contact is soft for the clearance).
-const DEEP_PENETRATION_FRACTION: f64 = 0.1;
-
 pub(crate) struct MechanismSystem<'a> {
     pub model: &'a Model,
-    pub memory: &'a mut [ContactMemory],
+    /// Discrete memory of every force element.
+    pub memory: &'a mut [ElementMemory],
     pub ws: &'a mut Workspace,
     pub trajectory: &'a mut Trajectory,
     pub diagnostics: &'a mut Diagnostics,
@@ -99,51 +96,37 @@ impl StepEndCache {
 }
 
 impl MechanismSystem<'_> {
-    /// Latches or clears the onset velocity from the accepted state and checks
-    /// the penetration bound; true when some onset velocity was latched or cleared.
-    pub(crate) fn update_contact_memory(&mut self, t: f64, y: &[f64]) -> Result<bool, SimulationError> {
+    /// Lets every element update its discrete memory at the accepted state (a clearance
+    /// joint latches or clears its onset velocity) and check its bounds; true when some memory changed.
+    pub(crate) fn accept_elements(&mut self, t: f64, y: &[f64]) -> Result<bool, SimulationError> {
         if !self.step_end.holds_evaluation(t, y) {
             // (the frames of the evaluation at this very state are already there)
             self.place_frames(t, y);
         }
         let mut changed = false;
-        for (k, joint) in self.model.clearance_joints.iter().enumerate() {
-            let penetration = joint.penetration(&self.ws.frames);
-            let memory = &mut self.memory[k];
-            if penetration <= 0.0 {
-                changed |= memory.onset_velocity.take().is_some();
-                continue;
-            }
-            if memory.onset_velocity.is_none() {
-                // contact present without a located onset (start in contact, or re-contact inside one step)
-                memory.onset_velocity = Some(joint.onset_velocity(&self.ws.frames));
-                memory.impacts += 1;
-                changed = true;
-            }
-            self.diagnostics.max_penetration = self.diagnostics.max_penetration.max(penetration);
-            if penetration > DEEP_PENETRATION_FRACTION * joint.clearance {
-                self.diagnostics.deep_penetration_steps += 1;
-            }
-            if penetration > joint.max_penetration {
-                return Err(SimulationError::ExcessivePenetration {
-                    time: t,
-                    element: self.model.clearance_names[k].clone(),
-                    penetration,
-                    bound: joint.max_penetration,
-                });
-            }
+        for (k, element) in self.model.forces.iter().enumerate() {
+            let acceptance = match element.accept(&self.ws.frames, &mut self.memory[k]) {
+                Ok(acceptance) => acceptance,
+                Err(fault) => {
+                    if let ElementFault::ExcessivePenetration { penetration, .. } = fault {
+                        self.diagnostics.max_penetration = self.diagnostics.max_penetration.max(penetration);
+                    }
+                    return Err(fault.at(t, &self.model.force_names[k]));
+                }
+            };
+            changed |= acceptance.memory_changed;
+            self.diagnostics.max_penetration = self.diagnostics.max_penetration.max(acceptance.penetration);
+            self.diagnostics.deep_penetration_steps += usize::from(acceptance.deep_penetration);
         }
         Ok(changed)
     }
 
     /// Checks that every element's accepted state is within the range of its law
-    /// (the frames are those of `y`: [`Self::update_contact_memory`] made them).
+    /// (the frames are those of `y`: [`Self::accept_elements`] made them).
     fn check_elements(&self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let z = self.element_states(y);
         for (k, element) in self.model.forces.iter().enumerate() {
-            if let Err(cause) = element.check(&self.ws.frames, &z[self.model.layout.force_states[k].clone()]) {
-                return Err(SimulationError::ElementOutOfRange { time: t, element: self.model.force_names[k].clone(), cause });
-            }
+            element.check(&self.ws.frames, &z[self.model.layout.force_states[k].clone()]).map_err(|fault| fault.at(t, &self.model.force_names[k]))?;
         }
         Ok(())
     }
@@ -205,23 +188,31 @@ impl MechanismSystem<'_> {
         pushed
     }
 
-    /// Frames of the bodies of the clearance joints from the state y (the
-    /// only frames the event functions read), in their own buffer so that
-    /// the workspace keeps the last evaluation.
-    fn update_clearance_frames(&mut self, t: f64, y: &[f64]) {
+    /// Frames of the bodies the event functions read from the state y, in
+    /// their own buffer so that the workspace keeps the last evaluation.
+    fn update_event_frames(&mut self, t: f64, y: &[f64]) {
         if let Some(tree) = self.tree {
             let n = tree.n_dofs;
             tree.place(t, &y[..n], &y[n..2 * n], &mut self.ws.event_frames);
             return;
         }
         let (q, v, _) = self.model.layout.split(y);
-        for joint in &self.model.clearance_joints {
-            for body in [joint.bearing.body, joint.journal.body] {
-                if let Some(address) = self.model.layout.body(body) {
-                    // (at a step end the evaluation there has the same angle)
-                    let kind = &self.model.bodies[body.0 - 1].kind;
-                    self.ws.event_frames[body.0] = kind.frame(&q[address.q_range()], &v[address.v_range()], &self.ws.frames[body.0]);
-                }
+        for &body in &self.model.event_bodies {
+            if let Some(address) = self.model.layout.body(body) {
+                // (at a step end the evaluation there has the same angle)
+                let kind = &self.model.bodies[body.0 - 1].kind;
+                self.ws.event_frames[body.0] = kind.frame(&q[address.q_range()], &v[address.v_range()], &self.ws.frames[body.0]);
+            }
+        }
+    }
+
+    /// Event functions (and their rates, when asked) of every element at the event frames.
+    fn element_event_functions(&self, g: &mut [f64], mut rates: Option<&mut [f64]>) {
+        let offsets = &self.model.event_offsets;
+        for (k, element) in self.model.forces.iter().enumerate() {
+            let events = offsets[k]..offsets[k + 1];
+            if !events.is_empty() {
+                element.event_functions(&self.ws.event_frames, &mut g[events.clone()], rates.as_deref_mut().map(|r| &mut r[events]));
             }
         }
     }
@@ -292,30 +283,25 @@ impl OdeSystem for MechanismSystem<'_> {
     }
 
     fn n_events(&self) -> usize {
-        self.model.clearance_joints.len()
+        self.model.n_events()
     }
 
     fn event_functions(&mut self, t: f64, y: &[f64], g: &mut [f64]) {
-        self.update_clearance_frames(t, y);
-        for (k, joint) in self.model.clearance_joints.iter().enumerate() {
-            g[k] = joint.penetration(&self.ws.event_frames);
-        }
+        self.update_event_frames(t, y);
+        self.element_event_functions(g, None);
     }
 
     fn event_functions_and_rates(&mut self, t: f64, y: &[f64], g: &mut [f64], rates: &mut [f64]) -> bool {
-        self.update_clearance_frames(t, y);
-        for (k, joint) in self.model.clearance_joints.iter().enumerate() {
-            g[k] = joint.penetration(&self.ws.event_frames);
-            rates[k] = joint.penetration_rate(&self.ws.event_frames);
-        }
+        self.update_event_frames(t, y);
+        self.element_event_functions(g, Some(rates));
         true
     }
 
     fn on_event(&mut self, t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {
         self.place_frames(t, y);
-        let joint = &self.model.clearance_joints[event];
-        self.memory[event].onset_velocity = Some(joint.onset_velocity(&self.ws.frames));
-        self.memory[event].impacts += 1;
+        // the element owning the event: the last whose first event is at or before it
+        let k = self.model.event_offsets.partition_point(|&first| first <= event) - 1;
+        self.model.forces[k].on_event(&self.ws.frames, event - self.model.event_offsets[k], &mut self.memory[k]);
         Ok(())
     }
 
@@ -340,8 +326,8 @@ impl OdeSystem for MechanismSystem<'_> {
         if self.options.stabilization == Stabilization::Projection && !self.step_end.holds_projection(t, y) {
             self.project_state(t, y)?;
         }
-        if self.update_contact_memory(t, y)? {
-            // the contact law reads the latched onset velocity: the evaluation no longer holds
+        if self.accept_elements(t, y)? {
+            // the elements' laws read their memory (a latched onset velocity): the evaluation no longer holds
             self.step_end.evaluated_at = None;
         }
         self.check_elements(t, y)?;
@@ -351,7 +337,7 @@ impl OdeSystem for MechanismSystem<'_> {
     }
 
     fn record(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
-        if self.step_end.holds_evaluation(t, y) && !self.model.has_lubricated_joints() {
+        if self.step_end.holds_evaluation(t, y) && !self.model.has_detailed_outputs() {
             // the step end the integrator just evaluated (and projected): record its evaluation
             self.check_elements(t, y)?;
             self.push_sample(t, y)?;
@@ -407,16 +393,12 @@ impl MechanismSystem<'_> {
         evaluated
     }
 
-    /// Completes the evaluation the workspace holds with the film outputs only
-    /// samples need (the peak pressure), re-evaluating just the films.
-    fn detail_films(&mut self, t: f64) -> Result<(), SimulationError> {
+    /// Completes the evaluation the workspace holds with the element outputs only
+    /// samples need (a film's peak pressure), re-evaluating just those.
+    fn detail_elements(&mut self, t: f64) -> Result<(), SimulationError> {
         let ws = &mut *self.ws;
-        for (k, joint) in self.model.clearance_joints.iter().enumerate() {
-            let Some(lubrication) = &joint.lubrication else { continue };
-            let (fi, fj) = (&ws.frames[joint.bearing.body.0], &ws.frames[joint.journal.body.0]);
-            let kinematics = Lubrication::kinematics(fi, fj, fi.point(joint.bearing.local), fj.point(joint.journal.local));
-            let film = lubrication.evaluate(&kinematics, ws.film_solvers[k].as_mut(), true);
-            ws.films[k] = film.map_err(|cause| SimulationError::FilmModel { time: t, element: self.model.clearance_names[k].clone(), cause })?;
+        for (k, element) in self.model.forces.iter().enumerate() {
+            element.detail(&ws.frames, &mut ws.element_work[k]).map_err(|fault| fault.at(t, &self.model.force_names[k]))?;
         }
         self.step_end.evaluated_detailed = true;
         Ok(())
@@ -458,8 +440,8 @@ impl StepProbe for SystemProbe<'_, '_, '_> {
             // the step end: reuse its evaluation when the workspace holds it with the needed outputs
             if !system.step_end.holds_evaluation(t, self.y_new) {
                 system.evaluate_sample(t, self.y_new)?;
-            } else if system.model.has_lubricated_joints() && !system.step_end.evaluated_detailed {
-                system.detail_films(t)?;
+            } else if system.model.has_detailed_outputs() && !system.step_end.evaluated_detailed {
+                system.detail_elements(t)?;
             }
             system.tracked_values(self.y_new, values);
         } else {

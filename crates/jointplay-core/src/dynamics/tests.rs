@@ -8,7 +8,7 @@ use crate::spec::ModelSpec;
 use std::f64::consts::PI;
 
 /// [`accelerations`] at positions `q` and velocities `v` (no element states).
-fn accelerations_at(model: &Model, memory: &[ContactMemory], t: f64, q: &[f64], v: &[f64], stabilization: Stabilization, ws: &mut Workspace) -> Result<(), crate::SimulationError> {
+fn accelerations_at(model: &Model, memory: &[crate::force::ElementMemory], t: f64, q: &[f64], v: &[f64], stabilization: Stabilization, ws: &mut Workspace) -> Result<(), crate::SimulationError> {
     let y: Vec<f64> = q.iter().chain(v).chain(&model.initial_element_states).copied().collect();
     accelerations(model, memory, t, &y, stabilization, ws)
 }
@@ -443,7 +443,7 @@ fn step_end_samples_equal_a_fresh_evaluation_of_the_recorded_state() {
         }
         let t = trajectory.time[k];
         let mut fresh_ws = Workspace::new(&model);
-        let memory = vec![ContactMemory::default(); model.clearance_joints.len()];
+        let memory = model.initial_memory();
         accelerations(&model, &memory, t, &y, Stabilization::Projection, &mut fresh_ws).unwrap();
         let mut fresh = Trajectory::new(&model);
         fresh.push(&model, t, &y, &mut fresh_ws).unwrap();
@@ -466,7 +466,7 @@ fn a_kept_constraint_factor_is_reused_only_at_the_same_time_and_positions() {
     let n = model.n_velocities();
     let mut ws = Workspace::new(&model);
     let state = assemble(&model, 0.0, &mut ws).unwrap();
-    let memory = vec![ContactMemory::default(); model.clearance_joints.len()];
+    let memory = model.initial_memory();
     let fresh = |t: f64, q: &[f64], v: &[f64]| {
         let mut ws = Workspace::new(&model);
         accelerations_at(&model, &memory, t, q, v, Stabilization::Projection, &mut ws).unwrap();
@@ -538,7 +538,7 @@ fn the_general_mass_solve_path_gives_the_accelerations_of_the_diagonal_fast_path
     general.diagonal_inverse_mass = None;
     let mut ws = Workspace::new(&diagonal);
     let state = assemble(&diagonal, 0.0, &mut ws).unwrap();
-    let memory = vec![ContactMemory::default(); diagonal.clearance_joints.len()];
+    let memory = diagonal.initial_memory();
     let n = diagonal.layout.nq;
     let (q, v) = (state.y[..n].to_vec(), state.y[n..].to_vec());
     let mut results = Vec::new();

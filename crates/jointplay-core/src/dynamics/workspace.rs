@@ -4,16 +4,14 @@
 use super::frame::Frame;
 use super::joint_coordinates::JointWorkspace;
 use super::Model;
-use crate::force::ForceOutput;
-use crate::joint::{ContactEvaluation, FilmEvaluation};
-use crate::lubrication::reynolds::ReynoldsSolver;
+use crate::force::{ElementWork, ForceElement};
 
 /// Buffers sized once for a model.
 #[derive(Clone, Debug)]
 pub struct Workspace {
     /// Frames of the ground (index 0) and every body.
     pub frames: Vec<Frame>,
-    /// Frames the event functions work in (only the clearance joints' bodies are kept current).
+    /// Frames the event functions work in (only `Model::event_bodies` are kept current).
     pub event_frames: Vec<Frame>,
     /// Generalised applied force `Q` over the velocity coordinates.
     pub generalised_force: Vec<f64>,
@@ -59,16 +57,10 @@ pub struct Workspace {
     pub correction: Vec<f64>,
     /// Copy of the state for an output sample, projected before it is recorded.
     pub sample: Vec<f64>,
-    /// Last evaluation of each clearance joint.
-    pub contacts: Vec<ContactEvaluation>,
-    /// Last film evaluation of each clearance joint (default for dry joints).
-    pub films: Vec<FilmEvaluation>,
-    /// Reynolds solver of each clearance joint in the exact mode.
-    pub film_solvers: Vec<Option<ReynoldsSolver>>,
     /// Whether this evaluation is for a recorded sample (outputs that only samples need are computed).
     pub detailed: bool,
-    /// Last outputs of each force element.
-    pub force_outputs: Vec<ForceOutput>,
+    /// Last evaluation and scratch of each force element (clearance joints included).
+    pub element_work: Vec<ElementWork>,
     /// Constraint force `(fx [N], fy [N], moment about the centre of mass [N m])`
     /// of each element on its second body at the last recorded sample.
     pub constraint_forces: Vec<[f64; 3]>,
@@ -105,11 +97,8 @@ impl Workspace {
             correction: vec![0.0; n],
             sample: vec![0.0; model.layout.len()],
             element_state_rates: vec![0.0; model.layout.nz],
-            contacts: vec![ContactEvaluation::default(); model.clearance_joints.len()],
-            films: vec![FilmEvaluation::default(); model.clearance_joints.len()],
-            film_solvers: model.clearance_joints.iter().map(|j| j.lubrication.as_ref().and_then(|l| l.new_solver())).collect(),
             detailed: false,
-            force_outputs: vec![ForceOutput::default(); model.forces.len()],
+            element_work: model.forces.iter().map(ForceElement::new_work).collect(),
             constraint_forces: vec![[0.0; 3]; model.elements.len()],
             joint: match &model.joint_tree {
                 Ok(tree) => JointWorkspace::new(tree, n, model.layout.len(), model.bodies.len()),

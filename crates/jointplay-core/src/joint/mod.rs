@@ -2,15 +2,18 @@
 //! `Phi(q, t) = 0` built from three primitives (point coincidence, relative
 //! angle, axial projection); the clearance revolute joint is not a
 //! constraint but a force element between a bearing and a journal, with an
-//! optional lubricant film.
+//! optional lubricant film, an event at contact onset and a discrete memory
+//! (`clearance_element.rs`).
 
 mod axial_projection;
+mod clearance_element;
 mod clearance_revolute;
 mod lubricated_film;
 mod point_coincidence;
 mod relative_angle;
 
 pub use axial_projection::AxialProjection;
+pub use clearance_element::{ClearanceWork, ContactMemory, CHANNELS as CLEARANCE_CHANNELS};
 pub use clearance_revolute::{ClearanceRevolute, ContactEvaluation};
 pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication};
 pub use point_coincidence::PointCoincidence;

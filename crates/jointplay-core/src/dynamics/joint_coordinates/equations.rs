@@ -3,7 +3,7 @@
 use super::tree::JointTree;
 use crate::dynamics::equations::{applied_forces, check_finite};
 use crate::dynamics::frame::Frame;
-use crate::dynamics::state::ContactMemory;
+use crate::force::ElementMemory;
 use crate::dynamics::{Model, Workspace};
 use crate::error::SimulationError;
 use crate::linalg::{cholesky_factor, cholesky_solve};
@@ -35,7 +35,7 @@ pub(crate) fn place(model: &Model, tree: &JointTree, t: f64, y: &[f64], ws: &mut
 /// `y = [theta, theta_dot, z]`, with the bodies' accelerations in
 /// `ws.accelerations`, their applied forces in `ws.generalised_force` and the
 /// element state rates in `ws.element_state_rates`. Never allocates.
-pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ContactMemory], t: f64, y: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
+pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ElementMemory], t: f64, y: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
     let n = tree.n_dofs;
     let (theta, rest) = y.split_at(n);
     let (theta_dot, z) = rest.split_at(n);

@@ -1,0 +1,189 @@
+//! The clearance revolute joint under the element contract
+//! ([`crate::force::ForceElement`]): its event (contact onset, the
+//! penetration crossing zero), its discrete memory (the onset velocity
+//! latched at the accepted step where contact began, and the impact count),
+//! its evaluation (dry contact plus the optional film) with the scratch it
+//! needs, and its channels. The laws themselves are in
+//! [`super::clearance_revolute`] and [`super::lubricated_film`].
+
+use super::{ClearanceRevolute, ContactEvaluation, FilmEvaluation, Lubrication};
+use crate::dynamics::frame::{BodyIndex, Frame};
+use crate::dynamics::GeneralisedForces;
+use crate::force::{Acceptance, ElementFault, OutputInfo};
+use crate::lubrication::reynolds::ReynoldsSolver;
+
+/// A penetration deeper than this fraction of the clearance is reported in
+/// the acceptance as deep (a hint that the contact is soft for the clearance).
+const DEEP_PENETRATION_FRACTION: f64 = 0.1;
+
+/// Discrete memory of one clearance joint, changed only at its events and at accepted steps.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ContactMemory {
+    /// Normal approach velocity latched at the accepted step where contact
+    /// began [m/s]; `None` while the journal is free.
+    pub onset_velocity: Option<f64>,
+    /// Number of contact onsets so far.
+    pub impacts: usize,
+}
+
+/// Last evaluation of one clearance joint and the scratch its film needs.
+#[derive(Clone, Debug, Default)]
+pub struct ClearanceWork {
+    /// Dry contact.
+    pub contact: ContactEvaluation,
+    /// Film (default for a dry joint).
+    pub film: FilmEvaluation,
+    /// Reynolds solver of the exact film mode.
+    pub solver: Option<ReynoldsSolver>,
+}
+
+/// Channels of a clearance joint: the contact quantities, then (lubricated joints only) the film's.
+pub const CHANNELS: [OutputInfo; 19] = [
+    ("ex", "m", "eccentricity x (journal centre from bearing centre)"),
+    ("ey", "m", "eccentricity y"),
+    ("eccentricity_ratio", "1", "|e| / clearance"),
+    ("penetration", "m", "penetration depth |e| - c while in contact, else 0"),
+    ("fn", "N", "normal contact force"),
+    ("ft", "N", "friction force along the tangent t = perp(n), on the journal"),
+    ("fx", "N", "force of the joint on the journal (contact plus film), x"),
+    ("fy", "N", "force of the joint on the journal, y"),
+    ("f", "N", "force of the joint on the journal, magnitude"),
+    ("vn", "m/s", "normal relative velocity d|e|/dt (positive when approaching the wall)"),
+    ("vt", "m/s", "sliding velocity of the journal surface on the bore"),
+    ("contact", "1", "1 while in contact, 0 while free"),
+    ("film_min", "m", "minimum film thickness c - |e| (0 in contact)"),
+    ("fhx", "N", "film (hydrodynamic) force on the journal after the transition weight, x"),
+    ("fhy", "N", "film force on the journal, y"),
+    ("fh", "N", "film force magnitude"),
+    ("peak_pressure", "Pa", "peak film pressure (gauge)"),
+    ("film_weight", "1", "share of the film force in the transition to contact"),
+    ("mode", "1", "0 hydrodynamic, 1 transition, 2 contact"),
+];
+
+/// Number of the contact channels (the film's follow).
+const CONTACT_CHANNELS: usize = 12;
+
+impl ClearanceRevolute {
+    /// Channels: quantity, unit, description.
+    pub fn channels(&self) -> &'static [OutputInfo] {
+        if self.lubrication.is_some() { &CHANNELS } else { &CHANNELS[..CONTACT_CHANNELS] }
+    }
+
+    /// Scratch and last evaluation for the workspace.
+    pub fn new_work(&self) -> ClearanceWork {
+        ClearanceWork { solver: self.lubrication.as_ref().and_then(Lubrication::new_solver), ..Default::default() }
+    }
+
+    /// The bodies the event function reads.
+    pub fn event_bodies(&self) -> [BodyIndex; 2] {
+        [self.bearing.body, self.journal.body]
+    }
+
+    /// Evaluates contact and film with the latched onset velocity of `memory`,
+    /// adds their generalised forces and keeps the evaluations in `work`;
+    /// `detailed` asks for the film outputs only recorded samples need.
+    pub fn apply_element(&self, frames: &[Frame], memory: &ContactMemory, work: &mut ClearanceWork, detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+        let c = self.evaluate(frames, memory.onset_velocity);
+        let (bi, bj) = (self.bearing.body, self.journal.body);
+        if c.in_contact {
+            forces.add_point_force(bj, &frames[bj.0], c.journal_contact_point, c.force_on_journal);
+            forces.add_point_force(bi, &frames[bi.0], c.bearing_contact_point, -c.force_on_journal);
+        }
+        work.contact = c;
+        if self.lubrication.is_some() {
+            work.film = self.film(frames, work.solver.as_mut(), detailed)?;
+            let (fi, fj) = (&frames[bi.0], &frames[bj.0]);
+            Lubrication::apply(&work.film, forces, (fi, bi, fi.point(self.bearing.local)), (fj, bj, fj.point(self.journal.local)));
+        }
+        Ok(())
+    }
+
+    /// Re-evaluates the film with the outputs only samples need (the peak pressure).
+    pub fn detail(&self, frames: &[Frame], work: &mut ClearanceWork) -> Result<(), ElementFault> {
+        if self.lubrication.is_some() {
+            work.film = self.film(frames, work.solver.as_mut(), true)?;
+        }
+        Ok(())
+    }
+
+    fn film(&self, frames: &[Frame], solver: Option<&mut ReynoldsSolver>, detailed: bool) -> Result<FilmEvaluation, ElementFault> {
+        let Some(lubrication) = &self.lubrication else { return Ok(FilmEvaluation::default()) };
+        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let kinematics = Lubrication::kinematics(fi, fj, fi.point(self.bearing.local), fj.point(self.journal.local));
+        lubrication.evaluate(&kinematics, solver, detailed).map_err(ElementFault::Film)
+    }
+
+    /// Latches or clears the onset velocity at an accepted state and checks the
+    /// penetration bound.
+    pub fn accept(&self, frames: &[Frame], memory: &mut ContactMemory) -> Result<Acceptance, ElementFault> {
+        let penetration = self.penetration(frames);
+        if penetration <= 0.0 {
+            return Ok(Acceptance { memory_changed: memory.onset_velocity.take().is_some(), ..Default::default() });
+        }
+        let mut memory_changed = false;
+        if memory.onset_velocity.is_none() {
+            // contact present without a located onset (start in contact, or re-contact inside one step)
+            self.on_event(frames, memory);
+            memory_changed = true;
+        }
+        if penetration > self.max_penetration {
+            return Err(ElementFault::ExcessivePenetration { penetration, bound: self.max_penetration });
+        }
+        Ok(Acceptance { memory_changed, penetration, deep_penetration: penetration > DEEP_PENETRATION_FRACTION * self.clearance })
+    }
+
+    /// Contact onset located: latches the approach velocity and counts the impact.
+    pub fn on_event(&self, frames: &[Frame], memory: &mut ContactMemory) {
+        memory.onset_velocity = Some(self.onset_velocity(frames));
+        memory.impacts += 1;
+    }
+
+    /// Value of channel `which` (an index into [`CHANNELS`]) from the last evaluation.
+    pub fn output(&self, which: usize, frames: &[Frame], work: &ClearanceWork) -> f64 {
+        let (c, f) = (&work.contact, &work.film);
+        match which {
+            0 => c.eccentricity.x,
+            1 => c.eccentricity.y,
+            2 => c.eccentricity.norm() / self.clearance,
+            3 => c.penetration.max(0.0),
+            4 => c.normal_force,
+            5 => c.friction_force,
+            // the joint's total force on the journal: dry contact plus film (zero for a dry joint)
+            6 => c.force_on_journal.x + f.force_on_journal.x,
+            7 => c.force_on_journal.y + f.force_on_journal.y,
+            8 => (c.force_on_journal + f.force_on_journal).norm(),
+            9 => if c.in_contact { c.penetration_rate } else { self.free_radial_velocity(frames, c) },
+            10 => c.sliding_velocity,
+            11 => f64::from(u8::from(c.in_contact)),
+            12 => f.film_min,
+            13 => f.force_on_journal.x,
+            14 => f.force_on_journal.y,
+            15 => f.force_on_journal.norm(),
+            16 => f.peak_pressure,
+            17 => f.weight,
+            _ => f64::from(f.mode),
+        }
+    }
+
+    /// `d|e|/dt` while the journal is free [m/s] (0 at `e = 0`).
+    fn free_radial_velocity(&self, frames: &[Frame], c: &ContactEvaluation) -> f64 {
+        let distance = c.eccentricity.norm();
+        if distance == 0.0 {
+            return 0.0;
+        }
+        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let e_dot = fj.point_velocity(self.journal.local) - fi.point_velocity(self.bearing.local);
+        e_dot.dot(&c.eccentricity) / distance
+    }
+
+    /// Elastic energy stored in the contact [J].
+    pub fn potential_energy(&self, work: &ClearanceWork) -> f64 {
+        self.stiffness.elastic_energy(work.contact.penetration.max(0.0))
+    }
+
+    /// Whether the last evaluation's forces are finite.
+    pub fn outputs_finite(work: &ClearanceWork) -> bool {
+        let (c, f) = (&work.contact, &work.film);
+        c.normal_force.is_finite() && c.friction_force.is_finite() && f.force_on_journal.x.is_finite() && f.force_on_journal.y.is_finite()
+    }
+}
