@@ -25,10 +25,8 @@ pub(crate) enum Source {
     Velocity(usize),
     /// Acceleration of coordinate `k`.
     Acceleration(usize),
-    /// Reaction of an ideal element: 0 fx, 1 fy, 2 |f|, 3 moment.
-    Reaction(usize, u8),
-    /// Driver effort (torque or force along the axis).
-    DriverEffort(usize),
+    /// Ideal element (joint or driver): the index of the output among its kind's channels.
+    Ideal(usize, u8),
     /// Force element (clearance joints included): the index of the output among its channels.
     Force(usize, u8),
     /// 0 kinetic, 1 potential, 2 total mechanical energy.
@@ -58,8 +56,10 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
         Source::Coordinate(k) => y[k],
         Source::Velocity(k) => y[model.layout.nq + k],
         Source::Acceleration(k) => ws.accelerations[k],
-        Source::Reaction(e, which) => reaction_value(model, e, which, ws),
-        Source::DriverEffort(e) => driver_effort(model, e, ws),
+        Source::Ideal(e, which) => match model.elements[e].kind {
+            ElementKind::AngleDriver | ElementKind::DisplacementDriver => driver_effort(model, e, ws),
+            _ => reaction_value(model, e, which, ws),
+        },
         Source::Force(f, which) => model.forces[f].output(which as usize, &ws.frames, &ws.element_work[f]),
         Source::Energy(0) => energy[0],
         Source::Energy(1) => energy[1],

@@ -264,7 +264,7 @@ impl<'s> Compiler<'s> {
         };
         let element = self.add_element(name, kind, a, b, unit_axis, kinds);
         self.joint_index.insert(name, (kind, element));
-        self.reaction_channels(element, name, kind != ElementKind::RevoluteJoint);
+        self.ideal_channels(element, name);
     }
 
     fn clearance_joint(&mut self, loc: &str, c: &'s ClearanceJointSpec) {
@@ -340,18 +340,14 @@ impl<'s> Compiler<'s> {
         let element = self.model.elements[joint].clone();
         let first_point = self.joint_first_point(joint);
         let second = Marker { body: element.second, local: element.second_point };
-        let (driver_kind, constraint, unit, quantity) = match kind {
+        let (driver_kind, constraint) = match kind {
             ElementKind::RevoluteJoint => (
                 ElementKind::AngleDriver,
                 ConstraintKind::RelativeAngle(RelativeAngle { first: element.first, second: element.second, target: Target::Driven(function) }),
-                "N m",
-                "torque",
             ),
             ElementKind::TranslationalJoint => (
                 ElementKind::DisplacementDriver,
                 ConstraintKind::AxialProjection(AxialProjection { first: first_point, second, direction: element.axis, target: Target::Driven(function) }),
-                "N",
-                "force",
             ),
             _ => {
                 self.errors.push(format!("{loc}.joint"), format!("joint {:?} is a fixed joint and cannot be driven", d.joint));
@@ -359,8 +355,7 @@ impl<'s> Compiler<'s> {
             }
         };
         let index = self.add_element(&d.name, driver_kind, first_point, second, element.axis, vec![constraint]);
-        let description = format!("driver effort on the second body of joint {}", d.joint);
-        self.channel(&d.name, quantity, unit, description, Source::DriverEffort(index));
+        self.ideal_channels(index, &d.name);
     }
 
     /// The first point of an ideal joint, recovered from its constraints.
@@ -553,13 +548,10 @@ impl<'s> Compiler<'s> {
         }
     }
 
-    fn reaction_channels(&mut self, element: usize, name: &str, with_moment: bool) {
-        let d = "reaction on the second body from the first";
-        self.channel(name, "fx", "N", format!("{d}, x"), Source::Reaction(element, 0));
-        self.channel(name, "fy", "N", format!("{d}, y"), Source::Reaction(element, 1));
-        self.channel(name, "f", "N", format!("{d}, magnitude"), Source::Reaction(element, 2));
-        if with_moment {
-            self.channel(name, "moment", "N m", format!("{d}, moment about the joint point"), Source::Reaction(element, 3));
+    /// The channels the kind of ideal element `element` declares.
+    fn ideal_channels(&mut self, element: usize, name: &str) {
+        for (q, (quantity, unit, description)) in self.model.elements[element].kind.channels().iter().enumerate() {
+            self.channel(name, quantity, unit, description.to_string(), Source::Ideal(element, q as u8));
         }
     }
 }

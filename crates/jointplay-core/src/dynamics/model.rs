@@ -6,7 +6,7 @@ use super::joint_coordinates::JointTree;
 use super::constraint_jacobian::JacobianPattern;
 use super::layout::StateLayout;
 use crate::body::BodyKind;
-use crate::force::{ElementMemory, ForceElement};
+use crate::force::{ElementMemory, ForceElement, OutputInfo};
 use crate::joint::{ClearanceRevolute, Constraint};
 use crate::linalg::PatternLdl;
 
@@ -34,6 +34,35 @@ pub enum ElementKind {
     DisplacementDriver,
     /// A clearance joint held at its initial eccentricity while assembling.
     AssemblyLock,
+}
+
+/// Reaction channels of an ideal joint that leaves the relative rotation free.
+const PIN_REACTION_CHANNELS: [OutputInfo; 3] = [
+    ("fx", "N", "reaction on the second body from the first, x"),
+    ("fy", "N", "reaction on the second body from the first, y"),
+    ("f", "N", "reaction on the second body from the first, magnitude"),
+];
+
+/// Reaction channels of an ideal joint that also transmits a moment.
+const REACTION_CHANNELS: [OutputInfo; 4] = [
+    PIN_REACTION_CHANNELS[0],
+    PIN_REACTION_CHANNELS[1],
+    PIN_REACTION_CHANNELS[2],
+    ("moment", "N m", "reaction on the second body from the first, moment about the joint point"),
+];
+
+impl ElementKind {
+    /// Output channels: quantity, unit, description (reactions `0 fx, 1 fy, 2 |f|, 3 moment`;
+    /// a driver's one channel is its effort).
+    pub fn channels(self) -> &'static [OutputInfo] {
+        match self {
+            Self::RevoluteJoint => &PIN_REACTION_CHANNELS,
+            Self::TranslationalJoint | Self::FixedJoint => &REACTION_CHANNELS,
+            Self::AngleDriver => &[("torque", "N m", "driver effort on the second body of the driven joint")],
+            Self::DisplacementDriver => &[("force", "N", "driver effort along the axis on the second body of the driven joint")],
+            Self::AssemblyLock => &[],
+        }
+    }
 }
 
 /// An element that owns constraint equations (joint, driver or assembly lock).
