@@ -27,6 +27,7 @@
 // units are written in brackets, `[m]`, `[N]`: they are not links
 #![allow(rustdoc::broken_intra_doc_links)]
 
+pub mod beam;
 pub mod body;
 pub mod contact;
 pub mod dynamics;

@@ -1,0 +1,12 @@
+//! Flexible links as geometrically exact planar beams: the section
+//! (`section.rs`) and the element law (`element.rs`: strains, stress
+//! resultants, internal forces, tangent stiffness, consistent mass).
+
+mod element;
+mod section;
+
+pub use element::{BeamElement, BeamStrains, ElementOrder, MAX_ELEMENT_COORDINATES};
+pub use section::{BeamMaterial, BeamSection, SectionShape};
+
+#[cfg(test)]
+mod tests;
