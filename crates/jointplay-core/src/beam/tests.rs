@@ -135,6 +135,15 @@ fn deformed(element: &BeamElement) -> Vec<f64> {
         .collect()
 }
 
+/// Central difference of `f` by coordinate `j` of `q`, with step 1e-6.
+fn central_difference(q: &[f64], j: usize, f: impl Fn(&[f64]) -> Vec<f64>) -> Vec<f64> {
+    let h = 1e-6;
+    let (mut plus, mut minus) = (q.to_vec(), q.to_vec());
+    plus[j] += h;
+    minus[j] -= h;
+    f(&plus).iter().zip(f(&minus)).map(|(p, m)| (p - m) / (2.0 * h)).collect()
+}
+
 fn section() -> BeamSection {
     BeamSection { axial_stiffness: 3.0e6, shear_stiffness: 1.1e6, bending_stiffness: 2.0e3, mass_per_length: 1.2, rotary_inertia_per_length: 6e-4 }
 }
@@ -150,15 +159,13 @@ fn tangent_stiffness_is_the_derivative_of_the_internal_forces() {
         element.add_tangent_stiffness(&q, &mut k);
         let scale = k.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for j in 0..nc {
-            let h = 1e-6;
-            let (mut plus, mut minus) = (q.clone(), q.clone());
-            plus[j] += h;
-            minus[j] -= h;
-            let (mut fp, mut fm) = (vec![0.0; nc], vec![0.0; nc]);
-            element.add_internal_forces(&plus, &mut fp);
-            element.add_internal_forces(&minus, &mut fm);
-            for i in 0..nc {
-                let difference = (fp[i] - fm[i]) / (2.0 * h);
+            let forces = |q: &[f64]| {
+                let mut f = vec![0.0; nc];
+                element.add_internal_forces(q, &mut f);
+                f
+            };
+            let column = central_difference(&q, j, forces);
+            for (i, &difference) in column.iter().enumerate() {
                 assert!((k[i * nc + j] - difference).abs() < 1e-7 * scale, "{order:?} K[{i}][{j}] = {} against {difference}", k[i * nc + j]);
             }
         }
@@ -182,11 +189,7 @@ fn internal_forces_are_the_gradient_of_the_strain_energy() {
         element.add_internal_forces(&q, &mut f);
         let scale = f.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for j in 0..nc {
-            let h = 1e-6;
-            let (mut plus, mut minus) = (q.clone(), q.clone());
-            plus[j] += h;
-            minus[j] -= h;
-            let gradient = (element.strain_energy(&plus) - element.strain_energy(&minus)) / (2.0 * h);
+            let gradient = central_difference(&q, j, |q| vec![element.strain_energy(q)])[0];
             assert!((f[j] - gradient).abs() < 1e-7 * scale, "{order:?} f[{j}] = {} against dU/dq {gradient}", f[j]);
         }
     }
