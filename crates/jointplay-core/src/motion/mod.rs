@@ -11,12 +11,14 @@ mod constant_rate;
 mod cubic_step;
 mod polynomial;
 mod sine;
+mod speed_ramp;
 mod spline_table;
 
 pub use constant_rate::ConstantRate;
 pub use cubic_step::CubicStep;
 pub use polynomial::Polynomial;
 pub use sine::Sine;
+pub use speed_ramp::SpeedRamp;
 pub use spline_table::SplineTable;
 
 /// Value of a time function and its first two time derivatives.
@@ -52,6 +54,8 @@ pub enum TimeFunction {
     Sine(Sine),
     /// Natural cubic spline through tabulated points.
     Table(SplineTable),
+    /// Rate rising smoothly from zero to a final rate (a spin-up).
+    SpeedRamp(SpeedRamp),
 }
 
 impl TimeFunction {
@@ -64,6 +68,7 @@ impl TimeFunction {
             Self::CubicStep(function) => function.sample(t),
             Self::Sine(function) => function.sample(t),
             Self::Table(function) => function.sample(t),
+            Self::SpeedRamp(function) => function.sample(t),
         }
     }
 }

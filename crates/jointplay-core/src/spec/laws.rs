@@ -154,4 +154,11 @@ pub enum FunctionSpec {
         /// Values.
         values: Vec<f64>,
     },
+    /// Rate rising smoothly from zero at t = 0 to `final_rate` at `ramp_time`, constant after (a spin-up).
+    SpeedRamp {
+        /// Duration of the ramp [s].
+        ramp_time: f64,
+        /// Rate after the ramp (value per second).
+        final_rate: f64,
+    },
 }

@@ -3,7 +3,7 @@
 use crate::contact::{ContactStiffness, HertzCylinder, JohnsonLine, Material, NormalForceLaw, RogersAndrews};
 use crate::error::ModelErrors;
 use crate::friction::{AmbrosioCoulomb, FrictionLaw, RegularisedCoulomb, StictionFriction, Threlfall};
-use crate::motion::{ConstantRate, CubicStep, Polynomial, Sine, SplineTable, TimeFunction};
+use crate::motion::{ConstantRate, CubicStep, Polynomial, Sine, SpeedRamp, SplineTable, TimeFunction};
 use crate::spec::{ClearanceJointSpec, ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
 
 fn material(m: &MaterialSpec) -> Material {
@@ -99,6 +99,13 @@ pub(super) fn build_function(f: &FunctionSpec, loc: &str, errors: &mut ModelErro
         }
         FunctionSpec::Sine { offset, amplitude, frequency, phase } => finite(&[*offset, *amplitude, *frequency, *phase], errors)
             .then_some(TimeFunction::Sine(Sine { offset: *offset, amplitude: *amplitude, frequency: *frequency, phase: *phase })),
+        FunctionSpec::SpeedRamp { ramp_time, final_rate } => {
+            if !(ramp_time.is_finite() && *ramp_time > 0.0) {
+                errors.push(format!("{loc}.ramp_time"), format!("must be > 0 s, got {ramp_time}"));
+                return None;
+            }
+            finite(&[*final_rate], errors).then_some(TimeFunction::SpeedRamp(SpeedRamp { ramp_time: *ramp_time, final_rate: *final_rate }))
+        }
         FunctionSpec::Table { times, values } => SplineTable::new(times.clone(), values.clone())
             .map(TimeFunction::Table)
             .map_err(|message| errors.push(loc, message))
