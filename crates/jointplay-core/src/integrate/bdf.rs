@@ -327,10 +327,10 @@ impl Ndf {
         let k = self.order;
         let weighted = |this: &Self, j: usize, constant: f64| error_norm(constant, this.row(j), &this.y_new, &this.y_new, &this.tol);
         let lower = if k > 1 { weighted(self, k, self.coefficients.error_constant[k - 1]) } else { f64::INFINITY };
-        let higher = if k < MAX_ORDER { weighted(self, k + 2, self.coefficients.error_constant[k + 1]) } else { f64::INFINITY };
+        let higher = if k < self.opts.max_order.min(MAX_ORDER) { weighted(self, k + 2, self.coefficients.error_constant[k + 1]) } else { f64::INFINITY };
         let candidates = [(k - 1, lower.powf(-1.0 / k as f64)), (k, error.powf(-1.0 / (k + 1) as f64)), (k + 1, higher.powf(-1.0 / (k + 2) as f64))];
         let (order, best) = candidates.iter().copied().fold((k, 0.0), |acc, c| if c.1 > acc.1 { c } else { acc });
-        self.order = order.clamp(1, MAX_ORDER);
+        self.order = order.clamp(1, self.opts.max_order.min(MAX_ORDER));
         (safety * best).min(GROW_LIMIT)
     }
 }

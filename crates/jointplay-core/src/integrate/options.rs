@@ -39,6 +39,12 @@ pub struct IntegratorOptions {
     /// Spacing of output samples taken from the dense output [s]; `None`
     /// records every accepted step.
     pub output_step: Option<f64>,
+    /// Highest order of the numerical differentiation formulas, 1 to 5
+    /// (ignored by the other methods). Orders 1 and 2 are A-stable; the higher
+    /// ones lose stability near the imaginary axis, where the undamped
+    /// vibrations of a flexible body put their eigenvalues (Shampine and
+    /// Reichelt, "The MATLAB ODE suite", SIAM J. Sci. Comput. 18 (1997) 1-22, §2.2).
+    pub max_order: usize,
 }
 
 /// Smallest relative tolerance accepted: 100 machine epsilons, below which
@@ -60,6 +66,7 @@ impl Default for IntegratorOptions {
             min_step: 1e-14,
             max_steps: 10_000_000,
             output_step: None,
+            max_order: 5,
         }
     }
 }
@@ -83,6 +90,7 @@ impl IntegratorOptions {
             check(h.is_finite() && h > 0.0, "initial_step", "> 0 s and finite", fmt(h));
             check(h >= self.min_step, "initial_step", ">= min_step", fmt(h));
         }
+        check((1..=5).contains(&self.max_order), "max_order", "1 to 5", self.max_order.to_string());
         if let Some(dt) = self.output_step {
             check(dt.is_finite() && dt > 0.0, "output_step", "> 0 s and finite", fmt(dt));
         }

@@ -93,3 +93,12 @@ fn dense_output_samples_follow_the_closed_form() {
     let err = max_sample_error(&sys.samples, |t| vec![t.cos()]);
     assert!(err < tolerance_bound(Method::NumericalDifferentiation, 1e-8, &stats), "error {err:e}");
 }
+
+
+
+#[test]
+fn max_order_is_checked() {
+    assert!(IntegratorOptions { max_order: 6, ..IntegratorOptions::default() }.validate().unwrap_err().contains("max_order: must be 1 to 5"));
+    assert!(IntegratorOptions { max_order: 0, ..IntegratorOptions::default() }.validate().is_err());
+    assert!(IntegratorOptions { max_order: 2, ..IntegratorOptions::default() }.validate().is_ok());
+}
