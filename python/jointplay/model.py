@@ -99,7 +99,7 @@ class Model:
     def __init__(self, name: str = p.DEFAULT_NAME, gravity: Vector = p.MODEL.default("gravity")):
         self._spec: dict[str, Any] = {
             "name": name, "gravity": _arg("ModelTable", "gravity", gravity, "model"),
-            "ground_points": [], "bodies": [], "joints": [], "drivers": [], "forces": [],
+            "ground_points": [], "bodies": [], "beams": [], "joints": [], "drivers": [], "forces": [], "sensors": [],
         }
         self._core: Any = None
         self._run_inputs: tuple[dict, list] | None = None

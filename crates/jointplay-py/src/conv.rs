@@ -191,6 +191,19 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
                 e.set_item("mass", rigid.mass)?;
                 e.set_item("inertia", rigid.inertia)?;
             }
+            BodyKind::Beam(beam) => {
+                let section = &beam.elements[0].section;
+                e.set_item("kind", "beam")?;
+                e.set_item("mass", beam.mass())?;
+                e.set_item("length", beam.length)?;
+                e.set_item("elements", beam.elements.len())?;
+                e.set_item("order", format!("{:?}", beam.elements[0].order).to_lowercase())?;
+                e.set_item("nodes", beam.n_nodes())?;
+                e.set_item("axial_stiffness", section.axial_stiffness)?;
+                e.set_item("shear_stiffness", section.shear_stiffness)?;
+                e.set_item("bending_stiffness", section.bending_stiffness)?;
+                e.set_item("damping_time", beam.damping_time)?;
+            }
         }
         bodies.append(e)?;
     }

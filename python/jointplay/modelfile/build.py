@@ -35,7 +35,7 @@ class Builder:
         self.default_name = default_name
         self.problems: list[Problem] = []
         self.spec: dict[str, Any] = {"name": default_name, "gravity": [0.0, 0.0], "ground_points": [],
-                                     "bodies": [], "joints": [], "drivers": [], "forces": []}
+                                     "bodies": [], "beams": [], "joints": [], "drivers": [], "forces": [], "sensors": []}
         self.simulation: dict[str, Any] = {}
         self.points: dict[str, list[str]] = {"ground": []}
         self.joint_types: dict[str, str] = {}

@@ -51,7 +51,7 @@ impl ElementOrder {
     }
 
     /// Shape functions and their derivatives by `xi` in [-1, 1] (unused entries zero).
-    fn shape(self, xi: f64) -> ([f64; 3], [f64; 3]) {
+    pub fn shape(self, xi: f64) -> ([f64; 3], [f64; 3]) {
         match self {
             Self::Linear => ([0.5 * (1.0 - xi), 0.5 * (1.0 + xi), 0.0], [-0.5, 0.5, 0.0]),
             Self::Quadratic => ([0.5 * xi * (xi - 1.0), 1.0 - xi * xi, 0.5 * xi * (xi + 1.0)], [xi - 0.5, -2.0 * xi, xi + 0.5]),
@@ -196,9 +196,24 @@ impl BeamElement {
 
     /// Adds the internal forces `f(q)` [N, N, N m] of the element (`M q_ddot + f = f_ext`) to `out`.
     pub fn add_internal_forces(&self, q: &[f64], out: &mut [f64]) {
+        self.add_viscoelastic_forces(q, None, out);
+    }
+
+    /// Adds the internal forces with strain-rate (Kelvin-Voigt) damping to `out`:
+    /// the resultants of the strains `e + tau e_dot` [N, N, N m], where `e_dot`
+    /// is the strain rate of the nodal velocities `v` and `tau` the retardation
+    /// time [s]; `None` for none. A rigid motion has no strain rate, so it is not damped.
+    pub fn add_viscoelastic_forces(&self, q: &[f64], rate: Option<(&[f64], f64)>, out: &mut [f64]) {
         for &(xi, w) in self.order.stiffness_rule() {
             let (p, j) = self.kinematics(q, xi);
-            let (normal, shear, moment) = self.resultants(&p.strains);
+            let mut strains = p.strains;
+            if let Some((v, tau)) = rate {
+                let e_dot = self.strain_rates(&p, v);
+                strains.axial += tau * e_dot.axial;
+                strains.shear += tau * e_dot.shear;
+                strains.curvature += tau * e_dot.curvature;
+            }
+            let (normal, shear, moment) = self.resultants(&strains);
             let (s, c) = p.theta.sin_cos();
             let (fx, fy) = (normal * c - shear * s, normal * s + shear * c);
             let spin = normal * p.material[1] - shear * p.material[0];
@@ -208,6 +223,26 @@ impl BeamElement {
                 out[3 * a + 2] += w * j * (p.n[a] * spin + p.dn[a] * moment);
             }
         }
+    }
+
+    /// Strain rates at a point for nodal velocities `v`: `B(q) v` [1/s, 1/s, 1/(m s)].
+    fn strain_rates(&self, p: &PointKinematics, v: &[f64]) -> BeamStrains {
+        let (s, c) = p.theta.sin_cos();
+        let [m1, m2] = p.material;
+        let mut rate = BeamStrains::default();
+        for a in 0..self.order.n_nodes() {
+            let (vx, vy, omega) = (v[3 * a], v[3 * a + 1], v[3 * a + 2]);
+            rate.axial += p.dn[a] * (c * vx + s * vy) + p.n[a] * m2 * omega;
+            rate.shear += p.dn[a] * (-s * vx + c * vy) - p.n[a] * m1 * omega;
+            rate.curvature += p.dn[a] * omega;
+        }
+        rate
+    }
+
+    /// Strain rates `B(q) v` at `xi` for nodal coordinates `q` and velocities `v`.
+    pub fn strain_rates_at(&self, q: &[f64], v: &[f64], xi: f64) -> BeamStrains {
+        let (p, _) = self.kinematics(q, xi);
+        self.strain_rates(&p, v)
     }
 
     /// Adds the tangent stiffness `df/dq` (row-major, `n_coordinates` square) to `out`.

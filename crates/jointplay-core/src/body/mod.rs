@@ -15,16 +15,48 @@
 //! - its kinetic energy and gravitational potential, for the energy channels;
 //! - how its coordinates are scaled in the integrator's error control.
 //!
-//! The planar rigid body (`planar_rigid.rs`) is the first kind. Theory:
-//! `docs/theory/planar-formulation.md`, "Coordinates, bodies and markers".
+//! A marker's frame sits at a [`Site`] of its body: the body's reference
+//! frame, or (on a beam) a section interpolated from one element's nodes.
+//!
+//! Kinds: the planar rigid body (`planar_rigid.rs`) and the geometrically
+//! exact beam (`beam.rs`). Theory: `docs/theory/planar-formulation.md`,
+//! "Coordinates, bodies and markers", and `docs/theory/beam.md`.
 
+mod beam;
 mod planar_rigid;
 
+pub use beam::{BeamBody, BeamMesh};
 pub use planar_rigid::PlanarRigidBody;
 
 use std::ops::Range;
 
-use crate::dynamics::frame::{Frame, Vec2};
+use crate::dynamics::frame::{Frame, Marker, Vec2};
+use crate::linalg::PatternLdl;
+
+/// Where on its body a marker's frame is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Site {
+    /// The body's reference frame (a rigid body's frame at its centre of mass;
+    /// a beam's first node).
+    Reference,
+    /// A section of a beam, interpolated from the nodes of one element.
+    Section(SectionSite),
+}
+
+/// A section of a beam: an element and a point in it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SectionSite {
+    /// The element (counted from the beam's first end).
+    pub element: u32,
+    /// The element's first velocity coordinate, counted from the body's first.
+    pub first: u32,
+    /// Number of nodes of the element.
+    pub nodes: u8,
+    /// Natural coordinate `xi` in [-1, 1] along the element.
+    pub xi: f64,
+    /// The shape functions' values at `xi` (unused entries zero) [-].
+    pub weights: [f64; 3],
+}
 
 /// The mass block of one body kind, as the equations of motion use it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,6 +64,14 @@ pub enum MassBlock<'a> {
     /// Constant and diagonal: the entries of `M^-1` in velocity-coordinate order
     /// [1/kg, 1/(kg m^2)]. Factored once at compile time by inverting.
     ConstantDiagonal(&'a [f64]),
+    /// Constant and sparse (a beam's consistent mass): its `L D L^T` factor,
+    /// made once at compile time, and the elimination program of its pattern.
+    ConstantFactored {
+        /// The factorisation's program.
+        program: &'a PatternLdl,
+        /// The factor's values.
+        factor: &'a [f64],
+    },
 }
 
 /// Every kind of body.
@@ -39,6 +79,8 @@ pub enum MassBlock<'a> {
 pub enum BodyKind {
     /// Planar rigid body with its frame at the centre of mass, `(x, y, phi)`.
     PlanarRigid(PlanarRigidBody),
+    /// Geometrically exact planar beam, nodes `(x, y, theta)` along it.
+    Beam(BeamBody),
 }
 
 impl BodyKind {
@@ -46,6 +88,7 @@ impl BodyKind {
     pub fn nq(&self) -> usize {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::NQ,
+            Self::Beam(b) => b.n_coordinates(),
         }
     }
 
@@ -53,6 +96,7 @@ impl BodyKind {
     pub fn nv(&self) -> usize {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::NV,
+            Self::Beam(b) => b.n_coordinates(),
         }
     }
 
@@ -63,71 +107,87 @@ impl BodyKind {
     pub fn frame(&self, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::frame(q, v, previous),
+            Self::Beam(_) => BeamBody::section_frame(&BeamBody::FIRST_NODE, q, v, previous),
         }
     }
 
-    /// Jacobian of the global velocity of the marker point `local` [m] (body
-    /// frame) by the velocity coordinates the marker moves with
+    /// Frame of the marker site `site` (pose and velocity), as [`Self::frame`].
+    #[inline]
+    pub fn site_frame(&self, site: &Site, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        match (self, site) {
+            (Self::Beam(_), Site::Section(section)) => BeamBody::section_frame(section, q, v, previous),
+            _ => self.frame(q, v, previous),
+        }
+    }
+
+    /// Jacobian of the global velocity of `marker`'s point (its frame is `frame`)
+    /// by the velocity coordinates the marker moves with
     /// ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
     #[inline]
-    pub fn marker_jacobian(&self, frame: &Frame, local: Vec2, jx: &mut [f64], jy: &mut [f64]) {
+    pub fn marker_jacobian(&self, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, local, jx, jy),
+            Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, marker.local, jx, jy),
+            Self::Beam(_) => BeamBody::marker_jacobian(frame, marker, jx, jy),
         }
     }
 
-    /// The velocity coordinates (counted from the body's first) that a marker
-    /// at `local` [m] moves with: the width of its constraint-Jacobian block.
-    /// Fixed for a marker, so the Jacobian's pattern is known at compile time.
-    pub fn marker_coordinates(&self, _local: Vec2) -> Range<usize> {
+    /// The velocity coordinates (counted from the body's first) that `marker`
+    /// moves with: the width of its constraint-Jacobian block. Fixed for a
+    /// marker, so the Jacobian's pattern is known at compile time.
+    pub fn marker_coordinates(&self, marker: &Marker) -> Range<usize> {
         match self {
             Self::PlanarRigid(_) => 0..PlanarRigidBody::NV,
+            Self::Beam(_) => BeamBody::marker_coordinates(marker),
         }
     }
 
-    /// Adds `along . d(v_P)/d(v)`, the Jacobian of the marker point's velocity
+    /// Adds `along . d(v_P)/d(v)`, the Jacobian of `marker`'s point velocity
     /// projected on `along`, to the marker's block `out` (see
     /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`].
     #[inline]
-    pub fn add_marker_jacobian(&self, frame: &Frame, local: Vec2, along: Vec2, out: &mut [f64]) {
+    pub fn add_marker_jacobian(&self, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) => PlanarRigidBody::add_marker_jacobian(frame, local, along, out),
+            Self::PlanarRigid(_) => PlanarRigidBody::add_marker_jacobian(frame, marker.local, along, out),
+            Self::Beam(_) => BeamBody::add_marker_jacobian(frame, marker, along, out),
         }
     }
 
-    /// Adds `scale d(omega_P)/d(v)`, the Jacobian of the marker's angular
+    /// Adds `scale d(omega_P)/d(v)`, the Jacobian of `marker`'s angular
     /// velocity, to the marker's block `out` [rad/rad times `scale`].
     #[inline]
-    pub fn add_marker_angle_jacobian(&self, _local: Vec2, scale: f64, out: &mut [f64]) {
+    pub fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => out[2] += scale,
+            Self::Beam(_) => BeamBody::add_marker_angle_jacobian(marker, scale, out),
         }
     }
 
-    /// The marker point's acceleration at zero coordinate accelerations (the
-    /// velocity-dependent part, `-omega^2 A s` for a rigid body) [m/s^2].
+    /// `marker`'s point acceleration at zero coordinate accelerations (the
+    /// velocity-dependent part, `-omega^2 A s` for a rigid body and for a beam's
+    /// section frame, whose coordinates are linear in the nodes') [m/s^2].
     #[inline]
-    pub fn marker_bias_acceleration(&self, frame: &Frame, local: Vec2) -> Vec2 {
+    pub fn marker_bias_acceleration(&self, frame: &Frame, marker: &Marker) -> Vec2 {
         match self {
-            Self::PlanarRigid(_) => PlanarRigidBody::marker_acceleration(frame, &[0.0; 3], local),
+            Self::PlanarRigid(_) | Self::Beam(_) => PlanarRigidBody::marker_acceleration(frame, &[0.0; 3], marker.local),
         }
     }
 
-    /// The marker's angular acceleration at zero coordinate accelerations
-    /// (zero for a rigid body) [rad/s^2].
+    /// `marker`'s angular acceleration at zero coordinate accelerations (zero
+    /// for a rigid body and for a beam's section) [rad/s^2].
     #[inline]
-    pub fn marker_bias_angular_acceleration(&self, _frame: &Frame, _local: Vec2) -> f64 {
+    pub fn marker_bias_angular_acceleration(&self, _frame: &Frame, _marker: &Marker) -> f64 {
         match self {
-            Self::PlanarRigid(_) => 0.0,
+            Self::PlanarRigid(_) | Self::Beam(_) => 0.0,
         }
     }
 
-    /// Global acceleration [m/s^2] of the marker point `local` [m] from the
-    /// body's frame and its velocity-coordinate accelerations `a`.
+    /// Global acceleration [m/s^2] of `marker`'s point from its frame and the
+    /// body's velocity-coordinate accelerations `a`.
     #[inline]
-    pub fn marker_acceleration(&self, frame: &Frame, a: &[f64], local: Vec2) -> Vec2 {
+    pub fn marker_acceleration(&self, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
         match self {
-            Self::PlanarRigid(_) => PlanarRigidBody::marker_acceleration(frame, a, local),
+            Self::PlanarRigid(_) => PlanarRigidBody::marker_acceleration(frame, a, marker.local),
+            Self::Beam(_) => BeamBody::marker_acceleration(frame, a, marker),
         }
     }
 
@@ -136,6 +196,7 @@ impl BodyKind {
     pub fn mass_block(&self) -> MassBlock<'_> {
         match self {
             Self::PlanarRigid(b) => MassBlock::ConstantDiagonal(b.inverse_mass()),
+            Self::Beam(b) => b.mass_block(),
         }
     }
 
@@ -148,30 +209,39 @@ impl BodyKind {
                     *o = w * f;
                 }
             }
+            MassBlock::ConstantFactored { program, factor } => {
+                out.copy_from_slice(f);
+                program.solve(factor, out);
+            }
         }
     }
 
     /// Whether [`Self::position_rates`] is the identity `q_dot = v` (the engine then copies `v`).
     pub fn has_identity_position_rates(&self) -> bool {
         match self {
-            Self::PlanarRigid(_) => true,
+            Self::PlanarRigid(_) | Self::Beam(_) => true,
         }
     }
 
-    /// Whether [`Self::add_inertial_forces`] adds anything (the engine skips it otherwise).
-    pub fn has_inertial_forces(&self) -> bool {
+    /// Whether [`Self::add_body_forces`] adds anything (the engine skips it otherwise).
+    pub fn has_body_forces(&self) -> bool {
         match self {
             Self::PlanarRigid(_) => false,
+            Self::Beam(_) => true,
         }
     }
 
-    /// Adds the velocity-dependent inertial forces (gyroscopic, centrifugal
-    /// terms of a moving frame) to the body's generalised forces `out` [N, N m].
+    /// Adds the forces a body exerts on its own coordinates to its generalised
+    /// forces `out` [N, N m]: velocity-dependent inertial forces (gyroscopic,
+    /// centrifugal terms of a moving frame) and, for a deformable body, minus its
+    /// internal elastic and damping forces.
     #[inline]
-    pub fn add_inertial_forces(&self, _q: &[f64], _v: &[f64], _out: &mut [f64]) {
+    pub fn add_body_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]) {
         match self {
             // (frame at the centre of mass, planar: M is constant, no such terms)
             Self::PlanarRigid(_) => {}
+            // (nodal coordinates in the inertial frame: M is constant, no inertial terms)
+            Self::Beam(b) => b.subtract_internal_forces(q, v, out),
         }
     }
 
@@ -179,7 +249,7 @@ impl BodyKind {
     #[inline]
     pub fn position_rates(&self, _q: &[f64], v: &[f64], qdot: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) => qdot.copy_from_slice(v),
+            Self::PlanarRigid(_) | Self::Beam(_) => qdot.copy_from_slice(v),
         }
     }
 
@@ -188,7 +258,7 @@ impl BodyKind {
     #[inline]
     pub fn displace(&self, q: &mut [f64], dv: &[f64]) {
         match self {
-            Self::PlanarRigid(_) => {
+            Self::PlanarRigid(_) | Self::Beam(_) => {
                 for (q, d) in q.iter_mut().zip(dv) {
                     *q += d;
                 }
@@ -197,19 +267,21 @@ impl BodyKind {
     }
 
     /// Adds the generalised force of the force `f` [N] at the global point `p` [m]
-    /// to the body's generalised forces `out`.
+    /// (a point moving with `marker`, whose frame is `frame`) to the body's generalised forces `out`.
     #[inline]
-    pub fn add_point_force(&self, frame: &Frame, p: Vec2, f: Vec2, out: &mut [f64]) {
+    pub fn add_point_force(&self, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_point_force(frame, p, f, out),
+            Self::Beam(_) => BeamBody::add_point_force(frame, marker, p, f, out),
         }
     }
 
-    /// Adds the generalised force of a moment `m` [N m] (counter-clockwise) to `out`.
+    /// Adds the generalised force of a moment `m` [N m] (counter-clockwise) on `marker`'s frame to `out`.
     #[inline]
-    pub fn add_moment(&self, m: f64, out: &mut [f64]) {
+    pub fn add_moment(&self, marker: &Marker, m: f64, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_moment(m, out),
+            Self::Beam(_) => BeamBody::add_moment(marker, m, out),
         }
     }
 
@@ -218,13 +290,15 @@ impl BodyKind {
     pub fn add_gravity(&self, g: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(b) => b.add_gravity(g, out),
+            Self::Beam(b) => b.add_gravity(g, out),
         }
     }
 
-    /// Gravitational potential energy `-m g . r_G` [J] from `q`.
-    pub fn gravity_potential_energy(&self, g: Vec2, q: &[f64]) -> f64 {
+    /// Potential energy [J] from `q`: of gravity, `-integral g . r dm`, and the strain energy of a deformable body.
+    pub fn potential_energy(&self, g: Vec2, q: &[f64]) -> f64 {
         match self {
             Self::PlanarRigid(b) => b.gravity_potential_energy(g, q),
+            Self::Beam(b) => b.gravity_potential_energy(g, q) + b.strain_energy(q),
         }
     }
 
@@ -232,6 +306,7 @@ impl BodyKind {
     pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
         match self {
             Self::PlanarRigid(b) => b.kinetic_energy(v),
+            Self::Beam(b) => b.kinetic_energy(v),
         }
     }
 
@@ -239,7 +314,7 @@ impl BodyKind {
     /// absolute tolerance (1 for metres, radians and their rates).
     pub fn tolerance_scales(&self, q: &mut [f64], v: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) => {
+            Self::PlanarRigid(_) | Self::Beam(_) => {
                 q.fill(1.0);
                 v.fill(1.0);
             }
@@ -247,24 +322,33 @@ impl BodyKind {
     }
 
     /// Names, units and descriptions of the coordinates, as channel
-    /// quantities: position, velocity and acceleration channels.
-    pub fn coordinate_channels(&self) -> &'static [CoordinateChannels] {
+    /// quantities: position, velocity and acceleration channels, in coordinate order.
+    pub fn coordinate_channels(&self) -> Vec<CoordinateChannels> {
         match self {
-            Self::PlanarRigid(_) => &PlanarRigidBody::CHANNELS,
+            Self::PlanarRigid(_) => PlanarRigidBody::CHANNELS.to_vec(),
+            Self::Beam(b) => b.coordinate_channels(),
         }
     }
 }
 
+/// Quantity, unit and description of one channel.
+pub type ChannelName = (std::borrow::Cow<'static, str>, &'static str, std::borrow::Cow<'static, str>);
+
+/// A channel's name from static text.
+pub const fn channel(quantity: &'static str, unit: &'static str, description: &'static str) -> ChannelName {
+    (std::borrow::Cow::Borrowed(quantity), unit, std::borrow::Cow::Borrowed(description))
+}
+
 /// The channels of one velocity coordinate (and of the position coordinate
 /// at the same place while `nq == nv`).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct CoordinateChannels {
     /// Position: quantity, unit, description.
-    pub position: (&'static str, &'static str, &'static str),
+    pub position: ChannelName,
     /// Velocity: quantity, unit, description.
-    pub velocity: (&'static str, &'static str, &'static str),
+    pub velocity: ChannelName,
     /// Acceleration: quantity, unit, description.
-    pub acceleration: (&'static str, &'static str, &'static str),
+    pub acceleration: ChannelName,
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! `q = (x, y, phi)` [m, m, rad], velocities `v = (vx, vy, omega)` [m/s, m/s, rad/s],
 //! constant diagonal mass `diag(m, m, J)`.
 
-use super::CoordinateChannels;
+use super::{channel, CoordinateChannels};
 use crate::dynamics::frame::{cross, perp, Frame, Vec2};
 
 /// Mass properties of a planar rigid body.
@@ -25,19 +25,19 @@ impl PlanarRigidBody {
     /// Channels of the coordinates, in coordinate order.
     pub const CHANNELS: [CoordinateChannels; 3] = [
         CoordinateChannels {
-            position: ("x", "m", "centre of mass x"),
-            velocity: ("vx", "m/s", "centre of mass velocity x"),
-            acceleration: ("ax", "m/s^2", "centre of mass acceleration x"),
+            position: channel("x", "m", "centre of mass x"),
+            velocity: channel("vx", "m/s", "centre of mass velocity x"),
+            acceleration: channel("ax", "m/s^2", "centre of mass acceleration x"),
         },
         CoordinateChannels {
-            position: ("y", "m", "centre of mass y"),
-            velocity: ("vy", "m/s", "centre of mass velocity y"),
-            acceleration: ("ay", "m/s^2", "centre of mass acceleration y"),
+            position: channel("y", "m", "centre of mass y"),
+            velocity: channel("vy", "m/s", "centre of mass velocity y"),
+            acceleration: channel("ay", "m/s^2", "centre of mass acceleration y"),
         },
         CoordinateChannels {
-            position: ("angle", "rad", "orientation"),
-            velocity: ("omega", "rad/s", "angular velocity"),
-            acceleration: ("alpha", "rad/s^2", "angular acceleration"),
+            position: channel("angle", "rad", "orientation"),
+            velocity: channel("omega", "rad/s", "angular velocity"),
+            acceleration: channel("alpha", "rad/s^2", "angular acceleration"),
         },
     ];
 

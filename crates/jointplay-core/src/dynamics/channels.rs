@@ -3,6 +3,7 @@
 
 use super::frame::cross;
 use super::model::ElementKind;
+use crate::body::BodyKind;
 use super::{Model, Workspace};
 
 /// Name, unit and meaning of one channel.
@@ -29,6 +30,8 @@ pub(crate) enum Source {
     Ideal(usize, u8),
     /// Force element (clearance joints included): the index of the output among its channels.
     Force(usize, u8),
+    /// Strain gauge: the index of the output among [`super::model::StrainGauge::CHANNELS`].
+    Gauge(usize, u8),
     /// 0 kinetic, 1 potential, 2 total mechanical energy.
     Energy(u8),
 }
@@ -61,9 +64,25 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
             _ => reaction_value(model, e, which, ws),
         },
         Source::Force(f, which) => model.forces[f].output(which as usize, &ws.frames, &ws.element_work[f]),
+        Source::Gauge(k, which) => gauge_value(model, k, which, y),
         Source::Energy(0) => energy[0],
         Source::Energy(1) => energy[1],
         Source::Energy(_) => energy[0] + energy[1],
+    }
+}
+
+/// Output `which` of strain gauge `k` at the state `y`.
+fn gauge_value(model: &Model, k: usize, which: u8, y: &[f64]) -> f64 {
+    let gauge = &model.gauges[k];
+    let BodyKind::Beam(beam) = &model.bodies[gauge.body.0 - 1].kind else { unreachable!("a strain gauge sits on a beam") };
+    let address = &model.layout.bodies[gauge.body.0 - 1];
+    let (q, v, _) = model.layout.split(y);
+    let (strains, resultants) = beam.section_state(&gauge.site, &q[address.q_range()], &v[address.v_range()]);
+    match which {
+        0..=2 => resultants[which as usize],
+        3 => strains.axial - gauge.fibre * strains.curvature,
+        4 => strains.axial,
+        _ => strains.curvature,
     }
 }
 
@@ -126,13 +145,13 @@ fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
     }
 }
 
-/// Kinetic and potential energy [J] of the state y (gravity, force elements and contacts).
+/// Kinetic and potential energy [J] of the state y (gravity, strain of flexible bodies, force elements and contacts).
 fn kinetic_and_potential_energy(model: &Model, y: &[f64], ws: &Workspace) -> [f64; 2] {
     let (q, v, _) = model.layout.split(y);
     let bodies = model.bodies.iter().zip(&model.layout.bodies);
     let kinetic: f64 = bodies.clone().map(|(b, a)| b.kind.kinetic_energy(&v[a.v_range()])).sum();
-    let gravity: f64 = bodies.map(|(b, a)| b.kind.gravity_potential_energy(model.gravity, &q[a.q_range()])).sum();
+    let own: f64 = bodies.map(|(b, a)| b.kind.potential_energy(model.gravity, &q[a.q_range()])).sum();
     let elements: f64 = model.forces.iter().zip(&ws.element_work).map(|(element, work)| element.potential_energy(work)).sum();
-    let potential = gravity + elements;
+    let potential = own + elements;
     [kinetic, potential]
 }

@@ -5,16 +5,18 @@ use std::collections::HashMap;
 
 use super::channels::{Channel, ChannelInfo, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
-use super::frame::{perp, BodyIndex, Marker, Vec2};
-use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm};
-use crate::body::{BodyKind, MassBlock, PlanarRigidBody};
+use super::frame::{perp, BodyIndex, Frame, Marker, Vec2};
+use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
+use crate::body::{BodyKind, MassBlock, PlanarRigidBody, SectionSite, Site};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
 use super::joint_coordinates::JointTree;
-use crate::spec::{ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, GROUND};
+use crate::spec::{BeamSpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, SensorSpec, GROUND};
 
+#[path = "compile/beams.rs"]
+mod beams;
 #[path = "compile/hydraulic.rs"]
 mod hydraulic;
 #[path = "compile/laws.rs"]
@@ -23,6 +25,7 @@ mod laws;
 mod lubrication;
 
 use laws::{build_friction, build_function, build_normal_force_law, build_stiffness};
+use beams::build_beam;
 use hydraulic::build_cylinder;
 use lubrication::build_lubrication;
 
@@ -37,6 +40,7 @@ pub fn compile(spec: &ModelSpec) -> Result<Model, ModelErrors> {
     c.joints();
     c.drivers();
     c.forces();
+    c.sensors();
     c.locks();
     c.finish()
 }
@@ -60,6 +64,8 @@ impl<'s> Compiler<'s> {
             name: spec.name.clone(),
             bodies: Vec::new(),
             points: Vec::new(),
+            sections: Vec::new(),
+            gauges: Vec::new(),
             gravity: Vec2::new(spec.gravity[0], spec.gravity[1]),
             layout: Default::default(),
             constraints: Vec::new(),
@@ -130,20 +136,73 @@ impl<'s> Compiler<'s> {
             }
             self.body_channels(k, &b.name);
         }
+        for (k, b) in self.spec.beams.iter().enumerate() {
+            self.beam(&format!("beams[{k}]"), b);
+        }
+    }
+
+    /// A beam: its body, coordinates, points (`start`, `end` and the described ones) and channels.
+    fn beam(&mut self, loc: &str, b: &'s BeamSpec) {
+        self.claim_name(&b.name, &format!("{loc}.name"));
+        let Some(beam) = build_beam(b, loc, &mut self.errors) else { return };
+        let index = BodyIndex(self.model.bodies.len() + 1);
+        self.body_index.insert(&b.name, index);
+        self.model.initial_coordinates.extend(beam.reference_coordinates());
+        self.model.initial_velocities.extend(beam.rigid_velocities(Vec2::new(b.velocity[0], b.velocity[1]), b.angular_velocity));
+        let (start, end) = (Some(0.0), Some(beam.length));
+        let kind = BodyKind::Beam(beam);
+        self.model.layout.push_body(&kind);
+        self.model.bodies.push(Body { name: b.name.clone(), kind });
+        let named = [("start", start, format!("{loc}.start")), ("end", end, format!("{loc}.end"))];
+        let described = b.points.iter().enumerate().map(|(i, p)| (p.name.as_str(), Some(p.arclength), format!("{loc}.points[{i}]")));
+        for (name, arclength, location) in named.into_iter().chain(described) {
+            self.add_beam_point(index, &b.name, name, arclength.unwrap_or(f64::NAN), location);
+        }
+        self.body_channels(index.0 - 1, &b.name);
+    }
+
+    /// A named point on the axis of beam `body` at `arclength` [m] from its first end.
+    fn add_beam_point(&mut self, body: BodyIndex, body_name: &str, name: &str, arclength: f64, location: String) {
+        let BodyKind::Beam(beam) = &self.model.bodies[body.0 - 1].kind else { unreachable!("a beam point on a beam") };
+        let site = match beam.site_at(arclength) {
+            Ok(site) => site,
+            Err(message) => {
+                self.errors.push(format!("{location}.arclength"), message);
+                return;
+            }
+        };
+        let marker = self.section_marker(body, site, Vec2::zeros());
+        self.name_point(body_name, name, marker, location);
+    }
+
+    /// A marker at a section of a flexible body (with its frame, shared by the markers at the same section).
+    fn section_marker(&mut self, body: BodyIndex, site: SectionSite, local: Vec2) -> Marker {
+        let total_bodies = self.spec.bodies.len() + self.spec.beams.len();
+        let section = Section { body, site };
+        let k = self.model.sections.iter().position(|s| *s == section).unwrap_or_else(|| {
+            self.model.sections.push(section);
+            self.model.sections.len() - 1
+        });
+        Marker { body, frame: 1 + total_bodies + k, site: Site::Section(site), local }
     }
 
     fn add_point(&mut self, body: BodyIndex, body_name: &str, name: &str, position: [f64; 2], location: String) {
+        if position.iter().any(|v| !v.is_finite()) {
+            self.errors.push(format!("{location}.position"), format!("must be finite, got {position:?}"));
+        }
+        self.name_point(body_name, name, Marker::at(body, Vec2::new(position[0], position[1])), location);
+    }
+
+    /// Names `marker` `"<body_name>.<name>"`.
+    fn name_point(&mut self, body_name: &str, name: &str, marker: Marker, location: String) {
         let full = format!("{body_name}.{name}");
         if name.is_empty() || name.contains('.') {
             self.errors.push(format!("{location}.name"), format!("must be a non-empty name without '.', got {name:?}"));
-        } else if position.iter().any(|v| !v.is_finite()) {
-            self.errors.push(format!("{location}.position"), format!("must be finite, got {position:?}"));
         }
-        let point = Marker { body, local: Vec2::new(position[0], position[1]) };
-        if self.points.insert(full.clone(), point).is_some() {
+        if self.points.insert(full.clone(), marker).is_some() {
             self.errors.push(format!("{location}.name"), format!("point {full:?} is defined twice"));
         }
-        self.model.points.push((full, body, point.local));
+        self.model.points.push((full, marker));
     }
 
     fn point(&mut self, reference: &str, location: String) -> Option<Marker> {
@@ -167,24 +226,27 @@ impl<'s> Compiler<'s> {
         found
     }
 
-    /// Global position [m] of a marker at the positions of the description.
-    fn initial_point(&self, marker: Marker) -> Vec2 {
-        if marker.body.is_ground() {
-            return marker.local;
-        }
-        let b = &self.spec.bodies[marker.body.0 - 1];
-        let (sin, cos) = b.angle.sin_cos();
-        Vec2::new(b.position[0], b.position[1]) + Vec2::new(cos * marker.local.x - sin * marker.local.y, sin * marker.local.x + cos * marker.local.y)
+    /// The frame of a marker at the positions of the description.
+    fn initial_frame(&self, marker: Marker) -> Frame {
+        let Some(address) = self.model.layout.body(marker.body) else { return Frame::GROUND };
+        let (q, v) = (&self.model.initial_coordinates[address.q_range()], &self.model.initial_velocities[address.v_range()]);
+        self.model.bodies[marker.body.0 - 1].kind.site_frame(&marker.site, q, v, &Frame::GROUND)
     }
 
-    fn initial_angle(&self, body: BodyIndex) -> f64 {
-        if body.is_ground() { 0.0 } else { self.spec.bodies[body.0 - 1].angle }
+    /// Global position [m] of a marker at the positions of the description.
+    fn initial_point(&self, marker: Marker) -> Vec2 {
+        self.initial_frame(marker).point(marker.local)
+    }
+
+    /// Angle [rad] of a marker's frame at the positions of the description.
+    fn initial_angle(&self, marker: Marker) -> f64 {
+        self.initial_frame(marker).angle
     }
 
     /// The velocity coordinates a marker's constraint rows span (`None` on the ground).
     fn marker_columns(&self, marker: Marker) -> Option<MarkerColumns> {
         let address = self.model.layout.body(marker.body)?;
-        let within = self.model.bodies[marker.body.0 - 1].kind.marker_coordinates(marker.local);
+        let within = self.model.bodies[marker.body.0 - 1].kind.marker_coordinates(&marker);
         Some(MarkerColumns { body: marker.body.0 - 1, body_columns: address.v_range(), columns: address.v + within.start..address.v + within.end })
     }
 
@@ -243,8 +305,8 @@ impl<'s> Compiler<'s> {
         if !self.distinct_bodies(loc, a, b) {
             return;
         }
-        let relative_angle = self.initial_angle(b.body) - self.initial_angle(a.body);
-        let lock_rotation = ConstraintKind::RelativeAngle(RelativeAngle { first: a.body, second: b.body, target: Target::Fixed(relative_angle) });
+        let relative_angle = self.initial_angle(b) - self.initial_angle(a);
+        let lock_rotation = ConstraintKind::RelativeAngle(RelativeAngle { first: a, second: b, target: Target::Fixed(relative_angle) });
         let coincide = ConstraintKind::PointCoincidence(PointCoincidence { first: a, second: b, offset: Vec2::zeros() });
         let mut unit_axis = Vec2::zeros();
         let kinds = match kind {
@@ -338,12 +400,11 @@ impl<'s> Compiler<'s> {
         };
         let Some(function) = function else { return };
         let element = self.model.elements[joint].clone();
-        let first_point = self.joint_first_point(joint);
-        let second = Marker { body: element.second, local: element.second_point };
+        let [first_point, second] = self.joint_points(joint);
         let (driver_kind, constraint) = match kind {
             ElementKind::RevoluteJoint => (
                 ElementKind::AngleDriver,
-                ConstraintKind::RelativeAngle(RelativeAngle { first: element.first, second: element.second, target: Target::Driven(function) }),
+                ConstraintKind::RelativeAngle(RelativeAngle { first: first_point, second, target: Target::Driven(function) }),
             ),
             ElementKind::TranslationalJoint => (
                 ElementKind::DisplacementDriver,
@@ -358,16 +419,9 @@ impl<'s> Compiler<'s> {
         self.ideal_channels(index, &d.name);
     }
 
-    /// The first point of an ideal joint, recovered from its constraints.
-    fn joint_first_point(&self, element: usize) -> Marker {
-        for k in self.model.elements[element].constraints.clone() {
-            match &self.model.constraints[k].kind {
-                ConstraintKind::PointCoincidence(c) => return c.first,
-                ConstraintKind::AxialProjection(c) => return c.first,
-                ConstraintKind::RelativeAngle(_) => {}
-            }
-        }
-        Marker { body: self.model.elements[element].first, local: Vec2::zeros() }
+    /// The first and the second point of an ideal joint (its constraints' markers).
+    fn joint_points(&self, element: usize) -> [Marker; 2] {
+        self.model.constraints[self.model.elements[element].constraints.start].kind.markers()
     }
 
     fn forces(&mut self) {
@@ -414,7 +468,7 @@ impl<'s> Compiler<'s> {
                 let a = self.body(first, format!("{loc}.first"));
                 let b = self.body(second, format!("{loc}.second"));
                 self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping")], loc);
-                let element = RotationalSpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_angle: *free_angle };
+                let element = RotationalSpringDamper { first: Marker::reference(a?), second: Marker::reference(b?), stiffness: *stiffness, damping: *damping, free_angle: *free_angle };
                 Some((name, ForceElement::RotationalSpringDamper(element), Vec::new()))
             }
             ForceSpec::PointForce { name, point, fx, fy } => {
@@ -429,7 +483,7 @@ impl<'s> Compiler<'s> {
                 self.claim_name(name, &format!("{loc}.name"));
                 let b = self.body(body, format!("{loc}.body"));
                 let torque = build_function(torque, &format!("{loc}.torque"), &mut self.errors);
-                Some((name, ForceElement::Torque(AppliedTorque { body: b?, torque: torque? }), Vec::new()))
+                Some((name, ForceElement::Torque(AppliedTorque { body: Marker::reference(b?), torque: torque? }), Vec::new()))
             }
             ForceSpec::HydraulicCylinder(c) => {
                 self.claim_name(&c.name, &format!("{loc}.name"));
@@ -440,6 +494,33 @@ impl<'s> Compiler<'s> {
                 let (element, states) = build_cylinder(c, (a, b), length, loc, &mut self.errors)?;
                 Some((&c.name, ForceElement::HydraulicCylinder(element), states))
             }
+        }
+    }
+
+    fn sensors(&mut self) {
+        for (k, sensor) in self.spec.sensors.iter().enumerate() {
+            let loc = format!("sensors[{k}]");
+            match sensor {
+                SensorSpec::StrainGauge { name, point, fibre } => self.strain_gauge(&loc, name, point, *fibre),
+            }
+        }
+    }
+
+    /// A strain gauge at a beam's point, with its channels.
+    fn strain_gauge(&mut self, loc: &str, name: &str, point: &str, fibre: f64) {
+        self.claim_name(name, &format!("{loc}.name"));
+        let Some(marker) = self.point(point, format!("{loc}.point")) else { return };
+        if !fibre.is_finite() {
+            self.errors.push(format!("{loc}.fibre"), format!("must be finite, got {fibre}"));
+        }
+        let Site::Section(site) = marker.site else {
+            self.errors.push(format!("{loc}.point"), format!("must be a point of a beam, got {point:?} on the rigid body {:?}", self.model.body_name(marker.body)));
+            return;
+        };
+        let index = self.model.gauges.len();
+        self.model.gauges.push(StrainGauge { name: name.to_string(), body: marker.body, site, fibre });
+        for (q, (quantity, unit, description)) in StrainGauge::CHANNELS.iter().enumerate() {
+            self.channel(name, quantity, unit, description.to_string(), Source::Gauge(index, q as u8));
         }
     }
 
@@ -512,6 +593,7 @@ impl<'s> Compiler<'s> {
         for body in &self.model.bodies {
             match body.kind.mass_block() {
                 MassBlock::ConstantDiagonal(w) => diagonal.extend_from_slice(w),
+                MassBlock::ConstantFactored { .. } => return,
             }
         }
         self.model.diagonal_inverse_mass = Some(diagonal);
@@ -523,7 +605,7 @@ impl<'s> Compiler<'s> {
         self.analyse_constraint_matrix();
         self.diagonal_inverse_mass();
         self.model.joint_tree = JointTree::of(&self.model);
-        for (q, (quantity, description)) in [("kinetic_energy", "kinetic energy"), ("potential_energy", "potential energy (gravity, springs, contact)"), ("energy", "total mechanical energy")].iter().enumerate() {
+        for (q, (quantity, description)) in [("kinetic_energy", "kinetic energy"), ("potential_energy", "potential energy (gravity, strain, springs, contact)"), ("energy", "total mechanical energy")].iter().enumerate() {
             self.channel("system", quantity, "J", description.to_string(), Source::Energy(q as u8));
         }
         self.errors.into_result(self.model)
@@ -541,7 +623,7 @@ impl<'s> Compiler<'s> {
         let sources = [Source::Coordinate as fn(usize) -> Source, Source::Velocity, Source::Acceleration];
         for (which, source) in sources.into_iter().enumerate() {
             for (i, c) in coordinates.iter().enumerate() {
-                let (quantity, unit, description) = [c.position, c.velocity, c.acceleration][which];
+                let (quantity, unit, description) = [&c.position, &c.velocity, &c.acceleration][which];
                 let first = if which == 0 { address.q } else { address.v };
                 self.channel(name, quantity, unit, description.to_string(), source(first + i));
             }

@@ -36,7 +36,7 @@ fn two_clearance_joints() -> Model {
             "points": [{"name": "top", "position": [0, 0.1]}]}],
         "joints": [joint("A", "ground.O", "upper.top", 1e-3), joint("B", "upper.bottom", "lower.top", 1e-4)],
         "drivers": [],
-        "forces": [{"type": "torque", "name": "idle", "body": "lower", "torque": {"kind": "constant", "value": 0.0}}]});
+        "beams": [], "sensors": [], "forces": [{"type": "torque", "name": "idle", "body": "lower", "torque": {"kind": "constant", "value": 0.0}}]});
     let spec: ModelSpec = serde_json::from_value(spec).expect("valid spec");
     compile(&spec).unwrap_or_else(|e| panic!("{e}"))
 }

@@ -34,11 +34,16 @@ pub enum Stabilization {
     None,
 }
 
-/// Computes the frames of all bodies from the positions `q` and velocities
-/// `v` (reusing the trigonometry of a body whose orientation did not change).
+/// Computes the frames of all bodies and then of all sections (markers on
+/// flexible bodies) from the positions `q` and velocities `v` (reusing the
+/// trigonometry of a frame whose orientation did not change).
 pub fn update_frames(model: &Model, q: &[f64], v: &[f64], frames: &mut [Frame]) {
-    for ((body, address), frame) in model.bodies.iter().zip(&model.layout.bodies).zip(&mut frames[1..]) {
+    let (bodies, sections) = frames[1..].split_at_mut(model.bodies.len());
+    for ((body, address), frame) in model.bodies.iter().zip(&model.layout.bodies).zip(bodies) {
         *frame = body.kind.frame(&q[address.q_range()], &v[address.v_range()], frame);
+    }
+    for (section, frame) in model.sections.iter().zip(sections) {
+        *frame = model.section_frame(section, q, v, frame);
     }
 }
 
@@ -114,14 +119,14 @@ fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> 
     }
 }
 
-/// Applied generalised forces: velocity-dependent inertial forces, gravity
+/// Applied generalised forces: the bodies' own (inertial, internal), gravity
 /// and the force elements (clearance joints included), whose evaluations are
 /// kept in the workspace.
 pub(crate) fn applied_forces(model: &Model, memory: &[ElementMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
     ws.generalised_force.fill(0.0);
-    if model.layout.has_inertial_forces {
+    if model.layout.has_body_forces {
         for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
-            body.kind.add_inertial_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
+            body.kind.add_body_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
         }
     }
     let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout);

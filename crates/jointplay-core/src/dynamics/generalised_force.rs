@@ -1,7 +1,7 @@
 //! The generalised applied force `Q` being assembled, seen by elements:
-//! they add point forces and moments on bodies and never index coordinates.
+//! they add point forces and moments at markers and never index coordinates.
 
-use super::frame::{BodyIndex, Frame, Vec2};
+use super::frame::{Frame, Marker, Vec2};
 use super::layout::StateLayout;
 use super::model::Body;
 
@@ -21,19 +21,20 @@ impl<'a> GeneralisedForces<'a> {
         Self { values, bodies, layout }
     }
 
-    /// Adds the force `f` [N] at the global point `p` [m] of `body` (nothing on the ground).
+    /// Adds the force `f` [N] at the global point `p` [m], a point moving with
+    /// `marker` (whose frame is `frame`; nothing on the ground).
     #[inline]
-    pub fn add_point_force(&mut self, body: BodyIndex, frame: &Frame, p: Vec2, f: Vec2) {
-        if let Some(address) = self.layout.body(body) {
-            self.bodies[body.0 - 1].kind.add_point_force(frame, p, f, &mut self.values[address.v_range()]);
+    pub fn add_point_force(&mut self, marker: &Marker, frame: &Frame, p: Vec2, f: Vec2) {
+        if let Some(address) = self.layout.body(marker.body) {
+            self.bodies[marker.body.0 - 1].kind.add_point_force(frame, marker, p, f, &mut self.values[address.v_range()]);
         }
     }
 
-    /// Adds the moment `m` [N m] (counter-clockwise) on `body` (nothing on the ground).
+    /// Adds the moment `m` [N m] (counter-clockwise) on `marker`'s frame (nothing on the ground).
     #[inline]
-    pub fn add_moment(&mut self, body: BodyIndex, m: f64) {
-        if let Some(address) = self.layout.body(body) {
-            self.bodies[body.0 - 1].kind.add_moment(m, &mut self.values[address.v_range()]);
+    pub fn add_moment(&mut self, marker: &Marker, m: f64) {
+        if let Some(address) = self.layout.body(marker.body) {
+            self.bodies[marker.body.0 - 1].kind.add_moment(marker, m, &mut self.values[address.v_range()]);
         }
     }
 

@@ -52,8 +52,8 @@ pub struct StateLayout {
     pub nz: usize,
     /// Whether `q_dot = v` for every body (so `q` and `v` have the same layout).
     pub identity_position_rates: bool,
-    /// Whether some body has velocity-dependent inertial forces.
-    pub has_inertial_forces: bool,
+    /// Whether some body exerts forces on its own coordinates (inertial or internal).
+    pub has_body_forces: bool,
 }
 
 impl StateLayout {
@@ -64,7 +64,7 @@ impl StateLayout {
             self.identity_position_rates = true;
         }
         self.identity_position_rates &= kind.has_identity_position_rates() && self.nq == self.nv;
-        self.has_inertial_forces |= kind.has_inertial_forces();
+        self.has_body_forces |= kind.has_body_forces();
         self.bodies.push(BodyAddress { q: self.nq, nq, v: self.nv, nv });
         self.nq += nq;
         self.nv += nv;
@@ -120,11 +120,11 @@ mod tests {
     }
 
     #[test]
-    fn planar_bodies_have_q_dot_equal_to_v_and_no_inertial_forces() {
+    fn planar_bodies_have_q_dot_equal_to_v_and_no_body_forces() {
         let mut layout = StateLayout::default();
         layout.push_body(&planar());
         layout.push_body(&planar());
-        assert!(layout.identity_position_rates && !layout.has_inertial_forces);
+        assert!(layout.identity_position_rates && !layout.has_body_forces);
         assert_eq!(layout.body(BodyIndex(2)), Some(&BodyAddress { q: 3, nq: 3, v: 3, nv: 3 }));
     }
 

@@ -36,7 +36,7 @@ pub use joint_coordinates::{Formulation, JointTree};
 pub use layout::{BodyAddress, StateLayout};
 pub use extrema_summary::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
-pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm};
+pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
 pub use progress::Progress;
 pub use redundancy::{constraint_rank, ConstraintRank};
 pub use simulate::{simulate, simulate_with_sink, Diagnostics, SimulationOptions, SimulationOutcome};
@@ -50,3 +50,5 @@ pub(crate) use brent::maximize;
 mod tests;
 #[cfg(test)]
 mod element_tests;
+#[cfg(test)]
+mod beam_tests;

@@ -1,11 +1,11 @@
 //! The compiled, immutable description of a mechanism.
 
 use super::channels::Channel;
-use super::frame::{BodyIndex, Vec2};
+use super::frame::{BodyIndex, Frame, Marker, Vec2};
 use super::joint_coordinates::JointTree;
 use super::constraint_jacobian::JacobianPattern;
 use super::layout::StateLayout;
-use crate::body::BodyKind;
+use crate::body::{BodyKind, SectionSite, Site};
 use crate::force::{ElementMemory, ForceElement, OutputInfo};
 use crate::joint::{ClearanceRevolute, Constraint};
 use crate::linalg::PatternLdl;
@@ -91,8 +91,13 @@ pub struct Model {
     pub name: String,
     /// Rigid bodies; body `k` has [`BodyIndex`]`(k + 1)`.
     pub bodies: Vec<Body>,
-    /// Names of the named points of every body (`"crank.A"`) and their body-frame coordinates.
-    pub points: Vec<(String, BodyIndex, Vec2)>,
+    /// Names of the named points of every body (`"crank.A"`) and their markers.
+    pub points: Vec<(String, Marker)>,
+    /// The section frames of markers on flexible bodies: section `k` is frame
+    /// `1 + bodies.len() + k` of an evaluation, after the bodies' own.
+    pub sections: Vec<Section>,
+    /// Strain gauges on beams: their sections and what they record.
+    pub gauges: Vec<StrainGauge>,
     /// Where every body's coordinates and every element's states sit in `y = [q, v, z]`.
     pub layout: StateLayout,
     /// Gravitational acceleration [m/s^2].
@@ -139,6 +144,41 @@ pub struct Model {
     pub joint_tree: Result<JointTree, String>,
 }
 
+/// A section frame of a flexible body (where markers on it sit).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Section {
+    /// The body.
+    pub body: BodyIndex,
+    /// Where on it.
+    pub site: SectionSite,
+}
+
+/// A strain gauge: the stress resultants of a beam's section and the axial
+/// strain of one fibre there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StrainGauge {
+    /// Name (its channels are `<name>.<quantity>`).
+    pub name: String,
+    /// The beam.
+    pub body: BodyIndex,
+    /// The section.
+    pub site: SectionSite,
+    /// Distance of the fibre from the axis along the section's direction `t_2` [m].
+    pub fibre: f64,
+}
+
+impl StrainGauge {
+    /// Channels: quantity, unit, description.
+    pub const CHANNELS: [OutputInfo; 6] = [
+        ("axial_force", "N", "axial force N of the section (tension positive)"),
+        ("shear_force", "N", "shear force Q of the section"),
+        ("bending_moment", "N m", "bending moment M of the section"),
+        ("axial_strain", "1", "axial strain of the fibre (elongation positive)"),
+        ("axis_strain", "1", "axial strain of the beam's axis"),
+        ("curvature", "1/m", "curvature of the axis"),
+    ];
+}
+
 /// One body's contribution `J_a,c M_c^-1 J_b,c^T` to entry `(a, b)`, `a >= b`, of
 /// `Phi_q M^-1 Phi_q^T`, by indices of the two rows' Jacobian blocks on that
 /// body (32-bit: the terms are read at every evaluation).
@@ -181,6 +221,24 @@ impl Model {
         for (body, address) in self.bodies.iter().zip(&self.layout.bodies) {
             body.kind.solve_mass(&f[address.v_range()], &mut out[address.v_range()]);
         }
+    }
+
+    /// Frame of a section from all positions `q` and velocities `v`.
+    #[inline]
+    pub fn section_frame(&self, section: &Section, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        let address = &self.layout.bodies[section.body.0 - 1];
+        let kind = &self.bodies[section.body.0 - 1].kind;
+        kind.site_frame(&Site::Section(section.site), &q[address.q_range()], &v[address.v_range()], previous)
+    }
+
+    /// Number of frames of an evaluation: the ground, the bodies, the sections.
+    pub fn n_frames(&self) -> usize {
+        1 + self.bodies.len() + self.sections.len()
+    }
+
+    /// Whether every body is rigid (no body force, no section frame).
+    pub fn is_rigid(&self) -> bool {
+        self.bodies.iter().all(|b| matches!(b.kind, BodyKind::PlanarRigid(_)))
     }
 
     /// Number of constraint equations active during the simulation.

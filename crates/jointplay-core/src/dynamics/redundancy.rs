@@ -91,7 +91,7 @@ mod tests {
             r#"{"name": "free", "gravity": [0, 0], "ground_points": [],
                 "bodies": [{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0, 0], "angle": 0, "velocity": [0, 0],
                             "angular_velocity": 0, "points": []}],
-                "joints": [], "drivers": [], "forces": []}"#,
+                "joints": [], "drivers": [], "beams": [], "sensors": [], "forces": []}"#,
         );
         assert_eq!((free.n_equations, free.rank, free.n_redundant()), (0, 0, 0));
         let pins = rank_of(
@@ -100,7 +100,7 @@ mod tests {
                             "angular_velocity": 0, "points": [{"name": "O", "position": [-0.3, 0]}]}],
                 "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"},
                            {"type": "revolute", "name": "again", "first": "ground.O", "second": "bar.O"}],
-                "drivers": [], "forces": []}"#,
+                "drivers": [], "beams": [], "sensors": [], "forces": []}"#,
         );
         assert_eq!((pins.n_equations, pins.rank, pins.n_redundant()), (4, 2, 2));
         assert_eq!(pins.dependent_elements, vec!["pin".to_string(), "again".to_string()]);

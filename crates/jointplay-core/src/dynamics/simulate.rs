@@ -5,7 +5,7 @@ use super::trajectory::{SampleSink, Trajectory};
 use super::equations::{update_frames, Stabilization};
 use super::joint_coordinates::{self, Formulation, JointTree};
 use super::extrema::ExtremaTracker;
-use super::frame::{BodyIndex, Vec2};
+use super::frame::Marker;
 use super::extrema_summary::{is_peak_unit, Extrema, JointToSummarize};
 use super::system::{MechanismSystem, StepEndCache, Tracking};
 use super::{Model, Progress, State, Workspace};
@@ -192,7 +192,7 @@ fn joint_state(model: &Model, tree: &JointTree, y: &[f64], ws: &mut Workspace) -
 /// (a clearance joint's gap).
 fn new_tracking(model: &Model, len: usize) -> Tracking {
     let channels: Vec<usize> = (0..model.channels.len()).filter(|&c| is_peak_unit(model.channels[c].info.unit)).collect();
-    let points: Vec<(BodyIndex, Vec2)> = model.points.iter().filter(|p| !p.1.is_ground()).map(|p| (p.1, p.2)).collect();
+    let points: Vec<Marker> = model.points.iter().filter(|p| !p.1.body.is_ground()).map(|p| p.1).collect();
     Tracking {
         tracker: ExtremaTracker::new(channels.len() + points.len(), model.n_events()),
         channels,
@@ -204,7 +204,7 @@ fn new_tracking(model: &Model, len: usize) -> Tracking {
 
 /// The tracked summary with the names of its channels and joints (`memory`: every element's at the end).
 fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], memory: &[ElementMemory]) -> Extrema {
-    let points = model.points.iter().filter(|p| !p.1.is_ground()).map(|p| (p.0.clone(), "m/s^2"));
+    let points = model.points.iter().filter(|p| !p.1.body.is_ground()).map(|p| (p.0.clone(), "m/s^2"));
     let names: Vec<(String, &'static str)> =
         channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).chain(points).collect();
     // (a clearance joint's one event function is its gap)

@@ -8,7 +8,7 @@ use super::extrema::{ExtremaTracker, StepProbe};
 use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
 use super::joint_coordinates::{self, joint_accelerations, JointTree};
-use super::frame::{BodyIndex, Vec2};
+use super::frame::Marker;
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::{Model, Progress, Workspace};
@@ -47,8 +47,8 @@ pub(crate) struct Tracking {
     pub tracker: ExtremaTracker,
     /// Indices into `Model::channels` of the tracked channels.
     pub channels: Vec<usize>,
-    /// Named body points whose acceleration magnitude is tracked after the channels: body and body-frame point [m].
-    pub points: Vec<(BodyIndex, Vec2)>,
+    /// Named body points whose acceleration magnitude is tracked after the channels.
+    pub points: Vec<Marker>,
     /// State from the dense output at a time inside a step.
     pub state: Vec<f64>,
     /// State after the last accepted step (`[q, q_dot]`), at `MechanismSystem::last_accepted`.
@@ -203,6 +203,11 @@ impl MechanismSystem<'_> {
                 let kind = &self.model.bodies[body.0 - 1].kind;
                 self.ws.event_frames[body.0] = kind.frame(&q[address.q_range()], &v[address.v_range()], &self.ws.frames[body.0]);
             }
+        }
+        // (the sections of flexible bodies: few, each from its own coordinates)
+        let first = 1 + self.model.bodies.len();
+        for (k, section) in self.model.sections.iter().enumerate() {
+            self.ws.event_frames[first + k] = self.model.section_frame(section, q, v, &self.ws.frames[first + k]);
         }
     }
 
@@ -416,8 +421,8 @@ impl MechanismSystem<'_> {
             // (tracked channels read forces and accelerations, never the energy)
             *v = value(self.model, self.model.channels[c].source, state, ws, [f64::NAN; 2]);
         }
-        for (v, &(body, local)) in points.iter_mut().zip(&self.tracking.points) {
-            *v = point_acceleration(self.model, ws, body, local);
+        for (v, marker) in points.iter_mut().zip(&self.tracking.points) {
+            *v = point_acceleration(self.model, ws, marker);
         }
     }
 }
@@ -487,10 +492,9 @@ impl MechanismSystem<'_> {
     }
 }
 
-/// Acceleration magnitude [m/s^2] of the marker point `local` [m] (body frame)
-/// of a moving body from an evaluated workspace.
-fn point_acceleration(model: &Model, ws: &Workspace, body: BodyIndex, local: Vec2) -> f64 {
-    let Some(address) = model.layout.body(body) else { return 0.0 };
-    let kind = &model.bodies[body.0 - 1].kind;
-    kind.marker_acceleration(&ws.frames[body.0], &ws.accelerations[address.v_range()], local).norm()
+/// Acceleration magnitude [m/s^2] of a marker's point from an evaluated workspace.
+fn point_acceleration(model: &Model, ws: &Workspace, marker: &Marker) -> f64 {
+    let Some(address) = model.layout.body(marker.body) else { return 0.0 };
+    let kind = &model.bodies[marker.body.0 - 1].kind;
+    kind.marker_acceleration(&ws.frames[marker.frame], &ws.accelerations[address.v_range()], marker).norm()
 }

@@ -39,7 +39,7 @@ fn slider_crank(omega: f64, gravity: f64) -> Model {
           {{"type": "translational", "name": "guide", "first": "ground.line", "second": "slider.B", "axis": [1, 0]}}
         ],
         "drivers": [{{"name": "motor", "joint": "O", "function": {{"kind": "constant_rate", "initial": 0, "rate": {omega}}}}}],
-        "forces": []
+        "beams": [], "sensors": [], "forces": []
         }}"#
     ))
 }
@@ -143,7 +143,7 @@ fn horizontal_bar_held_by_a_driver_carries_its_weight_at_the_pin() {
                         "points": [{"name": "O", "position": [-0.4, 0]}]}],
             "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}],
             "drivers": [{"name": "hold", "joint": "pin", "function": {"kind": "constant", "value": 0}}],
-            "forces": []}"#,
+            "beams": [], "sensors": [], "forces": []}"#,
     );
     let mut ws = Workspace::new(&m);
     let state = assemble(&m, 0.0, &mut ws).unwrap();
@@ -200,7 +200,7 @@ fn slider_crank_spec_json() -> serde_json::Value {
           {"type": "revolute", "name": "B", "first": "rod.B", "second": "slider.B"},
           {"type": "translational", "name": "guide", "first": "ground.line", "second": "slider.B", "axis": [1, 0]}],
         "drivers": [{"name": "motor", "joint": "O", "function": {"kind": "constant", "value": 0}}],
-        "forces": []}"#,
+        "beams": [], "sensors": [], "forces": []}"#,
     )
     .unwrap()
 }
@@ -227,7 +227,7 @@ fn pendulum_period_matches_the_elliptic_integral_at_large_amplitude() {
             "bodies": [{{"name": "bar", "mass": {mass}, "inertia": {inertia}, "position": [{cx}, {cy}], "angle": {angle},
                         "velocity": [0, 0], "angular_velocity": 0, "points": [{{"name": "O", "position": [-{h}, 0]}}]}}],
             "joints": [{{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}}],
-            "drivers": [], "forces": []}}"#,
+            "drivers": [], "beams": [], "sensors": [], "forces": []}}"#,
         h = 0.5 * length
     ));
     let mut ws = Workspace::new(&m);
@@ -276,7 +276,7 @@ fn hanging_chain(links: usize) -> Model {
         .collect();
     model(&format!(
         r#"{{"name": "chain", "gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}], "bodies": [{}], "joints": [{}],
-            "drivers": [], "forces": []}}"#,
+            "drivers": [], "beams": [], "sensors": [], "forces": []}}"#,
         bodies.join(","),
         joints.join(",")
     ))
@@ -311,7 +311,7 @@ fn pinned_bar(pins: usize) -> Model {
         r#"{{"name": "pinned bar", "gravity": [0, -9.81], "ground_points": [{{"name": "O", "position": [0, 0]}}],
             "bodies": [{{"name": "bar", "mass": 1, "inertia": 0.1, "position": [0.3, 0.01], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
                         "points": [{{"name": "O", "position": [-0.3, 0]}}]}}],
-            "joints": [{}], "drivers": [], "forces": []}}"#,
+            "joints": [{}], "drivers": [], "beams": [], "sensors": [], "forces": []}}"#,
         joints.join(", ")
     ))
 }
@@ -352,7 +352,7 @@ fn a_mechanism_driven_against_its_lock_is_reported_naming_the_element() {
             "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"},
                        {"type": "fixed", "name": "weld", "first": "ground.O", "second": "bar.O"}],
             "drivers": [{"name": "motor", "joint": "pin", "function": {"kind": "constant_rate", "initial": 0, "rate": 10.0}}],
-            "forces": []}"#,
+            "beams": [], "sensors": [], "forces": []}"#,
     );
     let mut ws = Workspace::new(&m);
     match assemble(&m, 0.0, &mut ws) {
@@ -379,7 +379,7 @@ fn compile_reports_every_problem_with_its_location() {
                         "stiffness": {"law": "hertz_cylinder"}, "friction": {"law": "none"},
                         "initial_eccentricity": [0, 0], "lock_at_assembly": true, "onset_velocity_floor": 1e-4,
                         "max_penetration": null, "lubrication": null}],
-            "drivers": [], "forces": []}"#,
+            "drivers": [], "beams": [], "sensors": [], "forces": []}"#,
     )
     .unwrap();
     let errors = compile(&spec).unwrap_err().to_string();

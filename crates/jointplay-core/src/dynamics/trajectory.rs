@@ -327,7 +327,7 @@ mod tests {
             "bodies": [{"name": "bar", "mass": 1, "inertia": 0.02, "position": [0.25, 0], "angle": 0, "velocity": [0, 0],
                         "angular_velocity": 0, "points": [{"name": "O", "position": [-0.25, 0]}]}],
             "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "bar.O"}],
-            "drivers": [], "forces": []}"#;
+            "drivers": [], "beams": [], "sensors": [], "forces": []}"#;
         let model = compile(&serde_json::from_str(spec).unwrap()).unwrap();
         let mut state = assemble(&model, 0.0, &mut Workspace::new(&model)).unwrap();
         let mut options = SimulationOptions { max_output_bytes, ..Default::default() };

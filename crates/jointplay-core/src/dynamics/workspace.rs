@@ -74,8 +74,8 @@ impl Workspace {
         let n = model.n_velocities();
         let m = model.n_assembly_equations();
         Self {
-            frames: vec![Frame::GROUND; model.bodies.len() + 1],
-            event_frames: vec![Frame::GROUND; model.bodies.len() + 1],
+            frames: vec![Frame::GROUND; model.n_frames()],
+            event_frames: vec![Frame::GROUND; model.n_frames()],
             generalised_force: vec![0.0; n],
             jacobian: vec![0.0; model.jacobian_pattern.n_values()],
             jacobian_solved: vec![0.0; model.jacobian_pattern.n_solved()],

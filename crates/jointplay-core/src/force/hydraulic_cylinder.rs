@@ -54,7 +54,7 @@ impl CylinderActuator {
     ];
 
     fn line(&self, frames: &[Frame]) -> Line {
-        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
+        let (fi, fj) = (&frames[self.first.frame], &frames[self.second.frame]);
         let points = [fi.point(self.first.local), fj.point(self.second.local)];
         let d = points[1] - points[0];
         let length = d.norm();
@@ -77,8 +77,8 @@ impl CylinderActuator {
         let e = self.cylinder.evaluate_unchecked(line.stroke, line.stroke_rate, z, self.inflows(t));
         z_rate.copy_from_slice(e.state_rates());
         let push = line.direction * e.force;
-        forces.add_point_force(self.second.body, &frames[self.second.body.0], line.points[1], push);
-        forces.add_point_force(self.first.body, &frames[self.first.body.0], line.points[0], -push);
+        forces.add_point_force(&self.second, &frames[self.second.frame], line.points[1], push);
+        forces.add_point_force(&self.first, &frames[self.first.frame], line.points[0], -push);
         let stick = if e.stick { 1.0 } else { 0.0 };
         ForceOutput {
             values: [z[0], z[1], e.force, line.stroke, line.stroke_rate, e.friction_force, stick],

@@ -45,7 +45,7 @@ impl Rig {
                          "velocity": [{v0}, 0], "angular_velocity": 0, "points": [{{"name": "P", "position": [0, 0]}}]}}],
             "joints": [{{"type": "translational", "name": "slide", "first": "ground.O", "second": "mass.P", "axis": [1, 0]}}],
             "drivers": [],
-            "forces": [
+            "beams": [], "sensors": [], "forces": [
               {{"type": "hydraulic_cylinder", "name": "cyl", "first": "ground.O", "second": "mass.P",
                 "piston_area": {A1}, "rod_side_area": {A2}, "stroke_length": {STROKE},
                 "cap_dead_volume": {dead}, "rod_dead_volume": {dead}, "initial_stroke": {S0},

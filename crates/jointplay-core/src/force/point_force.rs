@@ -22,9 +22,9 @@ impl PointForce {
 
     /// Applies the force; outputs its components [N].
     pub fn apply(&self, frames: &[Frame], t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
-        let frame = &frames[self.point.body.0];
+        let frame = &frames[self.point.frame];
         let f = Vec2::new(self.fx.sample(t).value, self.fy.sample(t).value);
-        forces.add_point_force(self.point.body, frame, frame.point(self.point.local), f);
+        forces.add_point_force(&self.point, frame, frame.point(self.point.local), f);
         ForceOutput::new(&[f.x, f.y], 0.0)
     }
 }

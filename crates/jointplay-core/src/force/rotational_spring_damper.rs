@@ -1,18 +1,19 @@
-//! Linear torsional spring-damper on the relative angle of two bodies:
+//! Linear torsional spring-damper on the relative angle of two markers' frames
+//! (of two bodies' reference frames, as the model files name them):
 //! torque on the second body `T = -k (theta - theta0) - c theta_dot`,
 //! `theta = phi_j - phi_i`; the first body gets `-T`.
 
 use super::ForceOutput;
-use crate::dynamics::frame::{BodyIndex, Frame};
+use crate::dynamics::frame::{Frame, Marker};
 use crate::dynamics::GeneralisedForces;
 
 /// Torsional spring and damper.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RotationalSpringDamper {
-    /// First body.
-    pub first: BodyIndex,
-    /// Second body.
-    pub second: BodyIndex,
+    /// Frame on the first body.
+    pub first: Marker,
+    /// Frame on the second body.
+    pub second: Marker,
     /// Stiffness k [N m/rad].
     pub stiffness: f64,
     /// Damping c [N m s/rad].
@@ -27,12 +28,12 @@ impl RotationalSpringDamper {
 
     /// Applies the torque pair; outputs torque on the second body [N m] and relative angle [rad].
     pub fn apply(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
-        let (fi, fj) = (&frames[self.first.0], &frames[self.second.0]);
+        let (fi, fj) = (&frames[self.first.frame], &frames[self.second.frame]);
         let theta = fj.angle - fi.angle - self.free_angle;
         let theta_dot = fj.angular_velocity - fi.angular_velocity;
         let torque = -self.stiffness * theta - self.damping * theta_dot;
-        forces.add_moment(self.second, torque);
-        forces.add_moment(self.first, -torque);
+        forces.add_moment(&self.second, torque);
+        forces.add_moment(&self.first, -torque);
         ForceOutput::new(&[torque, theta + self.free_angle], 0.5 * self.stiffness * theta * theta)
     }
 }

@@ -26,7 +26,7 @@ impl SpringDamper {
 
     /// Applies the tension to both points; outputs tension [N] and length [m].
     pub fn apply(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
-        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
+        let (fi, fj) = (&frames[self.first.frame], &frames[self.second.frame]);
         let (pi, pj) = (fi.point(self.first.local), fj.point(self.second.local));
         let d = pj - pi;
         let length = d.norm();
@@ -38,8 +38,8 @@ impl SpringDamper {
         let u = d / length;
         let length_rate = u.dot(&(fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local)));
         let tension = self.stiffness * stretch + self.damping * length_rate;
-        forces.add_point_force(self.first.body, fi, pi, u * tension);
-        forces.add_point_force(self.second.body, fj, pj, -u * tension);
+        forces.add_point_force(&self.first, fi, pi, u * tension);
+        forces.add_point_force(&self.second, fj, pj, -u * tension);
         ForceOutput::new(&[tension, length], potential_energy)
     }
 }

@@ -1,15 +1,16 @@
-//! A prescribed torque on a body as a function of time.
+//! A prescribed torque on a marker's frame (a body's reference frame, as the
+//! model files name it) as a function of time.
 
 use super::ForceOutput;
-use crate::dynamics::frame::BodyIndex;
+use crate::dynamics::frame::Marker;
 use crate::dynamics::GeneralisedForces;
 use crate::motion::TimeFunction;
 
 /// Torque `T(t)` [N m], counter-clockwise positive.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AppliedTorque {
-    /// Body it acts on.
-    pub body: BodyIndex,
+    /// The frame it acts on.
+    pub body: Marker,
     /// Torque [N m].
     pub torque: TimeFunction,
 }
@@ -21,7 +22,7 @@ impl AppliedTorque {
     /// Applies the torque; outputs it [N m].
     pub fn apply(&self, t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
         let torque = self.torque.sample(t).value;
-        forces.add_moment(self.body, torque);
+        forces.add_moment(&self.body, torque);
         ForceOutput::new(&[torque], 0.0)
     }
 }

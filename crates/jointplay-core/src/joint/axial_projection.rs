@@ -22,8 +22,8 @@ pub struct AxialProjection {
 impl AxialProjection {
     /// `Phi = u . d - f(t)` with `d = P_j - P_i` [m].
     pub fn residual(&self, frames: &[Frame], t: f64, out: &mut [f64]) {
-        let fi = &frames[self.first.body.0];
-        let d = frames[self.second.body.0].point(self.second.local) - fi.point(self.first.local);
+        let fi = &frames[self.first.frame];
+        let d = frames[self.second.frame].point(self.second.local) - fi.point(self.first.local);
         out[0] = fi.rotate(self.direction).dot(&d) - self.target.sample(t).value;
     }
 
@@ -32,13 +32,13 @@ impl AxialProjection {
     /// `nu = f_dot`; `gamma = w_i^2 u.d - 2 w_i perp(u).d_dot - u.(a0_Pj - a0_Pi) + f_ddot`
     /// with `a0` the markers' velocity-dependent accelerations.
     pub fn linearise(&self, frames: &[Frame], t: f64, mut rows: ConstraintRows<'_>) {
-        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
+        let (fi, fj) = (&frames[self.first.frame], &frames[self.second.frame]);
         let u = fi.rotate(self.direction);
         let d = fj.point(self.second.local) - fi.point(self.first.local);
         let d_dot = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
         rows.add_point_jacobian(frames, 0, 0, &self.first, -u);
         rows.add_point_jacobian(frames, 0, 1, &self.second, u);
-        rows.add_angle_jacobian(0, 0, self.first.body, perp(u).dot(&d));
+        rows.add_angle_jacobian(0, 0, &self.first, perp(u).dot(&d));
         let wi = fi.angular_velocity;
         let bias = rows.bias_acceleration(frames, &self.second) - rows.bias_acceleration(frames, &self.first);
         let target = self.target.sample(t);
@@ -50,7 +50,7 @@ impl AxialProjection {
     /// moment `-lambda perp(u) . d` of the turning direction on the first body,
     /// the force `-lambda u` at the second point.
     pub fn loads(&self, frames: &[Frame], lambda: &[f64]) -> [MarkerLoad; 2] {
-        let (fi, fj) = (&frames[self.first.body.0], &frames[self.second.body.0]);
+        let (fi, fj) = (&frames[self.first.frame], &frames[self.second.frame]);
         let u = fi.rotate(self.direction);
         let (pi, pj) = (fi.point(self.first.local), fj.point(self.second.local));
         let l = lambda[0];

@@ -84,16 +84,16 @@ impl ClearanceRevolute {
     /// `detailed` asks for the film outputs only recorded samples need.
     pub fn apply_element(&self, frames: &[Frame], memory: &ContactMemory, work: &mut ClearanceWork, detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
         let c = self.evaluate(frames, memory.onset_velocity);
-        let (bi, bj) = (self.bearing.body, self.journal.body);
+        let (bi, bj) = (&self.bearing, &self.journal);
+        let (fi, fj) = (&frames[bi.frame], &frames[bj.frame]);
         if c.in_contact {
-            forces.add_point_force(bj, &frames[bj.0], c.journal_contact_point, c.force_on_journal);
-            forces.add_point_force(bi, &frames[bi.0], c.bearing_contact_point, -c.force_on_journal);
+            forces.add_point_force(bj, fj, c.journal_contact_point, c.force_on_journal);
+            forces.add_point_force(bi, fi, c.bearing_contact_point, -c.force_on_journal);
         }
         work.contact = c;
         if self.lubrication.is_some() {
             work.film = self.film(frames, work.solver.as_mut(), detailed)?;
-            let (fi, fj) = (&frames[bi.0], &frames[bj.0]);
-            Lubrication::apply(&work.film, forces, (fi, bi, fi.point(self.bearing.local)), (fj, bj, fj.point(self.journal.local)));
+            Lubrication::apply(&work.film, forces, (fi, bi, fi.point(bi.local)), (fj, bj, fj.point(bj.local)));
         }
         Ok(())
     }
@@ -108,7 +108,7 @@ impl ClearanceRevolute {
 
     fn film(&self, frames: &[Frame], solver: Option<&mut ReynoldsSolver>, detailed: bool) -> Result<FilmEvaluation, ElementFault> {
         let Some(lubrication) = &self.lubrication else { return Ok(FilmEvaluation::default()) };
-        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
         let kinematics = Lubrication::kinematics(fi, fj, fi.point(self.bearing.local), fj.point(self.journal.local));
         lubrication.evaluate(&kinematics, solver, detailed).map_err(ElementFault::Film)
     }
@@ -171,7 +171,7 @@ impl ClearanceRevolute {
         if distance == 0.0 {
             return 0.0;
         }
-        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
         let e_dot = fj.point_velocity(self.journal.local) - fi.point_velocity(self.bearing.local);
         e_dot.dot(&c.eccentricity) / distance
     }

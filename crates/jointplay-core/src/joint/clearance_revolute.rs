@@ -80,7 +80,7 @@ impl ClearanceRevolute {
     /// where `|e|` has a kink, the rate at which `|e|` grows, `|de/dt|`.
     #[inline]
     pub fn penetration_rate(&self, frames: &[Frame]) -> f64 {
-        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
         let e = fj.point(self.journal.local) - fi.point(self.bearing.local);
         let e_dot = fj.point_velocity(self.journal.local) - fi.point_velocity(self.bearing.local);
         let distance = e.norm();
@@ -90,7 +90,7 @@ impl ClearanceRevolute {
     /// Eccentricity vector `P_j - P_i` [m].
     #[inline]
     pub fn eccentricity(&self, frames: &[Frame]) -> Vec2 {
-        frames[self.journal.body.0].point(self.journal.local) - frames[self.bearing.body.0].point(self.bearing.local)
+        frames[self.journal.frame].point(self.journal.local) - frames[self.bearing.frame].point(self.bearing.local)
     }
 
     /// Contact kinematics and forces. `onset_velocity` is the latched normal
@@ -98,7 +98,7 @@ impl ClearanceRevolute {
     /// not been registered yet (a trial stage inside the step that finds the
     /// onset), in which case the current approach velocity is used.
     pub fn evaluate(&self, frames: &[Frame], onset_velocity: Option<f64>) -> ContactEvaluation {
-        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
         let pi = fi.point(self.bearing.local);
         let pj = fj.point(self.journal.local);
         let e = pj - pi;
@@ -137,7 +137,7 @@ impl ClearanceRevolute {
 
     /// Normal approach velocity [m/s] to latch at contact onset, floored.
     pub fn onset_velocity(&self, frames: &[Frame]) -> f64 {
-        let (fi, fj) = (&frames[self.bearing.body.0], &frames[self.journal.body.0]);
+        let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
         let pi = fi.point(self.bearing.local);
         let e = fj.point(self.journal.local) - pi;
         let distance = e.norm();

@@ -113,12 +113,13 @@ impl Lubrication {
         }
     }
 
-    /// Generalised forces of the film on bearing body `bi` and journal body `bj`.
+    /// Generalised forces of the film on the bearing and the journal, each given
+    /// as its marker's frame, the marker, and the centre [m].
     pub fn apply(
         evaluation: &FilmEvaluation,
         forces: &mut crate::dynamics::GeneralisedForces,
-        bearing: (&Frame, crate::dynamics::frame::BodyIndex, Vec2),
-        journal: (&Frame, crate::dynamics::frame::BodyIndex, Vec2),
+        bearing: (&Frame, &crate::dynamics::frame::Marker, Vec2),
+        journal: (&Frame, &crate::dynamics::frame::Marker, Vec2),
     ) {
         let f = evaluation.force_on_journal;
         let e = journal.2 - bearing.2;

@@ -80,7 +80,7 @@ impl ConstraintRows<'_> {
     pub fn add_point_jacobian(&mut self, frames: &[Frame], r: usize, slot: usize, marker: &Marker, along: Vec2) {
         if let Some(block) = self.pattern.slot(self.row + r, slot) {
             let kind = &self.bodies[marker.body.0 - 1].kind;
-            kind.add_marker_jacobian(&frames[marker.body.0], marker.local, along, &mut self.jacobian[block.values()]);
+            kind.add_marker_jacobian(&frames[marker.frame], marker, along, &mut self.jacobian[block.values()]);
         }
     }
 
@@ -93,17 +93,17 @@ impl ConstraintRows<'_> {
         // (a later row's blocks sit after an earlier row's)
         let (head, tail) = self.jacobian.split_at_mut(y.start);
         let (jx, jy) = (&mut head[x], &mut tail[..y.end - y.start]);
-        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.body.0], marker.local, jx, jy);
+        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.frame], marker, jx, jy);
         if scale != 1.0 {
             jx.iter_mut().chain(jy.iter_mut()).for_each(|j| *j *= scale);
         }
     }
 
-    /// Adds `scale d(omega)/d(v)` of `body`'s reference marker to row `row + r`, block `slot`.
+    /// Adds `scale d(omega)/d(v)` of `marker`'s frame to row `row + r`, block `slot`.
     #[inline(always)]
-    pub fn add_angle_jacobian(&mut self, r: usize, slot: usize, body: BodyIndex, scale: f64) {
+    pub fn add_angle_jacobian(&mut self, r: usize, slot: usize, marker: &Marker, scale: f64) {
         if let Some(block) = self.pattern.slot(self.row + r, slot) {
-            self.bodies[body.0 - 1].kind.add_marker_angle_jacobian(Vec2::zeros(), scale, &mut self.jacobian[block.values()]);
+            self.bodies[marker.body.0 - 1].kind.add_marker_angle_jacobian(marker, scale, &mut self.jacobian[block.values()]);
         }
     }
 
@@ -113,16 +113,16 @@ impl ConstraintRows<'_> {
         if marker.body.is_ground() {
             return Vec2::zeros();
         }
-        self.bodies[marker.body.0 - 1].kind.marker_bias_acceleration(&frames[marker.body.0], marker.local)
+        self.bodies[marker.body.0 - 1].kind.marker_bias_acceleration(&frames[marker.frame], marker)
     }
 
-    /// The velocity-dependent part of `body`'s angular acceleration (zero on the ground) [rad/s^2].
+    /// The velocity-dependent part of `marker`'s angular acceleration (zero on the ground) [rad/s^2].
     #[inline]
-    pub fn bias_angular_acceleration(&self, frames: &[Frame], body: BodyIndex) -> f64 {
-        if body.is_ground() {
+    pub fn bias_angular_acceleration(&self, frames: &[Frame], marker: &Marker) -> f64 {
+        if marker.body.is_ground() {
             return 0.0;
         }
-        self.bodies[body.0 - 1].kind.marker_bias_angular_acceleration(&frames[body.0], Vec2::zeros())
+        self.bodies[marker.body.0 - 1].kind.marker_bias_angular_acceleration(&frames[marker.frame], marker)
     }
 }
 
@@ -148,12 +148,11 @@ impl ConstraintKind {
         }
     }
 
-    /// The first and the second marker (slots 0 and 1 of every row's blocks);
-    /// a relative angle has its bodies' reference markers.
+    /// The first and the second marker (slots 0 and 1 of every row's blocks).
     pub fn markers(&self) -> [Marker; 2] {
         match self {
             Self::PointCoincidence(c) => [c.first, c.second],
-            Self::RelativeAngle(c) => [c.first, c.second].map(|body| Marker { body, local: Vec2::zeros() }),
+            Self::RelativeAngle(c) => [c.first, c.second],
             Self::AxialProjection(c) => [c.first, c.second],
         }
     }

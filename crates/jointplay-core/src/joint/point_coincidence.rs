@@ -18,8 +18,8 @@ pub struct PointCoincidence {
 impl PointCoincidence {
     /// `Phi = P_i + offset - P_j` [m].
     pub fn residual(&self, frames: &[Frame], out: &mut [f64]) {
-        let pi = frames[self.first.body.0].point(self.first.local);
-        let pj = frames[self.second.body.0].point(self.second.local);
+        let pi = frames[self.first.frame].point(self.first.local);
+        let pj = frames[self.second.frame].point(self.second.local);
         let r = pi + self.offset - pj;
         out[0] = r.x;
         out[1] = r.y;
@@ -42,7 +42,7 @@ impl PointCoincidence {
     /// `-Phi_q^T lambda`: the force `-lambda` at the first point, `+lambda` at the second.
     pub fn loads(&self, frames: &[Frame], lambda: &[f64]) -> [MarkerLoad; 2] {
         let f = Vec2::new(lambda[0], lambda[1]);
-        let at = |m: &Marker, force: Vec2| MarkerLoad { force, point: frames[m.body.0].point(m.local), moment: 0.0 };
+        let at = |m: &Marker, force: Vec2| MarkerLoad { force, point: frames[m.frame].point(m.local), moment: 0.0 };
         [at(&self.first, -f), at(&self.second, f)]
     }
 }

@@ -16,14 +16,14 @@ fn frames_at(q: &[f64], qdot: &[f64]) -> Vec<Frame> {
 }
 
 fn primitives() -> Vec<ConstraintKind> {
-    let a = Marker { body: BodyIndex(1), local: Vec2::new(0.3, -0.1) };
-    let b = Marker { body: BodyIndex(2), local: Vec2::new(-0.2, 0.25) };
-    let g = Marker { body: BodyIndex::GROUND, local: Vec2::new(0.1, 0.05) };
+    let a = Marker::at(BodyIndex(1), Vec2::new(0.3, -0.1));
+    let b = Marker::at(BodyIndex(2), Vec2::new(-0.2, 0.25));
+    let g = Marker::at(BodyIndex::GROUND, Vec2::new(0.1, 0.05));
     let sine = Target::Driven(TimeFunction::Sine(Sine { offset: 0.2, amplitude: 0.3, frequency: 1.3, phase: 0.4 }));
     vec![
         ConstraintKind::PointCoincidence(PointCoincidence { first: a, second: b, offset: Vec2::new(0.01, -0.02) }),
         ConstraintKind::PointCoincidence(PointCoincidence { first: g, second: b, offset: Vec2::zeros() }),
-        ConstraintKind::RelativeAngle(RelativeAngle { first: BodyIndex(1), second: BodyIndex(2), target: sine.clone() }),
+        ConstraintKind::RelativeAngle(RelativeAngle { first: Marker::reference(BodyIndex(1)), second: Marker::reference(BodyIndex(2)), target: sine.clone() }),
         ConstraintKind::AxialProjection(AxialProjection { first: a, second: b, direction: Vec2::new(0.6, 0.8), target: sine }),
         ConstraintKind::AxialProjection(AxialProjection { first: g, second: b, direction: Vec2::new(0.0, 1.0), target: Target::Fixed(0.1) }),
     ]
@@ -135,7 +135,7 @@ fn the_loads_of_a_primitive_are_minus_its_jacobian_transpose_times_the_multiplie
                 continue;
             }
             // the generalised force of the load on the body: force, and its moment about the centre of mass
-            let (load, frame) = (&loads[slot], &frames[marker.body.0]);
+            let (load, frame) = (&loads[slot], &frames[marker.frame]);
             let generalised = [load.force.x, load.force.y, load.moment + cross(load.point - frame.position, load.force)];
             for (i, g) in generalised.iter().enumerate() {
                 let col = 3 * (marker.body.0 - 1) + i;

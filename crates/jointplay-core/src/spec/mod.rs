@@ -12,9 +12,11 @@
 //! an `Option` field, whose absence means "none" (no lubricant, no bearing
 //! length, a limit or a film thickness that the core derives from the geometry).
 
+mod beams;
 mod laws;
 mod lubrication;
 
+pub use beams::{BeamMaterialSpec, BeamMeshSpec, BeamPointSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec, SensorSpec};
 pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
 pub use lubrication::{CavitationSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
 use serde::{Deserialize, Serialize};
@@ -34,12 +36,16 @@ pub struct ModelSpec {
     pub ground_points: Vec<PointSpec>,
     /// Rigid bodies.
     pub bodies: Vec<BodySpec>,
+    /// Flexible links.
+    pub beams: Vec<BeamSpec>,
     /// Ideal and clearance joints.
     pub joints: Vec<JointSpec>,
     /// Drivers prescribing joint coordinates over time.
     pub drivers: Vec<DriverSpec>,
     /// Force elements.
     pub forces: Vec<ForceSpec>,
+    /// Sensors.
+    pub sensors: Vec<SensorSpec>,
 }
 
 /// A named point: coordinates in the frame of its body [m].

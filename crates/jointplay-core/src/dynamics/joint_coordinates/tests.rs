@@ -52,7 +52,7 @@ fn every_edge_kind() -> Model {
           {"name": "motor", "joint": "O", "function": {"kind": "polynomial", "coefficients": [0, 20, 300]}},
           {"name": "jack", "joint": "lift", "function": {"kind": "sine", "offset": 0, "amplitude": 0.01, "frequency": 20, "phase": 0}}
         ],
-        "forces": [
+        "beams": [], "sensors": [], "forces": [
           {"type": "spring_damper", "name": "link", "first": "rod.B", "second": "slider.B", "stiffness": 2000, "damping": 1, "free_length": 0},
           {"type": "spring_damper", "name": "return", "first": "rod.A", "second": "sleeve.S", "stiffness": 50, "damping": 0.01, "free_length": 0.07},
           {"type": "spring_damper", "name": "tether", "first": "ground.O", "second": "float.F", "stiffness": 100, "damping": 0, "free_length": 0.2},
@@ -112,7 +112,7 @@ fn a_joint_closing_a_loop_leaves_the_model_to_absolute_coordinates() {
           {"type": "revolute", "name": "C", "first": "coupler.C", "second": "rocker.C"},
           {"type": "revolute", "name": "D", "first": "ground.D", "second": "rocker.D"}
         ],
-        "drivers": [], "forces": []
+        "drivers": [], "beams": [], "sensors": [], "forces": []
     }"#;
     let m = model(json);
     let why = m.joint_tree.as_ref().expect_err("a four-bar is a loop");
@@ -261,7 +261,7 @@ fn a_free_tree_conserves_energy_in_joint_coordinates() {
           {"type": "translational", "name": "track", "first": "ground.line", "second": "cart.C", "axis": [1, 0]}
         ],
         "drivers": [],
-        "forces": [{"type": "spring_damper", "name": "coupling", "first": "lower.K", "second": "cart.C", "stiffness": 200, "damping": 0, "free_length": 0.4}]
+        "beams": [], "sensors": [], "forces": [{"type": "spring_damper", "name": "coupling", "first": "lower.K", "second": "cart.C", "stiffness": 200, "damping": 0, "free_length": 0.4}]
     }"#;
     let m = model(json);
     let outcome = run(&m, Formulation::JointCoordinates);

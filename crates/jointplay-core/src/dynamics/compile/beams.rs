@@ -1,0 +1,122 @@
+//! Building a beam body from its description: section, mesh and damping.
+
+use crate::beam::{BeamMaterial, BeamSection, ElementOrder, SectionShape};
+use crate::body::{BeamBody, BeamMesh};
+use crate::dynamics::frame::Vec2;
+use crate::error::ModelErrors;
+use crate::spec::{BeamMaterialSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec};
+
+/// Most elements of one beam: far beyond any link's needs, and a bound on the
+/// memory a mistyped element length could ask for.
+pub(super) const MAX_BEAM_ELEMENTS: usize = 2000;
+
+/// The beam described by `spec`; every problem goes to `errors` at `loc`.
+pub(super) fn build_beam(spec: &BeamSpec, loc: &str, errors: &mut ModelErrors) -> Option<BeamBody> {
+    let section = build_section(&spec.section, &format!("{loc}.section"), errors);
+    let (start, end) = (Vec2::new(spec.start[0], spec.start[1]), Vec2::new(spec.end[0], spec.end[1]));
+    let length = (end - start).norm();
+    if !(length.is_finite() && length > 0.0) {
+        errors.push(format!("{loc}.end"), format!("must be a finite point other than the start {:?} m, got {:?} m", spec.start, spec.end));
+        return None;
+    }
+    let mesh = build_mesh(spec, length, &format!("{loc}.mesh"), errors);
+    if !(spec.damping_time.is_finite() && spec.damping_time >= 0.0) {
+        errors.push(format!("{loc}.damping_time"), format!("must be >= 0 s, got {}", spec.damping_time));
+        return None;
+    }
+    BeamBody::straight(start, end, section?, mesh?, spec.damping_time).map_err(|message| errors.push(loc, message)).ok()
+}
+
+/// The division into elements, from their count or their largest length.
+fn build_mesh(spec: &BeamSpec, length: f64, loc: &str, errors: &mut ModelErrors) -> Option<BeamMesh> {
+    let order = match spec.mesh.order {
+        ElementOrderSpec::Linear => ElementOrder::Linear,
+        ElementOrderSpec::Quadratic => ElementOrder::Quadratic,
+    };
+    let elements = match (spec.mesh.elements, spec.mesh.element_length) {
+        (Some(n), None) => n,
+        (None, Some(h)) if h.is_finite() && h > 0.0 => ((length / h) * (1.0 - 1e-12)).ceil().min(usize::MAX as f64) as usize,
+        (None, Some(h)) => {
+            errors.push(format!("{loc}.element_length"), format!("must be > 0 m, got {h}"));
+            return None;
+        }
+        _ => {
+            errors.push(loc, "give exactly one of elements (a count) and element_length");
+            return None;
+        }
+    };
+    if !(1..=MAX_BEAM_ELEMENTS).contains(&elements) {
+        errors.push(loc, format!("a beam has between 1 and {MAX_BEAM_ELEMENTS} elements, got {elements}"));
+        return None;
+    }
+    Some(BeamMesh { order, elements })
+}
+
+/// The section from resultants, from properties and a material, or from a shape and a material.
+fn build_section(spec: &BeamSectionSpec, loc: &str, errors: &mut ModelErrors) -> Option<BeamSection> {
+    let built = match spec {
+        BeamSectionSpec::Resultants { axial_stiffness, shear_stiffness, bending_stiffness, mass_per_length, rotary_inertia_per_length } => BeamSection {
+            axial_stiffness: *axial_stiffness,
+            shear_stiffness: *shear_stiffness,
+            bending_stiffness: *bending_stiffness,
+            mass_per_length: *mass_per_length,
+            rotary_inertia_per_length: *rotary_inertia_per_length,
+        }
+        .validated(),
+        BeamSectionSpec::Properties { area, second_moment, shear_factor, material } => {
+            let m = build_material(material, &format!("{loc}.material"), errors)?;
+            let g = m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio));
+            BeamSection {
+                axial_stiffness: m.youngs_modulus * area,
+                shear_stiffness: shear_factor * g * area,
+                bending_stiffness: m.youngs_modulus * second_moment,
+                mass_per_length: m.density * area,
+                rotary_inertia_per_length: m.density * second_moment,
+            }
+            .validated()
+        }
+        BeamSectionSpec::Rectangle { width, height, material } => {
+            let m = build_material(material, &format!("{loc}.material"), errors)?;
+            BeamSection::of(&SectionShape::Rectangle { width: *width, height: *height }, &m)
+        }
+        BeamSectionSpec::Circle { diameter, material } => {
+            let m = build_material(material, &format!("{loc}.material"), errors)?;
+            BeamSection::of(&SectionShape::Circle { diameter: *diameter }, &m)
+        }
+        BeamSectionSpec::Tube { outer_diameter, inner_diameter, material } => {
+            let m = build_material(material, &format!("{loc}.material"), errors)?;
+            BeamSection::of(&SectionShape::Tube { outer_diameter: *outer_diameter, inner_diameter: *inner_diameter }, &m)
+        }
+    };
+    built.map_err(|message| errors.push(loc, message)).ok()
+}
+
+/// The material, with Poisson's ratio from the shear modulus where that is given.
+fn build_material(spec: &BeamMaterialSpec, loc: &str, errors: &mut ModelErrors) -> Option<BeamMaterial> {
+    let e = spec.youngs_modulus;
+    if !(e.is_finite() && e > 0.0) {
+        errors.push(format!("{loc}.youngs_modulus"), format!("must be > 0 Pa, got {e}"));
+        return None;
+    }
+    if !(spec.density.is_finite() && spec.density > 0.0) {
+        errors.push(format!("{loc}.density"), format!("must be > 0 kg/m^3, got {}", spec.density));
+        return None;
+    }
+    let poisson_ratio = match (spec.poisson_ratio, spec.shear_modulus) {
+        (Some(nu), None) => nu,
+        (None, Some(g)) if g.is_finite() && g > 0.0 => e / (2.0 * g) - 1.0,
+        (None, Some(g)) => {
+            errors.push(format!("{loc}.shear_modulus"), format!("must be > 0 Pa, got {g}"));
+            return None;
+        }
+        _ => {
+            errors.push(loc, "give exactly one of poisson_ratio and shear_modulus");
+            return None;
+        }
+    };
+    if !(poisson_ratio.is_finite() && (-1.0..0.5).contains(&poisson_ratio)) {
+        errors.push(loc, format!("Poisson's ratio must be in [-1, 0.5), got {poisson_ratio} (E = {e} Pa)"));
+        return None;
+    }
+    Some(BeamMaterial { youngs_modulus: e, poisson_ratio, density: spec.density })
+}
