@@ -227,6 +227,12 @@ fn the_spin_up_beam_stretches_as_the_centrifugal_closed_form_says() {
     let expected = rho_a * rate * rate * length.powi(3) / (3.0 * ea);
     assert!((stretch - expected).abs() < 0.02 * expected, "stretch {stretch:.4e} m vs {expected:.4e} m");
     let root: f64 = tr.channel("root.axial_force").unwrap()[from..].iter().sum::<f64>() / 100.0;
+    // the clamp's reaction moment on the beam, about the beam's first end (its marker's
+    // frame), balances the bending moment at the root during the ramp
+    let (clamp, bending) = (tr.channel("clamp.moment").unwrap(), tr.channel("root.bending_moment").unwrap());
+    let during = 10.0_f64.div_euclid(0.02) as usize;
+    // (the gauge's moment is extrapolated to the element's end from its Gauss points: 4 % here)
+    assert!((clamp[during] + bending[during]).abs() < 0.06 * clamp[during].abs(), "clamp {} N m, root {} N m", clamp[during], bending[during]);
     let expected_root = 0.5 * rho_a * rate * rate * length * length;
     assert!((root - expected_root).abs() < 0.03 * expected_root, "root force {root} N vs {expected_root} N");
 }

@@ -109,7 +109,7 @@ pub(crate) fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
 fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 3] {
     let element = &model.elements[e];
     let (slot, sign) = if element.second.is_ground() { (0, -1.0) } else { (1, 1.0) };
-    let centre = ws.frames[if slot == 0 { element.first.0 } else { element.second.0 }].position;
+    let centre = ws.frames[element.frames[slot]].position;
     let mut g = [0.0; 3];
     for k in element.constraints.clone() {
         let rows = model.row_offsets[k]..model.row_offsets[k + 1];
@@ -130,7 +130,7 @@ fn reaction_value(model: &Model, e: usize, which: u8, ws: &Workspace) -> f64 {
         _ => {
             // moment about the element's point on the second body
             let element = &model.elements[e];
-            let frame = &ws.frames[element.second.0];
+            let frame = &ws.frames[element.frames[1]];
             moment - cross(frame.rotate(element.second_point), nalgebra::Vector2::new(fx, fy))
         }
     }
@@ -140,7 +140,7 @@ fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
     let element = &model.elements[e];
     let [fx, fy, moment] = ws.constraint_forces[e];
     match element.kind {
-        ElementKind::DisplacementDriver => ws.frames[element.first.0].rotate(element.axis).dot(&nalgebra::Vector2::new(fx, fy)),
+        ElementKind::DisplacementDriver => ws.frames[element.frames[0]].rotate(element.axis).dot(&nalgebra::Vector2::new(fx, fy)),
         _ => moment,
     }
 }

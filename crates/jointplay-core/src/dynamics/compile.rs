@@ -269,6 +269,7 @@ impl<'s> Compiler<'s> {
             first: first.body,
             second: second.body,
             second_point: second.local,
+            frames: [first.frame, second.frame],
             axis,
             constraints: start..self.model.constraints.len(),
         });

@@ -76,8 +76,10 @@ pub struct IdealElement {
     pub first: BodyIndex,
     /// Second body.
     pub second: BodyIndex,
-    /// Point of the second body at which the reaction moment is reported (body frame) [m].
+    /// Point of the second marker's frame at which the reaction moment is reported [m].
     pub second_point: Vec2,
+    /// Frames of the first and the second marker (the bodies' own, or beam sections).
+    pub frames: [usize; 2],
     /// Unit axis in the first body's frame (translational joints and their drivers) [-].
     pub axis: Vec2,
     /// Indices of its constraints in `Model::constraints`.
