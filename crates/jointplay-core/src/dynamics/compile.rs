@@ -149,14 +149,14 @@ impl<'s> Compiler<'s> {
         self.body_index.insert(&b.name, index);
         self.model.initial_coordinates.extend(beam.reference_coordinates());
         self.model.initial_velocities.extend(beam.rigid_velocities(Vec2::new(b.velocity[0], b.velocity[1]), b.angular_velocity));
-        let (start, end) = (Some(0.0), Some(beam.length));
+        let length = beam.length;
         let kind = BodyKind::Beam(beam);
         self.model.layout.push_body(&kind);
         self.model.bodies.push(Body { name: b.name.clone(), kind });
-        let named = [("start", start, format!("{loc}.start")), ("end", end, format!("{loc}.end"))];
-        let described = b.points.iter().enumerate().map(|(i, p)| (p.name.as_str(), Some(p.arclength), format!("{loc}.points[{i}]")));
+        let named = [("start", 0.0, format!("{loc}.start")), ("end", length, format!("{loc}.end"))];
+        let described = b.points.iter().enumerate().map(|(i, p)| (p.name.as_str(), p.arclength, format!("{loc}.points[{i}]")));
         for (name, arclength, location) in named.into_iter().chain(described) {
-            self.add_beam_point(index, &b.name, name, arclength.unwrap_or(f64::NAN), location);
+            self.add_beam_point(index, &b.name, name, arclength, location);
         }
         self.body_channels(index.0 - 1, &b.name);
     }
