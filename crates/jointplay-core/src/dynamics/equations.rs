@@ -157,6 +157,23 @@ pub fn accelerations(
     let factored = holds_factor(ws, model.row_offsets[model.n_dynamic_constraints], t, q);
     update_frames(model, q, qdot, &mut ws.frames);
     applied_forces(model, memory, t, (q, qdot, z), ws)?;
+    constrained_accelerations(model, t, (q, qdot), stabilization, factored, ws)?;
+    check_finite(model, t, ws)
+}
+
+/// The accelerations `ws.accelerations` and multipliers `ws.multipliers` from
+/// the generalised forces `ws.generalised_force` at `(t, q, qdot)`, the frames
+/// placed there already: the constraints are linearised, and their matrix is
+/// factored unless `factored` says the workspace holds its factor at `(t, q)`.
+/// The map from `Q` to the accelerations is affine: `q_ddot = A(q) Q + b(q, qdot, t)`.
+pub(crate) fn constrained_accelerations(
+    model: &Model,
+    t: f64,
+    (q, qdot): (&[f64], &[f64]),
+    stabilization: Stabilization,
+    factored: bool,
+    ws: &mut Workspace,
+) -> Result<(), SimulationError> {
     let rows = linearise_constraints(model, model.n_dynamic_constraints, t, ws);
     if let Stabilization::Baumgarte { alpha, beta } = stabilization {
         constraint_residuals(model, model.n_dynamic_constraints, t, ws);
@@ -191,7 +208,7 @@ pub fn accelerations(
     } else {
         model.solve_mass(&ws.generalised_force, &mut ws.accelerations);
     }
-    check_finite(model, t, ws)
+    Ok(())
 }
 
 /// Names the first element whose output is not finite.
