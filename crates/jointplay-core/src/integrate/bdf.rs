@@ -14,8 +14,9 @@
 //!
 //! (kappa = 0 gives BDF; the NDF values of kappa buy stability-preserving
 //! accuracy) by Newton iterations with the matrix `I - h / alpha_k J`, J a
-//! finite-difference Jacobian kept across steps and refreshed only when the
-//! iterations fail to converge. The local error is
+//! finite-difference Jacobian or the system's own ([`OdeSystem::jacobian`],
+//! `docs/theory/integrator-jacobian.md`), kept across steps and refreshed
+//! only when the iterations fail to converge. The local error is
 //! `(kappa_k gamma_k + 1/(k+1)) nabla^(k+1) y_(n+1)`; after k+1 steps of one
 //! size the order moves to whichever of k-1, k, k+1 allows the largest step.
 //! Source: Shampine & Reichelt, "The MATLAB ODE Suite", SIAM J. Sci. Comput.
@@ -95,6 +96,11 @@ pub(crate) struct Ndf {
     /// df/dy, row-major, and whether it exists.
     jacobian: Vec<f64>,
     jacobian_valid: bool,
+    /// Whether the system forms the Jacobian ([`OdeSystem::jacobian`]) instead of forward differences.
+    pub(crate) use_system_jacobian: bool,
+    /// `atol_j / rtol` (at least the smallest positive number): below this
+    /// magnitude a finite-difference increment of component j stops shrinking with |y_j|.
+    floors: Vec<f64>,
     /// LU factors of `I - c J`, their pivots, and the c they were built for.
     iteration_matrix: Vec<f64>,
     pivots: Vec<usize>,
@@ -120,6 +126,7 @@ impl Ndf {
     /// Allocates every buffer for a state of `n` components.
     pub(crate) fn new(n: usize, opts: &IntegratorOptions, tol: Tolerances) -> Self {
         let v = || vec![0.0; n];
+        let floors = tol.atol.iter().map(|atol| (atol / tol.rtol).max(f64::MIN_POSITIVE)).collect();
         Self {
             opts: opts.clone(),
             tol,
@@ -131,6 +138,8 @@ impl Ndf {
             equal_steps: 0,
             jacobian: vec![0.0; n * n],
             jacobian_valid: false,
+            use_system_jacobian: false,
+            floors,
             iteration_matrix: vec![0.0; n * n],
             pivots: vec![0; n],
             factored_c: None,
@@ -193,18 +202,31 @@ impl Ndf {
         }
     }
 
-    /// Forward-difference Jacobian at (t, y) into `self.jacobian`: n + 1 evaluations.
+    /// Jacobian at (t, y) into `self.jacobian`: the system's own when it forms
+    /// one and was chosen to, else forward differences (n + 1 evaluations).
     fn update_jacobian<S: OdeSystem>(&mut self, system: &mut S, stats: &mut Statistics, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let n = self.n;
         eval(system, stats, t, y, &mut self.f)?;
+        stats.jacobian_rhs_evaluations += 1;
+        if self.use_system_jacobian {
+            if let Some(cost) = system.jacobian(t, y, &self.floors, &mut self.jacobian)? {
+                stats.rhs_evaluations += cost.rhs_evaluations;
+                stats.jacobian_rhs_evaluations += cost.rhs_evaluations;
+                stats.jacobian_force_evaluations += cost.force_evaluations;
+                stats.jacobian_evaluations += 1;
+                self.jacobian_valid = true;
+                self.factored_c = None;
+                return Ok(());
+            }
+        }
         // increments of sqrt(eps) relative to |y_j|, floored at the scale where atol takes over from rtol
         self.delta.copy_from_slice(y);
         for j in 0..n {
-            let floor = (self.tol.atol[j] / self.tol.rtol).max(f64::MIN_POSITIVE);
-            let step = f64::EPSILON.sqrt() * y[j].abs().max(floor);
+            let step = f64::EPSILON.sqrt() * y[j].abs().max(self.floors[j]);
             self.delta[j] = y[j] + step;
             let step = self.delta[j] - y[j];
             eval(system, stats, t, &self.delta, &mut self.correction)?;
+            stats.jacobian_rhs_evaluations += 1;
             for i in 0..n {
                 self.jacobian[i * n + j] = (self.correction[i] - self.f[i]) / step;
             }

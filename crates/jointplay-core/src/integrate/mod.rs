@@ -33,10 +33,30 @@ mod statistics;
 #[cfg(test)]
 mod tests;
 
-pub use options::{IntegratorOptions, Method, MIN_RTOL};
+pub use options::{IntegratorOptions, JacobianMethod, Method, MIN_RTOL};
 pub use statistics::Statistics;
 
 use crate::error::SimulationError;
+
+/// Whether a system can form the Jacobian of its right-hand side itself ([`OdeSystem::jacobian`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SystemJacobian {
+    /// It cannot: the implicit method takes forward differences.
+    Unavailable,
+    /// It can, on request ([`JacobianMethod::Structured`]).
+    Available,
+    /// It can, and it pays: [`JacobianMethod::Auto`] takes it.
+    Preferred,
+}
+
+/// What a Jacobian formed by the system cost, for the [`Statistics`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct JacobianCost {
+    /// Full right-hand sides it evaluated itself (beyond the integrator's at the same state).
+    pub rhs_evaluations: usize,
+    /// Evaluations of the local forces (see [`Statistics::jacobian_force_evaluations`]).
+    pub force_evaluations: usize,
+}
 
 /// A first-order system dy/dt = f(t, y) with discrete state the integrator does not see.
 #[allow(clippy::len_without_is_empty)]
@@ -52,6 +72,24 @@ pub trait OdeSystem {
     /// system whose components have different units (metres and pascals) scales
     /// each by its kind, so that one atol means the same for all (default: all 1).
     fn absolute_tolerance_scales(&self, _scales: &mut [f64]) {}
+
+    /// Whether [`Self::jacobian`] forms the Jacobian, and whether it pays
+    /// (default: [`SystemJacobian::Unavailable`]).
+    fn system_jacobian(&self) -> SystemJacobian {
+        SystemJacobian::Unavailable
+    }
+
+    /// The Jacobian `df/dy` at (t, y) into `jacobian` (row-major, `len()` square),
+    /// called by the implicit method right after `rhs` at the same (t, y).
+    /// Where the system takes forward differences of its own, the increment of
+    /// component j is `sqrt(eps) max(|y_j|, floors[j])` (`floors[j]`: the
+    /// magnitude below which the absolute tolerance governs y_j, as the
+    /// integrator's own differences use). Returns what it cost, or `None` when
+    /// the system forms no Jacobian (the default): the integrator then takes
+    /// forward differences of `rhs`. Must not allocate after its first call.
+    fn jacobian(&mut self, _t: f64, _y: &[f64], _floors: &[f64], _jacobian: &mut [f64]) -> Result<Option<JacobianCost>, SimulationError> {
+        Ok(None)
+    }
 
     /// Number of event functions (default 0).
     fn n_events(&self) -> usize {
@@ -204,6 +242,11 @@ pub fn integrate<S: OdeSystem>(
         }
         Method::NumericalDifferentiation => {
             let mut stepper = bdf::Ndf::new(n, options, control::Tolerances::new(system, options));
+            stepper.use_system_jacobian = match (options.jacobian, system.system_jacobian()) {
+                (JacobianMethod::FiniteDifference, _) | (_, SystemJacobian::Unavailable) => false,
+                (JacobianMethod::Structured, _) | (JacobianMethod::Auto, SystemJacobian::Preferred) => true,
+                (JacobianMethod::Auto, SystemJacobian::Available) => false,
+            };
             driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
         }
     };

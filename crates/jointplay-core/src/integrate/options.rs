@@ -12,8 +12,21 @@ pub enum Method {
     AdamsPredictorCorrector,
     /// Variable-order (1 to 5) numerical differentiation formulas of
     /// Shampine & Reichelt (1997), implicit, with simplified Newton
-    /// iterations on a finite-difference Jacobian: for stiff problems.
+    /// iterations on a finite-difference or the system's own Jacobian: for stiff problems.
     NumericalDifferentiation,
+}
+
+/// How the implicit method forms the Jacobian `df/dy` of its Newton iterations.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JacobianMethod {
+    /// The system's own Jacobian where it says that it pays
+    /// ([`SystemJacobian::Preferred`](super::SystemJacobian::Preferred): a
+    /// mechanism in absolute coordinates with a beam), forward differences otherwise.
+    Auto,
+    /// Forward differences of the whole right-hand side: n + 1 evaluations.
+    FiniteDifference,
+    /// The system's own Jacobian wherever it has one (forward differences where not).
+    Structured,
 }
 
 /// Options of [`integrate`](super::integrate); check them with [`IntegratorOptions::validate`].
@@ -45,6 +58,8 @@ pub struct IntegratorOptions {
     /// vibrations of a flexible body put their eigenvalues (Shampine and
     /// Reichelt, "The MATLAB ODE suite", SIAM J. Sci. Comput. 18 (1997) 1-22, §2.2).
     pub max_order: usize,
+    /// How the implicit method forms its Jacobian (ignored by the other methods).
+    pub jacobian: JacobianMethod,
 }
 
 /// Smallest relative tolerance accepted: 100 machine epsilons, below which
@@ -55,7 +70,8 @@ impl Default for IntegratorOptions {
     /// Dormand-Prince, rtol 1e-6 (six digits, finer than plotted curves),
     /// atol 1e-9 (nanometre-scale for positions in metres), no step limit,
     /// automatic first step, min_step 1e-14 s (far below any contact time
-    /// scale, above rounding of t), 10 million steps, a sample per step.
+    /// scale, above rounding of t), 10 million steps, a sample per step,
+    /// the Jacobian chosen automatically (`docs/theory/integrator-jacobian.md`).
     fn default() -> Self {
         Self {
             method: Method::DormandPrince45,
@@ -67,6 +83,7 @@ impl Default for IntegratorOptions {
             max_steps: 10_000_000,
             output_step: None,
             max_order: 5,
+            jacobian: JacobianMethod::Auto,
         }
     }
 }

@@ -18,9 +18,18 @@ pub struct Statistics {
     pub largest_step: f64,
     /// Restarts after an event or after `accept()` returned true.
     pub restarts: usize,
-    /// Finite-difference Jacobians formed (implicit method only; each costs
-    /// n + 1 of the `rhs_evaluations`).
+    /// Jacobians formed (implicit method only), by forward differences or by the system.
     pub jacobian_evaluations: usize,
+    /// Of `rhs_evaluations`, those spent on Jacobians: n + 1 for each formed by
+    /// forward differences, 1 (the evaluation at the Jacobian's state) for each
+    /// the system formed itself.
+    pub jacobian_rhs_evaluations: usize,
+    /// Evaluations of the local forces (the elements' forces and state rates,
+    /// without the mass and constraint solves of a right-hand side) spent on the
+    /// Jacobians the system formed itself: one at the Jacobian's state and one
+    /// per colour of coordinates perturbed together, each evaluating only the
+    /// elements that read a perturbed coordinate (`docs/theory/integrator-jacobian.md`).
+    pub jacobian_force_evaluations: usize,
     /// LU factorisations of the Newton iteration matrix (implicit method only).
     pub factorizations: usize,
 }
