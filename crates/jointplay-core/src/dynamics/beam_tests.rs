@@ -11,13 +11,13 @@ use crate::dynamics::frame::{Frame, Vec2};
 use crate::integrate::{IntegratorOptions, Method};
 use crate::spec::ModelSpec;
 
-fn model(json: serde_json::Value) -> Model {
+pub(super) fn model(json: serde_json::Value) -> Model {
     let spec: ModelSpec = serde_json::from_value(json).expect("valid spec");
     compile(&spec).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// A free beam of `elements` quadratic elements, 2 m long, with a rigid spin `omega` [rad/s].
-fn free_beam(elements: usize, omega: f64) -> Model {
+pub(super) fn free_beam(elements: usize, omega: f64) -> Model {
     model(serde_json::json!({
         "name": "free beam", "gravity": [0, 0], "ground_points": [], "bodies": [],
         "beams": [{"name": "beam", "start": [0.0, 0.0], "end": [2.0, 0.0],
@@ -38,7 +38,7 @@ fn beam_of(model: &Model) -> &crate::body::BeamBody {
 }
 
 /// A deformed configuration and velocities of the free beam (not a rigid motion).
-fn deformed(model: &Model) -> (Vec<f64>, Vec<f64>) {
+pub(super) fn deformed(model: &Model) -> (Vec<f64>, Vec<f64>) {
     let mut q = model.initial_coordinates.clone();
     let mut v = model.initial_velocities.clone();
     for (k, (node, rate)) in q.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).enumerate() {
@@ -180,7 +180,7 @@ fn an_undamped_beam_spinning_and_vibrating_in_free_flight_keeps_its_energy_and_m
 
 /// The spin-up beam of Simo and Vu-Quoc (1986): a hub driven through the
 /// speed ramp to `rate` [rad/s] over 15 s, the beam clamped to it.
-fn spin_up_beam(rate: f64, elements: usize, damping_time: f64) -> Model {
+pub(super) fn spin_up_beam(rate: f64, elements: usize, damping_time: f64) -> Model {
     model(serde_json::json!({
         "name": "spin-up beam", "gravity": [0, 0], "ground_points": [{"name": "O", "position": [0, 0]}],
         "bodies": [{"name": "hub", "mass": 1.0, "inertia": 1.0, "position": [0, 0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
@@ -238,7 +238,7 @@ fn the_spin_up_beam_stretches_as_the_centrifugal_closed_form_says() {
 }
 
 /// A slider-crank whose rod is a beam (`Some(elements)`) or a rigid body (`None`).
-fn slider_crank(rod: Option<usize>) -> Model {
+pub(super) fn slider_crank(rod: Option<usize>) -> Model {
     // a 15 x 15 mm bar with the density of steel and 100 times its stiffness (E = 2.1e13 Pa);
     // the rigid rod has the beam's mass and inertia (its sections' rotary inertia included)
     let (l, rho_a, rho_i) = (0.12, 1.75, 3.3e-5);

@@ -15,6 +15,7 @@ mod extrema;
 mod extrema_summary;
 pub mod frame;
 mod generalised_force;
+mod jacobian;
 pub mod joint_coordinates;
 mod layout;
 mod model;
@@ -52,3 +53,5 @@ mod tests;
 mod element_tests;
 #[cfg(test)]
 mod beam_tests;
+#[cfg(test)]
+mod jacobian_tests;

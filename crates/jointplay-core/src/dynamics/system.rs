@@ -9,12 +9,14 @@ use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
 use super::joint_coordinates::{self, joint_accelerations, JointTree};
 use super::frame::Marker;
+use super::jacobian::StructuredJacobian;
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::{Model, Progress, Workspace};
 use crate::error::SimulationError;
 use crate::force::{ElementFault, ElementMemory};
-use crate::integrate::OdeSystem;
+use crate::body::BodyKind;
+use crate::integrate::{JacobianCost, OdeSystem, SystemJacobian};
 
 /// Newton iterations allowed when projecting after a step: the drift of one
 /// step is at the level of the integration tolerance, so one or two suffice.
@@ -264,6 +266,36 @@ impl OdeSystem for MechanismSystem<'_> {
             self.step_end.remember_evaluation(t, y, false);
         }
         Ok(())
+    }
+
+    fn system_jacobian(&self) -> SystemJacobian {
+        // (the joint-coordinate formulation keeps forward differences)
+        if self.tree.is_some() || !self.model.layout.identity_position_rates {
+            SystemJacobian::Unavailable
+        } else if self.model.bodies.iter().any(|b| matches!(b.kind, BodyKind::Beam(_))) {
+            SystemJacobian::Preferred
+        } else {
+            SystemJacobian::Available
+        }
+    }
+
+    fn jacobian(&mut self, t: f64, y: &[f64], floors: &[f64], jacobian: &mut [f64]) -> Result<Option<JacobianCost>, SimulationError> {
+        if self.system_jacobian() == SystemJacobian::Unavailable {
+            return Ok(None);
+        }
+        let mut cost = JacobianCost::default();
+        // the constraint linearisation and factor at (t, y): the integrator's evaluation there, normally
+        if !self.step_end.holds_evaluation(t, y) {
+            self.step_end.evaluated_at = None;
+            self.evaluate(t, y)?;
+            self.step_end.remember_evaluation(t, y, false);
+            cost.rhs_evaluations += 1;
+        }
+        let mut structured = self.ws.structured_jacobian.take().unwrap_or_else(|| Box::new(StructuredJacobian::new(self.model)));
+        let filled = structured.fill(self.model, self.memory, t, y, floors, self.ws, jacobian);
+        self.ws.structured_jacobian = Some(structured);
+        cost.force_evaluations = filled?;
+        Ok(Some(cost))
     }
 
     fn absolute_tolerance_scales(&self, scales: &mut [f64]) {

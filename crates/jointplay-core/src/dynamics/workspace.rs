@@ -2,6 +2,7 @@
 //! never allocates.
 
 use super::frame::Frame;
+use super::jacobian::StructuredJacobian;
 use super::joint_coordinates::JointWorkspace;
 use super::Model;
 use crate::force::{ElementWork, ForceElement};
@@ -66,6 +67,8 @@ pub struct Workspace {
     pub constraint_forces: Vec<[f64; 3]>,
     /// Scratch of the joint-coordinate formulation (empty when the model is no tree).
     pub joint: JointWorkspace,
+    /// The structure and buffers of the structured Jacobian, made at its first use.
+    pub(crate) structured_jacobian: Option<Box<StructuredJacobian>>,
 }
 
 impl Workspace {
@@ -104,6 +107,7 @@ impl Workspace {
                 Ok(tree) => JointWorkspace::new(tree, n, model.layout.len(), model.bodies.len()),
                 Err(_) => JointWorkspace::default(),
             },
+            structured_jacobian: None,
         }
     }
 }
