@@ -102,6 +102,8 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
     stats.set_item("largest_step", s.largest_step)?;
     stats.set_item("restarts", s.restarts)?;
     stats.set_item("jacobian_evaluations", s.jacobian_evaluations)?;
+    stats.set_item("jacobian_rhs_evaluations", s.jacobian_rhs_evaluations)?;
+    stats.set_item("jacobian_force_evaluations", s.jacobian_force_evaluations)?;
     stats.set_item("factorizations", s.factorizations)?;
     stats.set_item("formulation", o.formulation.name())?;
     out.set_item("statistics", stats)?;
