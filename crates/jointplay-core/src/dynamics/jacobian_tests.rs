@@ -410,3 +410,36 @@ fn the_stiff_rod_with_the_structured_jacobian_follows_the_finite_difference_run_
     // 1.01 rtol, 2.7e-8 from rtol / 10), slider.ax 1.1 m/s^2 of a 1600 m/s^2 peak (1.9 and 3.0)
     compare_runs("slider-crank", &m, 0.05, integrator, Stabilization::Baumgarte { alpha: 50.0, beta: 50.0 }, &["slider.x", "slider.ax"], &[1e-8, 5.0]);
 }
+
+/// Wall time of the spin-up beam (17 s, rtol 1e-5, orders 1-2, Baumgarte 10/10) with
+/// either Jacobian, interleaved runs; prints medians and ranges, asserts nothing
+/// (`cargo test --release -- --ignored --nocapture spin_up_beam_wall_time`; environment:
+/// JOINTPLAY_RUNS (5), JOINTPLAY_ELEMENTS (4), JOINTPLAY_ONLY=FiniteDifference or Structured).
+#[test]
+#[ignore]
+fn spin_up_beam_wall_time() {
+    let elements: usize = std::env::var("JOINTPLAY_ELEMENTS").ok().and_then(|s| s.parse().ok()).unwrap_or(4);
+    let m = spin_up_beam(6.0, elements, 0.0);
+    println!("{elements} elements, {} states", m.layout.len());
+    let integrator = IntegratorOptions { method: Method::NumericalDifferentiation, rtol: 1e-5, atol: 1e-7, output_step: Some(0.02), max_order: 2, ..IntegratorOptions::default() };
+    let runs: usize = std::env::var("JOINTPLAY_RUNS").ok().and_then(|s| s.parse().ok()).unwrap_or(5);
+    let mut times = [Vec::new(), Vec::new()];
+    for _ in 0..runs {
+        for (k, jacobian) in [JacobianMethod::FiniteDifference, JacobianMethod::Structured].into_iter().enumerate() {
+            if std::env::var("JOINTPLAY_ONLY").is_ok_and(|only| only != format!("{jacobian:?}")) {
+                times[k].push(0.0);
+                continue;
+            }
+            let start = std::time::Instant::now();
+            let (_, stats) = run(&m, 17.0, IntegratorOptions { jacobian, ..integrator.clone() }, Stabilization::Baumgarte { alpha: 10.0, beta: 10.0 }, &[]);
+            times[k].push(start.elapsed().as_secs_f64());
+            if times[k].len() == 1 {
+                println!("{jacobian:?}: {stats:?}");
+            }
+        }
+    }
+    for (k, name) in ["finite differences", "structured"].iter().enumerate() {
+        times[k].sort_by(f64::total_cmp);
+        println!("{name}: median {:.3} s over {runs} runs, range {:.3} to {:.3} s", times[k][runs / 2], times[k][0], times[k][runs - 1]);
+    }
+}
