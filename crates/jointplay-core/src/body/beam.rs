@@ -24,7 +24,8 @@ use std::borrow::Cow;
 use std::ops::Range;
 
 use super::{CoordinateChannels, MassBlock, PlanarRigidBody, SectionSite, Site};
-use crate::beam::{BeamElement, BeamSection, BeamStrains, ElementOrder, MAX_ELEMENT_COORDINATES};
+use crate::beam::{vibration_modes, BeamElement, BeamSection, BeamStrains, ElementOrder, MAX_ELEMENT_COORDINATES};
+use nalgebra::DMatrix;
 use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
 use crate::linalg::PatternLdl;
 
@@ -288,6 +289,44 @@ impl BeamBody {
         MassBlock::ConstantFactored { program: &self.mass_program, factor: &self.mass_factor }
     }
 
+    /// The consistent mass and the tangent stiffness of the whole beam at `q`,
+    /// dense (for natural modes and reductions, once before a run).
+    pub fn dense_mass_and_stiffness(&self, q: &[f64]) -> (DMatrix<f64>, DMatrix<f64>) {
+        let n = self.n_coordinates();
+        let (mut mass, mut stiffness) = (DMatrix::zeros(n, n), DMatrix::zeros(n, n));
+        for &(i, j, m) in &self.mass_entries {
+            let (i, j) = (i as usize, j as usize);
+            mass[(i, j)] = m;
+            mass[(j, i)] = m;
+        }
+        for (e, element) in self.elements.iter().enumerate() {
+            let range = self.element_coordinates(e);
+            let nc = range.len();
+            let mut k = [0.0; MAX_ELEMENT_COORDINATES * MAX_ELEMENT_COORDINATES];
+            element.add_tangent_stiffness(&q[range.clone()], &mut k[..nc * nc]);
+            for (a, i) in range.clone().enumerate() {
+                for (b, j) in range.clone().enumerate() {
+                    stiffness[(i, j)] += k[a * nc + b];
+                }
+            }
+        }
+        (mass, stiffness)
+    }
+
+    /// Natural frequencies [Hz] of the unstressed beam, lowest first, `count` of
+    /// each: free-free (its three rigid modes left out) and clamped at its
+    /// first end.
+    pub fn natural_frequencies(&self, count: usize) -> Result<(Vec<f64>, Vec<f64>), String> {
+        let (mass, stiffness) = self.dense_mass_and_stiffness(&self.reference_coordinates());
+        let hertz = |w: &f64| w / (2.0 * std::f64::consts::PI);
+        let free = vibration_modes(&mass, &stiffness, &[])?;
+        let clamped = vibration_modes(&mass, &stiffness, &[0, 1, 2])?;
+        Ok((
+            free.angular_frequencies.iter().skip(3).take(count).map(hertz).collect(),
+            clamped.angular_frequencies.iter().take(count).map(hertz).collect(),
+        ))
+    }
+
     /// Subtracts every element's internal forces, with strain-rate damping, from `out`.
     pub fn subtract_internal_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]) {
         for (e, element) in self.elements.iter().enumerate() {
@@ -331,22 +370,24 @@ impl BeamBody {
     }
 
     /// Strains and stress resultants `(N [N], Q [N], M [N m])` at a section, with the
-    /// viscous part of the damping (the section's true internal forces).
+    /// viscous part of the damping (the section's true internal forces), recovered
+    /// from the element's reduced-rule points (`BeamElement::recovered_strains`).
     pub fn section_state(&self, site: &SectionSite, q: &[f64], v: &[f64]) -> (BeamStrains, [f64; 3]) {
         let e = site.element as usize;
         let range = self.element_coordinates(e);
         let element = &self.elements[e];
-        let strains = element.strains(&q[range.clone()], site.xi);
-        let mut total = strains;
-        if self.damping_time > 0.0 {
-            let rate = element.strain_rates_at(&q[range.clone()], &v[range], site.xi);
-            total.axial += self.damping_time * rate.axial;
-            total.shear += self.damping_time * rate.shear;
-            total.curvature += self.damping_time * rate.curvature;
-        }
+        let damped = self.damping_time > 0.0;
+        let (strains, rates) = element.recovered_strains(&q[range.clone()], damped.then(|| &v[range]), site.xi);
+        let total = |value: f64, rate: f64| value + self.damping_time * rate;
         let s = &element.section;
-        (strains, [s.axial_stiffness * total.axial, s.shear_stiffness * total.shear, s.bending_stiffness * total.curvature])
+        let resultants = [
+            s.axial_stiffness * total(strains.axial, rates.axial),
+            s.shear_stiffness * total(strains.shear, rates.shear),
+            s.bending_stiffness * total(strains.curvature, rates.curvature),
+        ];
+        (strains, resultants)
     }
+
 
     /// Channels of every node's coordinates: `node<k>_x`, `node<k>_y`, `node<k>_angle` and their rates.
     pub fn coordinate_channels(&self) -> Vec<CoordinateChannels> {
