@@ -38,6 +38,9 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
     if let Some(v) = d.get_item("max_steps")?.filter(|v| !v.is_none()) {
         o.integrator.max_steps = v.extract()?;
     }
+    if let Some(v) = d.get_item("max_order")?.filter(|v| !v.is_none()) {
+        o.integrator.max_order = v.extract()?;
+    }
     if let Some(v) = d.get_item("max_output_bytes")?.filter(|v| !v.is_none()) {
         o.max_output_bytes = Some(v.extract()?);
     }
@@ -184,9 +187,10 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
     let d = PyDict::new(py);
     d.set_item("name", &m.name)?;
     let bodies = PyList::empty(py);
-    for b in &m.bodies {
+    for (b, address) in m.bodies.iter().zip(&m.layout.bodies) {
         let e = PyDict::new(py);
         e.set_item("name", &b.name)?;
+        e.set_item("coordinates", (address.q, address.nq))?;
         match &b.kind {
             BodyKind::PlanarRigid(rigid) => {
                 e.set_item("kind", "planar_rigid")?;

@@ -130,6 +130,21 @@ impl CoreModel {
         conv::describe(py, &self.model)
     }
 
+    /// Natural frequencies [Hz] of each beam, unstressed: `{name: (free-free, clamped at its start)}`,
+    /// `count` of each; a beam with more than `max_coordinates` coordinates is left out (a dense eigensolve).
+    fn beam_frequencies<'py>(&self, py: Python<'py>, count: usize, max_coordinates: usize) -> PyResult<Bound<'py, PyDict>> {
+        let out = PyDict::new(py);
+        for body in &self.model.bodies {
+            if let jointplay_core::body::BodyKind::Beam(beam) = &body.kind {
+                if beam.n_coordinates() <= max_coordinates {
+                    let frequencies = guarded(|| beam.natural_frequencies(count))?.map_err(PyRuntimeError::new_err)?;
+                    out.set_item(&body.name, frequencies)?;
+                }
+            }
+        }
+        Ok(out)
+    }
+
     /// Consistent initial coordinates and velocities at `t0`, or an error record.
     fn assemble<'py>(&self, py: Python<'py>, t0: f64) -> PyResult<Bound<'py, PyDict>> {
         let model = Arc::clone(&self.model);

@@ -101,3 +101,28 @@ fn the_marker_acceleration_is_the_derivative_of_its_velocity_along_a_motion() {
     body.position_rates(&Q, &V, &mut qdot);
     assert_eq!(qdot, V);
 }
+
+/// Euler-Bernoulli `beta L` of a clamped-free and a free-free uniform beam
+/// (Blevins, Formulas for Natural Frequency and Mode Shape, 1979, table 8-1).
+const CLAMPED_FREE_BETA_L: [f64; 3] = [1.875_104_07, 4.694_091_13, 7.854_757_44];
+const FREE_FREE_BETA_L: [f64; 3] = [4.730_040_74, 7.853_204_62, 10.995_607_84];
+
+#[test]
+fn a_slender_beam_body_has_the_euler_bernoulli_natural_frequencies() {
+    use crate::beam::{BeamMaterial, BeamSection, ElementOrder, SectionShape};
+    // L/h = 100: shear and rotary inertia lower the third clamped-free frequency by about 1e-3
+    let steel = BeamMaterial { youngs_modulus: 207e9, poisson_ratio: 0.3, density: 7850.0 };
+    let section = BeamSection::of(&SectionShape::Rectangle { width: 0.02, height: 0.01 }, &steel).unwrap();
+    let length = 1.0;
+    let mesh = BeamMesh { order: ElementOrder::Quadratic, elements: 12 };
+    let beam = BeamBody::straight(Vec2::new(0.2, -0.1), Vec2::new(0.2 + 0.6 * length, -0.1 + 0.8 * length), section, mesh, 0.0).unwrap();
+    let (free, clamped) = beam.natural_frequencies(3).unwrap();
+    let unit = (section.bending_stiffness / section.mass_per_length).sqrt() / (length * length) / (2.0 * std::f64::consts::PI);
+    // the beam's axial modes lie far above its first three bending modes at L/h = 100
+    for (k, beta) in CLAMPED_FREE_BETA_L.iter().enumerate() {
+        assert!((clamped[k] / (beta * beta * unit) - 1.0).abs() < 2e-3, "clamped-free mode {}: {} Hz", k + 1, clamped[k]);
+    }
+    for (k, beta) in FREE_FREE_BETA_L.iter().enumerate() {
+        assert!((free[k] / (beta * beta * unit) - 1.0).abs() < 2e-3, "free-free mode {}: {} Hz", k + 1, free[k]);
+    }
+}
