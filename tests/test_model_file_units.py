@@ -100,7 +100,8 @@ def test_out_of_range_bare_value_is_shown_in_the_declared_unit():
     ('lenght = "mm"', 'units.lenght: unknown kind of quantity (did you mean "length"?); kinds: length, mass, '
                       'inertia, time, angle, angular_velocity, angular_acceleration, velocity, acceleration, force, '
                       'torque, stiffness, damping, rotational_stiffness, rotational_damping, area, volume, '
-                      'volume_flow, pressure, viscosity, frequency'),
+                      'volume_flow, pressure, viscosity, frequency, density, second_moment_of_area, '
+                      'bending_stiffness, mass_per_length, rotary_inertia_per_length'),
     ('length = "kg"', "units.length: must be a length (e.g. \"0.5 mm\"), got 'kg', which is a mass"),
     ('mass = "1 kg"', "units.mass: must be a unit without a number, e.g. \"kg\", got '1 kg'"),
     ("time = 0.001", 'units.time: must be a unit of time as a string, e.g. "ms", got 0.001'),
@@ -139,7 +140,8 @@ def test_reynolds_keys_are_accepted_on_a_reynolds_model():
     assert (reynolds["cavitation"], reynolds["n_circumferential"], reynolds["n_axial"]) == ("gumbel", 24, 8)
 
 
-EMPTY = "the model has no bodies: describe at least one as a [bodies.NAME] table with its mass and inertia"
+EMPTY = ("the model has no bodies: describe at least one as a [bodies.NAME] table with its mass and inertia "
+         "(or a flexible link as a [beams.NAME] table)")
 
 
 @pytest.mark.parametrize("text", ["", '[model]\nname = "nothing"\n', "[bodies]\n"])

@@ -249,15 +249,20 @@ def test_every_key_fixture_uses_every_key_of_every_table():
                 visit(p.LAWS[param.of][value["law"]], value)
             elif param.kind == "table":
                 visit(param.of, value)
+            elif param.kind == "variant":
+                tables = p.VARIANTS[param.of]
+                visit(tables[value[next(iter(tables.values())).tag]], value)
             elif param.kind == "function" and isinstance(value, dict):
                 visit(p.FUNCTIONS[value["kind"]], value)
 
     visit(p.MODEL, doc["model"])
     visit(p.GROUND, doc["ground"])
     visit(p.SIMULATION, doc["simulation"])
-    for section, tables in (("bodies", None), ("joints", p.JOINTS), ("drivers", None), ("forces", p.FORCES)):
+    for section, tables in (("bodies", None), ("beams", None), ("joints", p.JOINTS), ("drivers", None),
+                            ("forces", p.FORCES), ("sensors", p.SENSORS)):
         for raw in doc[section].values():
-            visit(tables[raw["type"]] if tables else {"bodies": p.BODY, "drivers": p.DRIVER}[section], raw)
+            visit(tables[raw["type"]] if tables else {"bodies": p.BODY, "beams": p.BEAM, "drivers": p.DRIVER}[section],
+                  raw)
     missing = [(t.name, key) for t in p.all_tables() for key in [None, *t.keys()] if (id(t), key) not in seen]
     assert missing == []
 

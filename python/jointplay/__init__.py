@@ -10,7 +10,7 @@ and look at named channels in SI units::
     results["bar.omega"]
 """
 
-from . import functions, laws
+from . import functions, laws, sections
 from ._core import __version__
 from .errors import ConvergenceError, JointplayError, JointplayWarning, ModelError, Problem, SimulationError
 from .model import Model
@@ -37,5 +37,5 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "ConvergenceError", "JointplayError", "JointplayWarning", "Model", "ModelError", "Problem", "Results",
-    "SimulationError", "__version__", "functions", "laws", "load", "loads", "open_results",
+    "SimulationError", "__version__", "functions", "laws", "load", "loads", "open_results", "sections",
 ]

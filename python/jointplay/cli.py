@@ -189,6 +189,21 @@ def _fmt(value: float, unit: str = "") -> str:
 
 # check -----------------------------------------------------------------------
 
+def _beam_table(spec: dict, described: dict, frequencies: dict) -> Table:
+    """Each beam's mesh and its lowest natural frequencies, unstressed (free-free, and clamped at its start)."""
+    t = Table("beam", "length", "mass", "elements", "nodes", "free-free (Hz)", "clamped at start (Hz)",
+              title="flexible links: mesh and lowest bending frequencies, unstressed")
+    for b in spec["beams"]:
+        d = described[b["name"]]
+        modes = frequencies.get(b["name"])
+        free, clamped = (("-", "-") if modes is None else
+                         (", ".join(f"{f:.4g}" for f in modes["free_free"]),
+                          ", ".join(f"{f:.4g}" for f in modes["clamped"])))
+        t.add_row(b["name"], _fmt(d["length"], "m"), _fmt(d["mass"], "kg"), f"{d['elements']} {d['order']}",
+                  str(d["nodes"]), free, clamped)
+    return t
+
+
 def _acts_on(force: dict) -> str:
     """``ground.C -> boom.R``: the points and bodies a force element refers to, from its definition."""
     from . import parameters as p
@@ -233,11 +248,16 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
     q0 = info["initial_coordinates"]
     out.print(f"[bold]{spec['name']}[/]  ({model})")
     bodies = Table("body", "mass", "inertia", "x (mm)", "y (mm)", "angle (deg)", title="bodies, assembled at t0")
-    for k, b in enumerate(spec["bodies"]):
-        x, y, phi = q0[3 * k: 3 * k + 3]
+    described = {b["name"]: b for b in info["bodies"]}
+    for b in spec["bodies"]:
+        first, _ = described[b["name"]]["coordinates"]
+        x, y, phi = q0[first: first + 3]
         bodies.add_row(b["name"], _fmt(b["mass"], "kg"), _fmt(b["inertia"], "kg m^2"),
                        f"{x * 1e3:.3f}", f"{y * 1e3:.3f}", f"{math.degrees(phi):.3f}")
-    out.print(bodies)
+    if spec["bodies"]:
+        out.print(bodies)
+    if spec.get("beams"):
+        out.print(_beam_table(spec, described, info["beam_frequencies"]))
     joints = Table("joint or driver", "kind", "first body", "second body", "equations", title="constraints")
     for e in info["elements"]:
         if e["kind"] != "AssemblyLock":  # clearance joints are held only while assembling
@@ -257,13 +277,14 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
             t.add_row(f["name"], f["type"], _acts_on(f), _force_details(f))
         out.print(t)
     dof = info["degrees_of_freedom"]
-    free = dof - 2 * len(clearance)
+    elastic = sum(b["coordinates"][1] - 3 for b in info["bodies"] if b["kind"] == "beam")
+    free = dof - 2 * len(clearance) - elastic
     states = info.get("n_element_states", 0)
     out.print(f"coordinates {info['n_coordinates']}, "
               + (f"element states {states}, " if states else "")
               + f"constraint equations {info['n_equations']}, "
               f"degrees of freedom {dof} ({2 * len(clearance)} from {len(clearance)} clearance joint(s), "
-              f"{free} not driven)")
+              + (f"{elastic} elastic of the beams, " if elastic else "") + f"{free} not driven)")
     if info.get("joint_coordinates") is not None:
         out.print(f"formulation (auto): joint coordinates, {info['joint_coordinates']} of them: the ideal joints "
                   "form a tree, so no constraint equation is solved while simulating")
@@ -432,7 +453,8 @@ def print_summary(results) -> None:
     for key in ("accepted_steps", "rejected_steps", "rhs_evaluations", "events", "restarts"):
         if key in st:
             t.add_row(key.replace("_", " "), str(st[key]))
-    for key in ("jacobian_evaluations", "factorizations"):  # implicit method only
+    for key in ("jacobian_evaluations", "jacobian_rhs_evaluations", "jacobian_force_evaluations",
+                "factorizations"):  # implicit method only
         if st.get(key):
             t.add_row(key.replace("_", " "), str(st[key]))
     for key in ("smallest_step", "largest_step"):

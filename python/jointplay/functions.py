@@ -65,6 +65,12 @@ def table(times: Sequence[float], values: Sequence[float]) -> dict:
     return {"kind": "table", "times": [_value(t) for t in times], "values": [_value(v) for v in values]}
 
 
+def speed_ramp(final_rate: float, ramp_time: float) -> dict:
+    """A spin-up: at rest until t = 0, the rate rises smoothly to ``final_rate`` (value per second) over
+    ``ramp_time`` [s] and stays there (Simo and Vu-Quoc 1986)."""
+    return {"kind": "speed_ramp", "ramp_time": _value(ramp_time), "final_rate": _value(final_rate)}
+
+
 def as_function(value: Any) -> dict:
     """A number (or a string with a unit, or a pint Quantity) becomes a constant function; a function
     dict is passed through."""

@@ -40,6 +40,9 @@ METHODS = {**{m: m for m in p.METHODS}, **dict(p.METHOD_ALIASES)}
 STABILIZATIONS = p.STABILIZATIONS
 FORMULATIONS = p.FORMULATIONS
 _CLEARANCE, _SIMULATION = p.CLEARANCE_REVOLUTE, p.SIMULATION
+#: Largest beam (coordinates) whose natural frequencies :meth:`Model.check` computes: a dense eigensolve of
+#: this size takes about a second.
+_MAX_MODAL_COORDINATES = 1500
 
 
 def _arg(table: str, key: str, raw: Any, where: str) -> Any:
@@ -145,6 +148,13 @@ class Model:
     add_body = _adds(p.BODY, "bodies", summary="A rigid body, its frame at the centre of mass: mass, inertia "
                      "about the centre of mass, approximate initial position, angle and velocities; named points "
                      "in body coordinates (``points={\"A\": (\"25 mm\", 0)}``).")
+    add_beam = _adds(p.BEAM, "beams", positional=3, summary="A flexible link: a geometrically exact planar beam from "
+                     "``start`` to ``end`` [m], straight and unstressed at the start; ``section`` from "
+                     ":mod:`jointplay.sections` (``sections.rectangle(\"10 mm\", \"20 mm\")``) and ``material`` "
+                     "(``sections.material(\"207 GPa\", \"7850 kg/m^3\", poisson_ratio=0.3)``) unless the section "
+                     "is given by its resultants; ``elements`` or ``element_length``; named points by arclength "
+                     "(``points={\"E\": \"75 mm\"}``), besides ``start`` and ``end``. Joints and forces attach to "
+                     "``\"<beam>.<point>\"``.")
     add_revolute = _adds(p.REVOLUTE, "joints")
     add_translational = _adds(p.TRANSLATIONAL, "joints")
     add_fixed = _adds(p.FIXED, "joints")
@@ -214,11 +224,14 @@ class Model:
     add_point_force = _adds(p.POINT_FORCE, "forces")
     add_torque = _adds(p.TORQUE, "forces")
     add_hydraulic_cylinder = _adds(p.HYDRAULIC_CYLINDER, "forces", positional=2)
+    add_strain_gauge = _adds(p.STRAIN_GAUGE, "sensors")
 
     def _add(self, section: str, table: p.Table, name: str, values: dict[str, Any], hint: str) -> str:
         from .modelfile import arguments
 
-        self._spec[section].append(arguments.element(table, name, values, _where(section, name), hint))
+        where = _where(section, name)
+        read = arguments.beam if section == "beams" else arguments.element
+        self._spec[section].append(read(table, name, values, where, hint))
         self._changed()
         return name
 
@@ -279,7 +292,9 @@ class Model:
 
     def check(self) -> dict:
         """Compiles and assembles the initial configuration; returns the mechanism's summary
-        (bodies, joints, coordinates, degrees of freedom, initial coordinates)."""
+        (bodies, joints, coordinates, degrees of freedom, initial coordinates) and, under
+        ``beam_frequencies``, each beam's three lowest natural frequencies [Hz], unstressed, free-free and
+        clamped at its start (beams of at most 1500 coordinates: a dense eigensolve)."""
         info = dict(self.compile().describe())
         assembled = self.compile().assemble(0.0)
         if assembled["error"] is not None:
@@ -290,12 +305,16 @@ class Model:
         info["degrees_of_freedom"] = info["n_coordinates"] - assembled["constraint_rank"]
         info["initial_coordinates"] = np.asarray(assembled["coordinates"])
         info["initial_velocities"] = np.asarray(assembled["velocities"])
+        info["beam_frequencies"] = {
+            name: {"free_free": list(free), "clamped": list(clamped)}
+            for name, (free, clamped) in self.compile().beam_frequencies(3, _MAX_MODAL_COORDINATES).items()}
         return info
 
     def simulate(self, t_end: float, *, method: str = _SIMULATION.default("method"),
                  rtol: float = _SIMULATION.default("rtol"), atol: float = _SIMULATION.default("atol"),
                  max_step: float | None = None, output_step: float | None = None,
                  initial_step: float | None = None, min_step: float | None = None, max_steps: int | None = None,
+                 max_order: int | None = None, jacobian: str = _SIMULATION.default("jacobian"),
                  stabilization: str = _SIMULATION.default("stabilization"),
                  formulation: str = _SIMULATION.default("formulation"), t0: float = _SIMULATION.default("t0"),
                  progress: Callable[[float], None] | None = None, output_file: str | os.PathLike | None = None,
@@ -309,6 +328,9 @@ class Model:
         accepted step; the peaks and extrema of :attr:`Results.extrema` come from every accepted step
         whatever it is); ``max_steps``: most attempted (accepted + rejected) steps, default 10 000 000,
         beyond which the run stops with a :class:`~jointplay.errors.SimulationError` naming the option.
+        ``max_order``: highest order of ``"bdf"``, 1 to 5 (default 5); 2 for undamped flexible links, whose
+        vibrations the orders above 2 (not A-stable) would amplify. ``jacobian``: the Newton Jacobian of
+        ``"bdf"``, ``"auto"``, ``"finite_difference"`` or ``"structured"`` (docs/theory/integrator-jacobian.md).
         ``progress`` is called with the simulated time about ten times a second.
 
         Values that are legal but almost certainly mistakes (a clearance of 20 % of the radius, a mass
@@ -332,7 +354,7 @@ class Model:
         spec_snapshot, findings = self._spec_and_findings()
         emit(findings)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
-                           max_steps, stabilization, formulation)
+                           max_steps, stabilization, formulation, max_order, jacobian)
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
@@ -395,7 +417,8 @@ def _function(raw: Any, kind: str, where: str) -> dict:
 
 
 def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,
-             stabilization, formulation=_SIMULATION.default("formulation")) -> dict:
+             stabilization, formulation=_SIMULATION.default("formulation"), max_order=None,
+             jacobian=_SIMULATION.default("jacobian")) -> dict:
     problems = []
 
     def positive(key, value, allow_none=True):
@@ -425,6 +448,15 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
         problems.append(("simulation.atol", f"must be >= 0, got {atol!r}"))
     else:
         options["atol"] = float(atol)
+    if jacobian not in p.JACOBIANS:
+        problems.append(("simulation.jacobian", f"must be one of {list(p.JACOBIANS)}, got {jacobian!r}"))
+    options["jacobian"] = jacobian
+    if max_order is not None:
+        most = _SIMULATION["max_order"].le
+        if isinstance(max_order, bool) or not (isinstance(max_order, int) and 1 <= max_order <= most):
+            problems.append(("simulation.max_order", f"must be a whole number from 1 to {most:g}, got {max_order!r}"))
+        else:
+            options["max_order"] = max_order
     if max_steps is not None:
         if not (isinstance(max_steps, int) and max_steps > 0):
             problems.append(("simulation.max_steps", f"must be a positive integer, got {max_steps!r}"))

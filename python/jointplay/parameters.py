@@ -48,10 +48,12 @@ REQUIRED: Any = _Required()
 #: ``choice`` (one of the words ``of``), ``function`` (a function of time whose values are of kind ``of``),
 #: ``law`` (a table of the law family ``of``), ``table`` (a nested table defined by the Table ``of``),
 #: ``points`` (named points), ``grid`` (cells of the Reynolds solver), ``size`` (bytes), ``list`` (a list of
-#: quantities; ``of`` is their kind, or ``"powers"`` for polynomial coefficients). Inside a function of time,
-#: ``value`` and ``rate`` stand for the kind the function prescribes and its rate per second.
+#: quantities; ``of`` is their kind, or ``"powers"`` for polynomial coefficients), ``variant`` (a nested table
+#: of the family ``of`` of :data:`VARIANTS`, chosen by its tag: a beam's section), ``arclengths`` (named points
+#: of a beam by their arclength). Inside a function of time, ``value`` and ``rate`` stand for the kind the
+#: function prescribes and its rate per second.
 STRUCTURED = ("vector", "point", "body", "joint", "text", "flag", "count", "choice", "function", "law", "table",
-              "points", "grid", "size", "list", "value", "rate")
+              "points", "grid", "size", "list", "value", "rate", "variant", "arclengths")
 
 
 @dataclass(frozen=True, eq=False)
@@ -497,6 +499,12 @@ FUNCTIONS = family(
         Param("times", "list", "times, strictly increasing, at least 2", of="time", example="a list of times"),
         Param("values", "list", "values, as many as times", of="value", example="a list of values ({kind})"),
     ), tag="kind", aliases=("spline",)),
+    Table("speed_ramp", "A spin-up: at rest until t = 0, the rate rises smoothly to `final_rate` over `ramp_time` "
+          "(`(w/T)[t^2/2 + (T/2 pi)^2 (cos(2 pi t/T) - 1)]`, Simo and Vu-Quoc 1986), then `w t - w T/2`; the "
+          "acceleration is zero at both ends of the ramp (docs/theory/motion-functions.md).", (
+        Param("ramp_time", "time", "duration T of the ramp", gt=0, example='a time, e.g. "15 s"'),
+        Param("final_rate", "rate", 'rate w after the ramp, e.g. `"6 rad/s"`', example='a rate, e.g. "{rate_example}"'),
+    ), tag="kind"),
 )
 
 
@@ -584,12 +592,100 @@ HYDRAULIC_CYLINDER = Table("hydraulic_cylinder", "Double-acting single-rod hydra
 
 FORCES = family(SPRING_DAMPER, ROTATIONAL_SPRING_DAMPER, POINT_FORCE, TORQUE, HYDRAULIC_CYLINDER)
 
+# flexible links and sensors ---------------------------------------------------
+
+BEAM_MATERIAL = Table("beam_material", "An isotropic elastic material of a beam: Young's modulus, density and "
+                      "exactly one of Poisson's ratio and the shear modulus.", (
+    Param("youngs_modulus", "pressure", "Young's modulus E", gt=0, example='a Young\'s modulus, e.g. "207 GPa"'),
+    Param("density", "density", "density rho", gt=0, example='a density, e.g. "7850 kg/m^3"'),
+    Param("poisson_ratio", "dimensionless", "Poisson's ratio nu; G = E / (2 (1 + nu))", None, gt=-1, lt=0.5,
+          interval="(-1, 0.5)", default_text="none (give `shear_modulus`)"),
+    Param("shear_modulus", "pressure", "shear modulus G", None, gt=0, default_text="none (give `poisson_ratio`)"),
+))
+
+_MATERIAL_NOTE = "; the beam's `material` gives E, G and the density"
+
+BEAM_SECTIONS = family(
+    Table("rectangle", "Solid rectangle; shear factor k = 10(1 + nu)/(12 + 11 nu) (Cowper 1966)" + _MATERIAL_NOTE
+          + ".", (
+        Param("width", "length", "width, out of the plane of motion", gt=0, example='a length, e.g. "10 mm"'),
+        Param("height", "length", "height, in the plane of bending", gt=0, example='a length, e.g. "20 mm"'),
+    ), tag="shape"),
+    Table("circle", "Solid circle; k = 6(1 + nu)/(7 + 6 nu) (Cowper 1966)" + _MATERIAL_NOTE + ".", (
+        Param("diameter", "length", "diameter", gt=0, example='a length, e.g. "12 mm"'),
+    ), tag="shape"),
+    Table("tube", "Thin or thick circular tube; Cowper's (1966) shear factor of a hollow circle" + _MATERIAL_NOTE
+          + ".", (
+        Param("outer_diameter", "length", "outer diameter", gt=0, example='a length, e.g. "20 mm"'),
+        Param("inner_diameter", "length", "inner diameter, smaller than `outer_diameter`", gt=0,
+              example='a length, e.g. "16 mm"'),
+    ), tag="shape", relations=(Relation("inner_diameter", "<", "outer_diameter", "the bore is inside the tube"),)),
+    Table("properties", "Any section by its area, second moment and shear factor" + _MATERIAL_NOTE + ".", (
+        Param("area", "area", "area A", gt=0, example='an area, e.g. "2 cm^2"'),
+        Param("second_moment", "second moment of area", "second moment I about the bending axis", gt=0,
+              example='a second moment of area, e.g. "1.2 cm^4"'),
+        Param("shear_factor", "dimensionless", "shear factor k (5/6 for a thin rectangle)", gt=0, le=1,
+              interval="(0, 1]", example="a shear factor, e.g. 0.833"),
+    ), tag="shape"),
+    Table("resultants", "The section's stiffnesses and inertias per length given directly (no `material`).", (
+        Param("axial_stiffness", "force", "E A", gt=0, example='an axial stiffness, e.g. "2.8e7 N"'),
+        Param("shear_stiffness", "force", "k G A", gt=0, example='a shear stiffness, e.g. "1e7 N"'),
+        Param("bending_stiffness", "bending stiffness", "E I", gt=0, example='a bending stiffness, e.g. "1.4e4 N m^2"'),
+        Param("mass_per_length", "mass per length", "rho A", gt=0, example='a mass per length, e.g. "1.2 kg/m"'),
+        Param("rotary_inertia_per_length", "rotary inertia per length", "rho I", gt=0,
+              example='a rotary inertia per length, e.g. "6e-4 kg m"'),
+    ), tag="shape"),
+)
+
+#: Families of nested tables chosen by a tag (kind ``variant``), by the key that holds them.
+VARIANTS = {"section": BEAM_SECTIONS}
+
+ELEMENT_ORDERS = ("linear", "quadratic")
+
+BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reissner) beam, straight and unstressed "
+             "at the start, divided into elements of equal length; its named points are `start`, `end` and those of "
+             "`points` (docs/theory/beam.md).", (
+    Param("start", "vector", "approximate initial position of the first end", of="length",
+          example='a point, e.g. ["0 mm", "0 mm"]'),
+    Param("end", "vector", "approximate initial position of the second end", of="length",
+          example='a point, e.g. ["300 mm", "0 mm"]'),
+    Param("section", "variant", 'cross-section: `{ shape = "rectangle", width = "10 mm", height = "20 mm" }`',
+          of="section", example='a section, e.g. { shape = "rectangle", width = "10 mm", height = "20 mm" }'),
+    Param("material", "table", "material of the section; required unless the section is given by its resultants",
+          None, of=BEAM_MATERIAL, default_text="none (a section of `shape = \"resultants\"`)"),
+    Param("order", "choice", "element interpolation: `linear` (2 nodes) or `quadratic` (3 nodes)", "quadratic",
+          of=ELEMENT_ORDERS, why="paper 000's 3-node elements; about 1/5 the error of linear ones per node in bending"),
+    Param("elements", "count", "number of elements (give this or `element_length`)", None,
+          default_text="none (give `element_length`)"),
+    Param("element_length", "length", "largest element length: the count is the length over it, rounded up", None,
+          gt=0, default_text="none (give `elements`)"),
+    Param("damping_time", "time", "retardation time tau of strain-rate (Kelvin-Voigt) damping: each stress resultant "
+          "gains tau times its rate; a mode of circular frequency w gets the damping ratio tau w / 2", 0.0, ge=0,
+          why="undamped unless chosen"),
+    Param("velocity", "vector", "approximate initial velocity of the first end", (0.0, 0.0), of="velocity"),
+    Param("angular_velocity", "angular velocity", "approximate initial angular velocity, as a rigid link", 0.0),
+    Param("points", "arclengths", 'named points by arclength from the first end: `points = { E = "75 mm" }`', {}),
+    Param("free", "flag", "allow a beam that no joint or force element refers to (otherwise an error)", False,
+          in_spec=False),
+))
+
+STRAIN_GAUGE = Table("strain_gauge", "Stress resultants of a beam's section at a point (axial force N, shear force "
+                     "Q, bending moment M), the axis strain, the curvature and the axial strain of a fibre at "
+                     "`fibre` from the axis, as channels `<name>.axial_force` ... `<name>.axial_strain`.", (
+    _point("point", "a point of a beam", 'a point of a beam "beam.point", e.g. "rod.E"'),
+    Param("fibre", "length", "distance of the fibre from the axis, positive to the left of the beam's direction "
+          "(start to end)", 0.0, why="the axis"),
+), tag="type")
+
+SENSORS = family(STRAIN_GAUGE)
+
 
 # simulation -----------------------------------------------------------------
 
 METHODS = ("dopri5", "adams", "bdf")
 METHOD_ALIASES = (("rk45", "dopri5"), ("dormand_prince", "dopri5"), ("adams_pc", "adams"), ("ndf", "bdf"))
 STABILIZATIONS = ("projection", "baumgarte", "none")
+JACOBIANS = ("auto", "finite_difference", "structured")
 FORMULATIONS = ("auto", "absolute", "joint_coordinates")
 
 SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Model.simulate(**model.simulation)`; "
@@ -608,8 +704,16 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
     Param("min_step", "time", "smallest step", None, gt=0, default_text="automatic"),
     Param("max_steps", "count", "most attempted (accepted + rejected) steps; a run that exceeds it stops with an "
           "error naming this key, keeping what was computed", None, default_text="10 000 000 (set by the core)"),
-    Param("stabilization", "choice", "constraint drift control (absolute formulation)", "projection",
-          of=STABILIZATIONS),
+    Param("max_order", "count", "highest order of the implicit method (`bdf`), 1 to 5: orders 1 and 2 are A-stable, "
+          "which undamped flexible links need (docs/theory/integrator-ndf.md)", None, le=5, interval="1 to 5",
+          default_text="5"),
+    Param("jacobian", "choice", "Newton Jacobian of the implicit method (`bdf`): `finite_difference` (one "
+          "right-hand side per state), `structured` (coloured differences of each element's forces through the "
+          "constrained accelerations; absolute coordinates only, docs/theory/integrator-jacobian.md), `auto` "
+          "(structured with a beam)", "auto", of=JACOBIANS),
+    Param("stabilization", "choice", "constraint drift control (absolute formulation); with flexible links, "
+          "`baumgarte` (projection after a step strains a beam and breaks the implicit method's history)",
+          "projection", of=STABILIZATIONS),
     Param("formulation", "choice", "form of the equations of motion: joint coordinates when the ideal joints form a "
           "tree (every clearance joint cuts the loop it closes; no constraint equations to solve), else absolute "
           "coordinates with constraints; `absolute` always uses the latter, `joint_coordinates` refuses a model "
@@ -623,7 +727,8 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
 
 
 #: The sections of a model file, in the order they are written; the tables of each, by variant.
-SECTIONS = ("model", "units", "ground", "bodies", "joints", "drivers", "forces", "simulation")
+SECTIONS = ("model", "units", "ground", "bodies", "beams", "joints", "drivers", "forces", "sensors",
+            "simulation")
 
 #: The name of a mechanism built in Python without one (a model file's default is its file name).
 DEFAULT_NAME = "mechanism"
@@ -701,5 +806,5 @@ def all_tables() -> list[Table]:
     """Every table defined here, each variant once (the tests check each against the schema, the builder
     and the writer)."""
     laws = [t for tables in LAWS.values() for t in variants(tables)]
-    return [MODEL, GROUND, BODY, *variants(JOINTS), MATERIAL, LUBRICATION, *laws, DRIVER, *variants(FUNCTIONS),
-            *variants(FORCES), SIMULATION]
+    return [MODEL, GROUND, BODY, BEAM, BEAM_MATERIAL, *variants(BEAM_SECTIONS), *variants(JOINTS), MATERIAL,
+            LUBRICATION, *laws, DRIVER, *variants(FUNCTIONS), *variants(FORCES), *variants(SENSORS), SIMULATION]

@@ -4,7 +4,10 @@
 - the journal-centre orbit of each clearance joint inside its clearance circle
   (eccentricity in mm, circle of radius c);
 - the contact force of each clearance joint against the crank angle
-  (degrees, unwrapped from the start so that two revolutions read 0-720).
+  (degrees, unwrapped from the start so that two revolutions read 0-720);
+- the deformed shape of each beam at chosen times, its deformation (from the
+  rigid motion that best fits its nodes) magnified by a factor the figure
+  states; and the histories of each strain gauge.
 
 Figures are built with matplotlib's object API on the Agg canvas: no display
 is needed and no global pyplot state is touched.
@@ -80,6 +83,7 @@ def default_channels(results: Results) -> list[str]:
     for force in spec.get("forces", []):
         if force["type"] == "hydraulic_cylinder":
             chosen += [f"{force['name']}.p_cap", f"{force['name']}.p_rod", f"{force['name']}.stroke"]
+    chosen += [f"{g['name']}.axial_strain" for g in spec.get("sensors", [])]
     chosen += [f"{j['name']}.f" for j in spec.get("joints", []) if j["type"] != "clearance_revolute"]
     for driver in spec.get("drivers", []):
         chosen += [f"{driver['name']}.torque", f"{driver['name']}.force"]
@@ -94,22 +98,28 @@ def crank_angle_deg(results: Results, crank: str) -> np.ndarray:
     return np.degrees(np.unwrap(results[f"{crank}.angle"]))
 
 
+def _time_scale(results: Results) -> tuple[float, str]:
+    """Seconds for runs longer than 2 s, milliseconds otherwise: (factor, unit)."""
+    return (1.0, "s") if results.time.size and results.time[-1] > 2.0 else (1e3, "ms")
+
+
 def time_histories(results: Results, channels: Sequence[str], path: Path, label: str | None = None) -> Path:
-    """One panel per channel against time [ms]: the saved samples, and a dot at the peak tracked over
-    every accepted step (:attr:`Results.extrema`), which coarse samples can miss."""
+    """One panel per channel against time [ms, or s for runs longer than 2 s]: the saved samples, and a dot at
+    the peak tracked over every accepted step (:attr:`Results.extrema`), which coarse samples can miss."""
     fig = _figure(7.5, 1.9 * len(channels) + 0.8)
     axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
-    t_ms = results.time * 1e3
+    scale, unit = _time_scale(results)
+    t = results.time * scale
     marked = False
     for ax, name in zip(axes, channels):
-        ax.plot(t_ms, results[name], lw=0.9)
+        ax.plot(t, results[name], lw=0.9)
         peak = tracked_peak_point(results, name)
         if peak is not None:
-            ax.plot(peak[0] * 1e3, peak[1], "o", ms=4, color="tab:red")
+            ax.plot(peak[0] * scale, peak[1], "o", ms=4, color="tab:red")
             marked = True
         ax.set_ylabel(f"{name}\n[{results.unit(name)}]", fontsize=8)
         ax.grid(alpha=0.3)
-    axes[-1].set_xlabel("time [ms]")
+    axes[-1].set_xlabel(f"time [{unit}]")
     note = sampling_note(results) + ("; dots: peaks over every accepted step" if marked else "")
     fig.suptitle(f"{label or _title(results)}\n{note}", fontsize=9)
     return _save(fig, path)
@@ -186,6 +196,75 @@ def force_vs_crank(results: Results, joint: str, crank: str, path: Path) -> Path
     return _save(fig, path)
 
 
+def beams(results: Results) -> list[dict]:
+    """The beams of the model recorded in ``results`` (their spec entries)."""
+    return [b for b in (results.spec or {}).get("beams", []) if f"{b['name']}.node0_x" in results]
+
+
+def strain_gauges(results: Results) -> list[str]:
+    """Names of the strain gauges recorded in ``results``."""
+    return [g["name"] for g in (results.spec or {}).get("sensors", []) if f"{g['name']}.axial_strain" in results]
+
+
+def beam_nodes(results: Results, beam: str) -> tuple[np.ndarray, np.ndarray]:
+    """Node positions [m] of a beam at every sample: arrays x, y of shape (samples, nodes)."""
+    count = sum(1 for name in results.channels if name.startswith(f"{beam}.node") and name.endswith("_x"))
+    x = np.column_stack([results[f"{beam}.node{k}_x"] for k in range(count)])
+    y = np.column_stack([results[f"{beam}.node{k}_y"] for k in range(count)])
+    return x, y
+
+
+def rigid_fit(reference: np.ndarray, current: np.ndarray) -> np.ndarray:
+    """The rigid motion of ``reference`` (points, shape (n, 2)) that best fits ``current`` in least squares
+    (Kabsch 1976): the moved reference points."""
+    ref_mid, cur_mid = reference.mean(axis=0), current.mean(axis=0)
+    a, b = reference - ref_mid, current - cur_mid
+    angle = np.arctan2(np.sum(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]), np.sum(a[:, 0] * b[:, 0] + a[:, 1] * b[:, 1]))
+    c, s = np.cos(angle), np.sin(angle)
+    return cur_mid + a @ np.array([[c, s], [-s, c]])
+
+
+def deformed_shapes(results: Results, beam: dict, path: Path, times: Sequence[float] | None = None,
+                    magnify: float | None = None) -> Path:
+    """The nodes of ``beam`` (its spec entry) at ``times`` [s] (default: six, evenly spread), each drawn as
+    the rigid motion that best fits its nodes plus ``magnify`` times the deformation from it (default: the
+    largest deformation drawn at 10 % of the beam's length); the factor is in the title."""
+    x, y = beam_nodes(results, beam["name"])
+    t = results.time
+    times = np.linspace(t[0], t[-1], 6) if times is None else np.asarray(times, dtype=float)
+    rows = np.clip(np.searchsorted(t, times), 0, t.size - 1)
+    start, end = np.asarray(beam["start"], float), np.asarray(beam["end"], float)
+    reference = start + np.outer(np.linspace(0.0, 1.0, x.shape[1]), end - start)  # equally spaced nodes
+    length = float(np.hypot(*(end - start)))
+    current = [np.column_stack([x[r], y[r]]) for r in rows]
+    rigid = [rigid_fit(reference, c) for c in current]
+    largest = max(float(np.max(np.hypot(*(c - r).T))) for c, r in zip(current, rigid))
+    if magnify is None:
+        magnify = 0.1 * length / largest if largest > 0 else 1.0
+    fig = _figure(6.5, 5.0)
+    ax = fig.subplots()
+    scale, unit = _time_scale(results)
+    for row, c, r in zip(rows, current, rigid):
+        shown = r + magnify * (c - r)
+        ax.plot(shown[:, 0], shown[:, 1], ".-", lw=1.2, ms=3, label=f"t = {t[row] * scale:.4g} {unit}")
+        ax.plot(r[:, 0], r[:, 1], color="0.7", lw=0.6)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title(f"{_title(results)}: beam {beam['name']}, nodes at the saved samples nearest the times; deformation "
+                 f"from the best-fit rigid motion (grey) x {magnify:.3g}\n(largest deformation "
+                 f"{largest * 1e3:.3g} mm)", fontsize=8)
+    return _save(fig, path)
+
+
+def strain_histories(results: Results, gauge: str, path: Path) -> Path:
+    """A strain gauge's fibre strain, axial force and bending moment against time."""
+    channels = [f"{gauge}.{q}" for q in ("axial_strain", "axial_force", "bending_moment")]
+    return time_histories(results, channels, path, label=f"{_title(results)}: strain gauge {gauge}")
+
+
 def standard_figures(results: Results, out_dir, crank: str | None = None, fmt: str = "png",
                      channels: Sequence[str] | None = None) -> list[Path]:
     """Writes the standard figures into ``out_dir`` (created if needed); returns their paths.
@@ -209,6 +288,10 @@ def standard_figures(results: Results, out_dir, crank: str | None = None, fmt: s
         paths.append(orbit(results, joint, out / f"orbit_{joint}.{fmt}"))
         if crank is not None:
             paths.append(force_vs_crank(results, joint, crank, out / f"contact_force_{joint}.{fmt}"))
+    for beam in beams(results):
+        paths.append(deformed_shapes(results, beam, out / f"shapes_{beam['name']}.{fmt}"))
+    for gauge in strain_gauges(results):
+        paths.append(strain_histories(results, gauge, out / f"strain_{gauge}.{fmt}"))
     return paths
 
 

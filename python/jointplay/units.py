@@ -80,6 +80,11 @@ KINDS: dict[str, Kind] = {k.name: k for k in [
     Kind("pressure", "Pa", "207 GPa"),
     Kind("viscosity", "Pa*s", "400 cP"),
     Kind("frequency", "Hz", "10 Hz"),
+    Kind("density", "kg/m^3", "7850 kg/m^3"),
+    Kind("second moment of area", "m^4", "1.2 cm^4"),
+    Kind("bending stiffness", "N*m^2", "1.4e4 N m^2"),
+    Kind("mass per length", "kg/m", "1.2 kg/m"),
+    Kind("rotary inertia per length", "kg*m", "6e-4 kg m"),
     Kind("dimensionless", "", "0.9"),
 ]}
 

@@ -2,7 +2,7 @@
 
 use jointplay_core::dynamics::{ChannelInfo, Formulation, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::body::BodyKind;
-use jointplay_core::integrate::Method;
+use jointplay_core::integrate::{JacobianMethod, Method};
 use jointplay_core::SimulationError;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
@@ -40,6 +40,14 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
     }
     if let Some(v) = d.get_item("max_order")?.filter(|v| !v.is_none()) {
         o.integrator.max_order = v.extract()?;
+    }
+    if let Some(s) = d.get_item("jacobian")?.filter(|v| !v.is_none()) {
+        o.integrator.jacobian = match s.extract::<String>()?.as_str() {
+            "auto" => JacobianMethod::Auto,
+            "finite_difference" => JacobianMethod::FiniteDifference,
+            "structured" => JacobianMethod::Structured,
+            other => return Err(PyValueError::new_err(format!("unknown jacobian {other:?}"))),
+        };
     }
     if let Some(v) = d.get_item("max_output_bytes")?.filter(|v| !v.is_none()) {
         o.max_output_bytes = Some(v.extract()?);

@@ -113,7 +113,7 @@ def to_toml(model, header: str | None = None) -> str:
     return _spec_to_toml(model.to_spec(), getattr(model, "simulation", None), header)
 
 
-_INDEXED = re.compile(r"^(ground_points|bodies|joints|drivers|forces)\[(\d+)\](?:\.points\[(\d+)\])?")
+_INDEXED = re.compile(r"^(ground_points|bodies|beams|joints|drivers|forces|sensors)\[(\d+)\](?:\.points\[(\d+)\])?")
 
 
 def core_location(location: str, spec: dict) -> str:
@@ -145,7 +145,7 @@ def element_location(element: str | None, spec: dict) -> str:
     if not element:
         return "model"
     name = element.removesuffix(" (assembly lock)")
-    for section in ("joints", "drivers", "forces", "bodies"):
+    for section in ("joints", "drivers", "forces", "sensors", "bodies", "beams"):
         if any(e["name"] == name for e in spec.get(section, [])):
             return join(section, name)
     return "model"

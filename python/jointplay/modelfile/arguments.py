@@ -112,3 +112,19 @@ def element(table, name: str, values: dict[str, Any], where: str, hint: str = ""
     if builder.problems or spec is None:
         raise ModelError(builder.problems or [Problem(where, f"cannot be read: {values!r}")])
     return spec
+
+
+def beam(table, name: str, values: dict[str, Any], where: str, hint: str = "") -> dict:
+    """The core's dict of a beam of the Python builder (:func:`element` for the beam table): ``section`` a dict
+    from :mod:`jointplay.sections`, ``material`` from :func:`jointplay.sections.material`."""
+    from .build import Builder
+    from .schema import BeamTable
+
+    raw = {key: value for key, value in values.items() if value is not None}
+    builder = Builder({}, check_references=False)
+    stations = builder.arclengths(raw.get("points", {}), join(where, "points"))
+    t = builder.validate(BeamTable, raw, where)
+    spec = None if t is None else builder.beam(name, where, t, raw, stations)
+    if builder.problems or spec is None:
+        raise ModelError(builder.problems or [Problem(where, f"cannot be read: {values!r}")])
+    return spec

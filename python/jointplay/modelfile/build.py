@@ -13,13 +13,14 @@ import math
 from typing import Any
 
 from pydantic import ValidationError
+from pydantic_core import PydanticCustomError
 
 from .. import parameters as p
 from .._core import MAX_REYNOLDS_GRID_NODES
 from ..errors import ModelError, Problem
 from ..units import DECLARABLE, UnitError, declare_unit, model_file_units
 from . import schema as s
-from .fields import Q, Strict, did_you_mean, join, problems_from
+from .fields import Q, Strict, convert, did_you_mean, join, problems_from
 from .functions import function_spec
 
 DRIVEN_KIND = {"revolute": "angle", "translational": "length"}
@@ -41,6 +42,8 @@ class Builder:
         self.joint_types: dict[str, str] = {}
         self.names: dict[str, str] = {}
         self.referenced: set[str] = set()
+        self.free: set[str] = set()
+        self.beam_names: set[str] = set()
 
     def run(self) -> Builder:
         for key in self.doc:
@@ -55,9 +58,11 @@ class Builder:
         self.model_table()
         self.ground()
         self.bodies()
+        self.beams()
         self.joints()
         self.drivers()
         self.forces()
+        self.sensors()
         self.simulation_table()
         self.connectivity()
 
@@ -173,8 +178,13 @@ class Builder:
             return _FAILED if function is None else function
         elif kind == "table":
             return {sub.key: self.spec_value(sub, getattr(value, sub.key), {}, location) for sub in param.of.params}
+        elif kind == "variant":
+            variant = self.variant(raw, param, where)
+            return _FAILED if variant is None else variant
         elif kind == "points":
             return self.point_table(value, location)
+        elif kind == "arclengths":
+            return self.arclengths(value, location)
         elif kind == "vector":
             return [float(v) for v in value]
         elif kind == "flag":
@@ -241,7 +251,6 @@ class Builder:
         self.points["ground"] = [p["name"] for p in points]
 
     def bodies(self) -> None:
-        self.free: set[str] = set()
         for name, where, raw in self.entries("bodies"):
             self.claim(name, where)
             table = self.validate(s.BodyTable, raw, where)
@@ -417,6 +426,141 @@ class Builder:
             if force is not None:
                 self.spec["forces"].append(force)
 
+    # flexible links and sensors ------------------------------------------------
+
+    def beams(self) -> None:
+        for name, where, raw in self.entries("beams"):
+            self.claim(name, where)
+            table = self.validate(s.BeamTable, raw, where)
+            stations = self.arclengths(raw.get("points", {}), join(where, "points"))
+            self.points.setdefault(name, ["start", "end", *(station["name"] for station in stations)])
+            self.beam_names.add(name)
+            if table is None:
+                continue
+            if table.free:
+                self.free.add(name)
+            beam = self.beam(name, where, table, raw, stations)
+            if beam is not None:
+                self.spec["beams"].append(beam)
+
+    def beam(self, name: str, where: str, t: Strict, raw: dict, stations: list[dict]) -> dict | None:
+        """The core's dict of a validated beam table: section and material as one ``section``, the mesh keys as
+        one ``mesh``; None after adding problems."""
+        section = self.variant(raw, p.BEAM["section"], where)
+        material = self.beam_material(t, section, join(where, "material"))
+        mesh_ok = self.exactly_one(t, ("elements", "element_length"), where)
+        length = math.dist(t.start, t.end)
+        if length == 0.0:
+            self.problem(join(where, "end"), f"must differ from start = [{t.start[0].text}, {t.start[1].text}] "
+                                             f"(a beam has a length), got [{t.end[0].text}, {t.end[1].text}]")
+        for station in stations:
+            if length > 0.0 and station["arclength"] > length:
+                self.problem(join(where, "points", station["name"]),
+                             f"must lie on the beam, from 0 to its length {_text(length)}, got "
+                             f"{_text(station['arclength'])}")
+        if section is None or material is False or not mesh_ok or length == 0.0:
+            return None
+        shape = section.pop("shape")
+        core_section = {"type": shape, **section, **({} if material is None else {"material": material})}
+        mesh = {"order": t.order, "elements": t.elements,
+                "element_length": None if t.element_length is None else float(t.element_length)}
+        return {"name": name, "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
+                "section": core_section, "mesh": mesh, "damping_time": float(t.damping_time),
+                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity),
+                "points": stations}
+
+    def beam_material(self, t: Strict, section: dict | None, where: str) -> dict | None | bool:
+        """The core's material of a beam: None for a section given by its resultants, False after problems."""
+        shape = None if section is None else section["shape"]
+        if t.material is None:
+            if shape is not None and shape != "resultants":
+                self.problem(where, f"missing required value: a {shape} section needs a material, e.g. "
+                                    '{ youngs_modulus = "207 GPa", poisson_ratio = 0.3, density = "7850 kg/m^3" }')
+                return False
+            return None
+        if shape == "resultants":
+            self.problem(where, "is not used by a section given by its resultants (they hold E A, k G A, E I, "
+                                "rho A and rho I); remove it or give the section's shape")
+            return False
+        if not self.exactly_one(t.material, ("poisson_ratio", "shear_modulus"), where):
+            return False
+        return {key: None if getattr(t.material, key) is None else float(getattr(t.material, key))
+                for key in p.BEAM_MATERIAL.keys()}
+
+    def exactly_one(self, t: Strict, keys: tuple[str, str], where: str) -> bool:
+        """Exactly one of two optional keys is given; a problem at the first otherwise."""
+        given = [getattr(t, key) is not None for key in keys]
+        if sum(given) == 1:
+            return True
+        what = "both" if all(given) else "neither"
+        self.problem(join(where, keys[0]), f"give exactly one of {keys[0]} or {keys[1]}, got {what}")
+        return False
+
+    def variant(self, raw: dict, param: p.Param, where: str) -> dict | None:
+        """The nested table ``raw[param.key]`` of the family ``param.of`` (:data:`~jointplay.parameters.VARIANTS`)
+        in SI units with its tag, or None after adding problems (a missing one is reported by pydantic)."""
+        tables = p.VARIANTS[param.of]
+        tag = next(iter(tables.values())).tag
+        value = raw.get(param.key)
+        location = join(where, param.key)
+        if value is None:
+            return None
+        if not isinstance(value, dict):
+            self.problem(location, f"must be a table such as {param.example.removeprefix('a section, e.g. ')}, "
+                                   f"got {value!r}")
+            return None
+        name = self.tagged(value, tag, tables, location)
+        if name is None:
+            return None
+        cls = s.table_class(tables[name])
+        table = self.validate(cls, value, location, hint=f"{name}: ")
+        if table is None:
+            return None
+        self.relations(tables[name], table, location)
+        return {tag: tables[name].name, **{sub.key: float(getattr(table, sub.key)) for sub in tables[name].params}}
+
+    def arclengths(self, raw: Any, where: str) -> list[dict]:
+        """Named points of a beam by arclength, ``{ E = "75 mm" }``, as the core's list."""
+        if not isinstance(raw, dict):
+            self.problem(where, f'must be a table of arclengths, e.g. {{ E = "75 mm" }}, got {raw!r}')
+            return []
+        out = []
+        for name, value in raw.items():
+            location = join(where, name)
+            if not name or "." in name or name != name.strip():
+                self.problem(location, f"must be a point name without '.' or spaces, got {name!r}")
+                continue
+            if name in ("start", "end"):
+                self.problem(location, f"{name!r} names the beam's {'first' if name == 'start' else 'second'} end "
+                                       "already; choose another name")
+                continue
+            try:
+                arclength = float(convert(value, "length", ge=0))
+            except PydanticCustomError as exc:
+                self.problem(location, exc.message())
+                continue
+            out.append({"name": name, "arclength": arclength})
+        return out
+
+    def sensors(self) -> None:
+        for name, where, raw in self.entries("sensors"):
+            self.claim(name, where)
+            kind = self.tagged(raw, "type", s.SENSORS, where)
+            if kind is None:
+                continue
+            t = self.validate(s.SENSORS[kind], raw, where, hint=f"{kind}: ")
+            if t is None:
+                continue
+            referenced = set(self.referenced)  # a sensor observes a beam; it does not connect it
+            sensor = self.element_spec(p.SENSORS[kind], name, where, t, raw)
+            self.referenced = referenced
+            body = t.point.partition(".")[0]
+            if self.check_references and body in self.points and body not in self.beam_names:
+                self.problem(join(where, "point"), f"must be a point of a beam; {body!r} is a rigid body "
+                                                   f"(beams: {', '.join(sorted(self.beam_names)) or 'none'})")
+            elif sensor is not None:
+                self.spec["sensors"].append(sensor)
+
     def simulation_table(self) -> None:
         table = self.validate(s.SimulationTable, self.table("simulation"), "simulation")
         if table is None:
@@ -427,17 +571,18 @@ class Builder:
     def connectivity(self) -> None:
         """A model without bodies is a mistake; so is a body that no joint or force element refers to,
         unless marked ``free = true``."""
-        if not self.table("bodies"):
+        if not self.table("bodies") and not self.table("beams"):
             self.problem("bodies", "the model has no bodies: describe at least one as a [bodies.NAME] table "
-                                   "with its mass and inertia")
+                                   "with its mass and inertia (or a flexible link as a [beams.NAME] table)")
             return
         if any(p.location.startswith(("joints", "forces")) for p in self.problems):
             return  # references are incomplete; do not pile on
-        for body in self.spec["bodies"]:
-            name = body["name"]
-            if name not in self.referenced and name not in self.free:
-                self.problem(join("bodies", name), "is connected to nothing: no joint or force element refers to it "
-                                                   "(write free = true if it is meant to move freely)")
+        for section in ("bodies", "beams"):
+            for body in self.spec[section]:
+                name = body["name"]
+                if name not in self.referenced and name not in self.free:
+                    self.problem(join(section, name), "is connected to nothing: no joint or force element refers "
+                                                      "to it (write free = true if it is meant to move freely)")
 
 
 class _Bad(ValueError):

@@ -132,13 +132,21 @@ def _flag(raw: Any) -> bool:
 Flag = Annotated[bool, PlainValidator(_flag)]
 
 
-def _count(raw: Any) -> int:
+def _count(raw: Any, most: float | None = None) -> int:
     if isinstance(raw, bool) or not isinstance(raw, int) or raw <= 0:
-        raise fail(f"must be a positive whole number, got {_show(raw)}")
+        range_text = f" from 1 to {most:g}" if most is not None else ""
+        raise fail(f"must be a positive whole number{range_text}, got {_show(raw)}")
+    if most is not None and raw > most:
+        raise fail(f"must be a whole number from 1 to {most:g}, got {_show(raw)}")
     return raw
 
 
 Count = Annotated[int, PlainValidator(_count)]
+
+
+def count(le: float | None = None, **_: Any) -> Any:
+    """An annotated field type: a positive whole number, at most ``le`` when given."""
+    return Count if le is None else Annotated[int, PlainValidator(lambda raw: _count(raw, le))]
 
 
 def _show(raw: Any) -> str:

@@ -18,7 +18,7 @@ from typing import Any
 from ..errors import ModelError, Problem
 
 #: Sections whose entries are named by the user: overriding a key of an entry that does not exist is an error.
-NAMED_SECTIONS = ("bodies", "joints", "drivers", "forces")
+NAMED_SECTIONS = ("bodies", "beams", "joints", "drivers", "forces", "sensors")
 
 
 def parse_assignment(text: str) -> tuple[list[str], Any]:

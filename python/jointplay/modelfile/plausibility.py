@@ -22,7 +22,11 @@ warning almost always means a slip:
   an inertia 1e6 times off (inertia grows as mass times size squared);
 - a radius of gyration sqrt(I/m) above 10 L (a kg mm^2 value written as
   kg m^2 gives 1000 times the true radius);
-- a Young's modulus outside [1 MPa, 1.2 TPa] (soft rubber to diamond);
+- a Young's modulus outside [1 MPa, 1.2 TPa] (soft rubber to diamond), of a
+  clearance joint or of a beam; a beam's density outside [10, 25 000] kg/m^3
+  (foams to beyond osmium, 22 590 kg/m^3): "7.85 kg/m^3" for steel is a slip;
+- a beam shorter than twice its section's depth (beam theory assumes a
+  slender link; such a "link" is a block);
 - a hydraulic cylinder's bulk modulus outside [10 MPa, 5 GPa] (a liquid with
   much entrained air to beyond any hydraulic liquid; mineral oil is 1.5-1.8
   GPa, water 2.2 GPa): "1.5 MPa" for "1.5 GPa" is a slip of 1000;
@@ -56,6 +60,8 @@ CONTACT_FACTOR = 1e4
 SPRING_FACTOR = 1e6
 FAR_FACTOR = 100.0
 YOUNGS_RANGE = (1e6, 1.2e12)  # [Pa]
+DENSITY_RANGE = (10.0, 25e3)  # [kg/m^3]
+SLENDERNESS = 2.0
 BULK_MODULUS_RANGE = (1e7, 5e9)  # [Pa]
 
 
@@ -68,6 +74,7 @@ def plausibility(spec: dict) -> list[Problem]:
     problems += _outliers(spec, "inertia", INERTIA_FACTOR, "kg m^2")
     problems += _gyration(spec, size)
     problems += _materials(spec)
+    problems += _beams(spec)
     problems += _liquids(spec)
     problems += _stiffnesses(spec)
     problems += _onset_floors(spec, size)
@@ -85,8 +92,9 @@ def emit(problems: list[Problem], stacklevel: int = 3) -> None:
 
 def mechanism_size(spec: dict) -> float:
     """L [m]: the largest distance from a body's centre of mass to one of its points (0 without points)."""
-    return max((math.hypot(*p["position"]) for b in spec.get("bodies", []) for p in b.get("points", [])),
-               default=0.0)
+    lengths = [math.hypot(*p["position"]) for b in spec.get("bodies", []) for p in b.get("points", [])]
+    lengths += [0.5 * math.dist(b["start"], b["end"]) for b in spec.get("beams", [])]  # about the centre
+    return max(lengths, default=0.0)
 
 
 def _mm(value: float) -> str:
@@ -164,6 +172,35 @@ def _materials(spec: dict) -> list[Problem]:
     return out
 
 
+def _beams(spec: dict) -> list[Problem]:
+    """Beam materials outside the solids' range and beams that are not slender."""
+    out = []
+    for b in spec.get("beams", []):
+        where = join("beams", b["name"])
+        material = b["section"].get("material")
+        if material is not None:
+            for key, (low, high), what in (("youngs_modulus", YOUNGS_RANGE, "1 MPa for soft rubber to 1.2 TPa for "
+                                                                           "diamond"),
+                                           ("density", DENSITY_RANGE, "10 kg/m^3 for foams to 25 000 kg/m^3")):
+                if not low <= material[key] <= high:
+                    unit = "Pa" if key == "youngs_modulus" else "kg/m^3"
+                    out.append(Problem(join(where, "material", key), f"{material[key]:.3g} {unit} is outside the "
+                                                                     f"range of solids ({what}): check the units"))
+        depth = section_depth(b["section"])
+        length = math.dist(b["start"], b["end"])
+        if depth is not None and length < SLENDERNESS * depth:
+            out.append(Problem(join(where, "section"), f"the section is {_mm(depth)} deep and the beam "
+                                                       f"{_mm(length)} long: beam theory assumes a slender link "
+                                                       "(length several times the depth); check the units"))
+    return out
+
+
+def section_depth(section: dict) -> float | None:
+    """The depth of a section in the plane of bending [m]; None when given by properties or resultants."""
+    return {"rectangle": section.get("height"), "circle": section.get("diameter"),
+            "tube": section.get("outer_diameter")}.get(section["type"])
+
+
 def _liquids(spec: dict) -> list[Problem]:
     low, high = BULK_MODULUS_RANGE
     out = []
@@ -211,6 +248,8 @@ def function_rate(f: dict) -> float:
         return 1.5 * abs(f["value_end"] - f["value_start"]) / (f["t_end"] - f["t_start"])
     if kind == "sine":
         return abs(f["amplitude"]) * 2.0 * math.pi * f["frequency"]
+    if kind == "speed_ramp":
+        return abs(f["final_rate"])
     if kind == "table":
         t, v = f["times"], f["values"]
         return max((abs(v[i + 1] - v[i]) / (t[i + 1] - t[i]) for i in range(len(t) - 1)), default=0.0)
@@ -222,7 +261,7 @@ def model_speed(spec: dict, size: float) -> float:
     kinds = {j["name"]: j["type"] for j in spec.get("joints", [])}
     speeds = [function_rate(d["function"]) * (size if kinds.get(d["joint"]) == "revolute" else 1.0)
               for d in spec.get("drivers", [])]
-    for b in spec.get("bodies", []):
+    for b in spec.get("bodies", []) + spec.get("beams", []):
         speeds += [math.hypot(*b["velocity"]), abs(b["angular_velocity"]) * size]
     speeds.append(math.sqrt(2.0 * math.hypot(*spec.get("gravity", (0.0, 0.0))) * size))
     return max(speeds, default=0.0)
@@ -261,11 +300,12 @@ def _far_bodies(spec: dict, size: float) -> list[Problem]:
 
 
 def _nothing_moves(spec: dict) -> list[Problem]:
-    if not spec.get("bodies") or spec.get("drivers") or spec.get("forces"):
+    moving = spec.get("bodies", []) + spec.get("beams", [])
+    if not moving or spec.get("drivers") or spec.get("forces"):
         return []
     if any(spec.get("gravity", (0.0, 0.0))):
         return []
-    if any(any(b["velocity"]) or b["angular_velocity"] for b in spec["bodies"]):
+    if any(any(b["velocity"]) or b["angular_velocity"] for b in moving):
         return []
     return [Problem("model", "nothing moves the mechanism: no driver, force element, gravity or initial velocity; "
                              "the run will show it at rest")]

@@ -42,7 +42,9 @@ def kind_text(param: p.Param) -> str:
         "count": lambda: "whole number > 0", "size": lambda: 'size: bytes, or `"500 MB"`, `"2 GiB"`',
         "choice": lambda: _choices(param), "points": lambda: "table of named length vectors [m]",
         "grid": lambda: "`[n, n]` whole numbers", "law": lambda: f"table: a {of.replace('_', ' ')} law (below)",
-        "table": lambda: f"table: {of.name} (below)",
+        "table": lambda: f"table: {of.name.replace('_', ' ')} (below)",
+        "variant": lambda: f"table: a {of.replace('_', ' ')} (below)",
+        "arclengths": lambda: "table of named lengths [m]",
         "function": lambda: ("function of time: an angle [rad] or a length [m]" if of == "coordinate"
                              else f"function of time: {_quantity(of)}"),
         "value": lambda: "value", "rate": lambda: "value per second",
@@ -111,6 +113,10 @@ def text() -> str:
               table_text(p.MODEL, "## `[model]`"),
               table_text(p.GROUND, "## `[ground]`"),
               table_text(p.BODY, "## `[bodies.NAME]`"),
+              table_text(p.BEAM, "## `[beams.NAME]`"),
+              "### Beam sections\n\n`section = { shape = ..., ... }` of a beam.",
+              *_family(p.BEAM_SECTIONS, "####"),
+              table_text(p.BEAM_MATERIAL, "### Beam materials\n\n`material = { ... }` of a beam."),
               "## `[joints.NAME]`\n\nEvery joint has a `type`.",
               *_family(p.JOINTS, "###"),
               "## Tables inside an element",
@@ -128,6 +134,8 @@ def text() -> str:
               *_family(p.FUNCTIONS, "###"),
               "## `[forces.NAME]`\n\nEvery force element has a `type`.",
               *_family(p.FORCES, "###"),
+              "## `[sensors.NAME]`\n\nEvery sensor has a `type`; its channels are `<name>.<quantity>`.",
+              *_family(p.SENSORS, "###"),
               table_text(p.SIMULATION, "## `[simulation]`")]
     return "\n\n".join(blocks) + "\n"
 

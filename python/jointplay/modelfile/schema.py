@@ -15,7 +15,7 @@ from pydantic import Field, PlainValidator, create_model
 
 from .. import parameters as p
 from ..units import KINDS, Kind, per_time
-from .fields import Count, Flag, Q, Strict, choice, fail, quantity, text, vector
+from .fields import Flag, Q, Strict, choice, count, fail, quantity, text, vector
 
 #: What a reference names, in the message of a value that is not a string.
 _NAMES = {"point": "a point", "body": "a body", "joint": "a joint"}
@@ -58,14 +58,14 @@ def field_type(param: p.Param, value: Kind | None = None) -> Any:
         return quantity(kind, **param.bounds)
     if param.kind in _NAMES:
         return text(_NAMES[param.kind])
-    simple = {"text": lambda: text(param.of), "flag": lambda: Flag, "count": lambda: Count, "size": lambda: Size,
+    simple = {"text": lambda: text(param.of), "flag": lambda: Flag, "count": lambda: count(**param.bounds), "size": lambda: Size,
               "choice": lambda: choice(*param.of, aliases=dict(param.aliases)),
               "points": lambda: dict[str, Any]}
     if param.kind in simple:
         return simple[param.kind]()
     if param.kind == "table" and not param.apart:
         return table_class(param.of)
-    return Any  # laws, functions of time, lists, the grid and tables checked apart: read by build.py
+    return Any  # laws, variants, functions of time, lists, the grid, arclengths and tables checked apart: build.py
 
 
 def _q(value: float, kind: Kind) -> Q:
@@ -88,7 +88,7 @@ def field_default(param: p.Param, sparse: bool, value: Kind | None = None) -> An
         return _q(param.default, kind)
     if param.kind == "table" and not param.apart:
         return table_class(param.of).model_validate(param.default)
-    if param.kind == "points":
+    if param.kind in ("points", "arclengths"):
         return Field(default_factory=dict)
     return param.default
 
@@ -111,6 +111,10 @@ def classes(tables: dict[str, p.Table]) -> dict[str, type[Strict]]:
 ModelTable = table_class(p.MODEL)
 GroundTable = table_class(p.GROUND)
 BodyTable = table_class(p.BODY)
+BeamTable = table_class(p.BEAM)
+BeamMaterialTable = table_class(p.BEAM_MATERIAL)
+BEAM_SECTIONS = classes(p.BEAM_SECTIONS)
+SENSORS = classes(p.SENSORS)
 MaterialTable = table_class(p.MATERIAL)
 ClearanceRevoluteTable = table_class(p.CLEARANCE_REVOLUTE)
 TranslationalTable = table_class(p.TRANSLATIONAL)

@@ -139,9 +139,31 @@ def _value_of(param: p.Param, value: Any) -> Any:
         return {sub.key: _value_of(sub, value.get(sub.key, sub.default)) for sub in param.of.params}
     if param.kind == "points":
         return _points(value)
+    if param.kind == "arclengths":
+        return {name: quantity(arclength, "length") for name, arclength in value.items()}
     if param.kind == "flag":
         return bool(value)
     return value
+
+
+def _beam(beam: dict) -> dict:
+    """A beam's table: the core's ``section`` is the model file's ``section`` (its shape) and ``material``, its
+    ``mesh`` the keys ``order``, ``elements``, ``element_length``, its points a table of arclengths."""
+    section = dict(beam["section"])
+    shape = section.pop("type")
+    material = section.pop("material", None)
+    shape_table = p.BEAM_SECTIONS[shape]
+    values = {"start": beam["start"], "end": beam["end"],
+              "section": {"shape": shape, **{key: _value_of(shape_table[key], v) for key, v in section.items()}},
+              "material": material, **beam["mesh"], "damping_time": beam["damping_time"],
+              "velocity": beam["velocity"], "angular_velocity": beam["angular_velocity"],
+              "points": {point["name"]: point["arclength"] for point in beam["points"]}}
+    out = {}
+    for param in p.BEAM.params:
+        if param.in_spec:
+            value = values.get(param.key)
+            out[param.key] = value if param.kind == "variant" else _value_of(param, value)
+    return out
 
 
 def _element(table: p.Table, entry: dict) -> dict:
@@ -158,7 +180,7 @@ def _element(table: p.Table, entry: dict) -> dict:
 def _referenced_bodies(spec: dict) -> set[str]:
     """The bodies that a joint or force element refers to (by a point or by name)."""
     out = set()
-    for section, tables in (("joints", p.JOINTS), ("forces", p.FORCES)):
+    for section, tables in (("joints", p.JOINTS), ("forces", p.FORCES)):  # not sensors: they only observe
         for entry in spec.get(section, []):
             for param in tables[entry["type"]].params:
                 value = entry.get(param.key)
@@ -181,6 +203,9 @@ def to_toml(spec: dict, simulation: dict | None = None, header: str | None = Non
     for b in spec.get("bodies", []):
         free = {"free": True} if b["name"] not in referenced else {}  # not in the spec: read from the elements
         blocks.append(_table(f"bodies.{_key(b['name'])}", {**_element(p.BODY, b), **free}))
+    for b in spec.get("beams", []):
+        free = {"free": True} if b["name"] not in referenced else {}
+        blocks.append(_table(f"beams.{_key(b['name'])}", {**_beam(b), **free}))
     joint_types = {j["name"]: j["type"] for j in spec.get("joints", [])}
     for j in spec.get("joints", []):
         blocks.append(_table(f"joints.{_key(j['name'])}", _element(p.JOINTS[j["type"]], j)))
@@ -189,6 +214,8 @@ def to_toml(spec: dict, simulation: dict | None = None, header: str | None = Non
         blocks.append(_table(f"drivers.{_key(d['name'])}", {"joint": d["joint"], "function": function(d["function"], kind)}))
     for f in spec.get("forces", []):
         blocks.append(_table(f"forces.{_key(f['name'])}", _element(p.FORCES[f["type"]], f)))
+    for sensor in spec.get("sensors", []):
+        blocks.append(_table(f"sensors.{_key(sensor['name'])}", _element(p.SENSORS[sensor["type"]], sensor)))
     sim = {key: _value_of(p.SIMULATION[key], value) for key, value in (simulation or {}).items()}
     if any(v is not None for v in sim.values()):
         blocks.append(_table("simulation", sim))
