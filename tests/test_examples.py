@@ -15,7 +15,8 @@ def test_every_python_example_is_covered_here():
                "paper000_joint_models",  # has its own tests/test_paper000_example.py
                # the physics of these two: tests/physics/test_singular_four_bar.py and
                # tests/physics/test_redundant_double_parallelogram.py
-               "parallelogram_four_bar", "double_parallelogram", "hydraulic_boom"}
+               "parallelogram_four_bar", "double_parallelogram", "hydraulic_boom",
+               "spin_up_beam"}  # tests/test_beams.py
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 

@@ -54,6 +54,7 @@ CASES = {
        for joint in ("clearance", "squeeze_film", "hydrodynamic")},
     "py_paper001_slider_crank_dry": _python("paper001_slider_crank_dry"),
     "py_paper001_parametric_study": _python("paper001_parametric_study"),
+    "py_spin_up_beam": _python("spin_up_beam"),
     "py_kitchen_sink": _kitchen_sink,
 }
 
