@@ -16,7 +16,7 @@ def test_every_python_example_is_covered_here():
                # the physics of these two: tests/physics/test_singular_four_bar.py and
                # tests/physics/test_redundant_double_parallelogram.py
                "parallelogram_four_bar", "double_parallelogram", "hydraulic_boom",
-               "spin_up_beam"}  # tests/test_beams.py
+               "spin_up_beam", "flores_flexible_rod"}  # tests/test_beams.py
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 
