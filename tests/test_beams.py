@@ -286,3 +286,17 @@ def test_flexible_rod_example_runs_beside_the_rigid_one(tmp_path):
         first[name] = results["B.fn"][onset:end].max()
     assert first["flexible"] < first["rigid"]
     assert (tmp_path / "flores_flexible_rod.png").stat().st_size > 10_000
+
+
+def test_options_that_integrate_a_beam_badly_are_warned_of():
+    m = flexible_pendulum()
+    with pytest.warns(jp.JointplayWarning) as caught:
+        m.simulate(1e-4, method="bdf")
+    messages = [str(w.message) for w in caught]
+    assert any(s.startswith("simulation.max_order: orders above 2 are not A-stable") for s in messages)
+    assert any(s.startswith("simulation.stabilization: a projection after each step strains the beam") for s in messages)
+    with pytest.warns(jp.JointplayWarning, match=r"simulation.method: dopri5 with a beam"):
+        m.simulate(1e-5)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        m.simulate(1e-4, method="bdf", max_order=2, stabilization="baumgarte")

@@ -355,6 +355,7 @@ class Model:
         emit(findings)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian)
+        emit(_flexible_advice(spec_snapshot, options))
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
@@ -408,6 +409,30 @@ class Model:
         from pathlib import Path
 
         Path(path).write_text(self.to_toml(), encoding="utf-8")
+
+
+def _flexible_advice(spec: dict, options: dict) -> list:
+    """Warnings for options that a model with beams integrates badly (docs/theory/beam.md, "Time
+    integration"): an explicit method must resolve the beam's highest frequencies; NDF orders above 2 are not
+    A-stable; a projection after each step strains the beam and upsets the implicit method."""
+    from .errors import Problem
+
+    if not spec.get("beams"):
+        return []
+    advice = []
+    if options["method"] != "bdf":
+        advice.append(Problem("simulation.method", f"{options['method']} with a beam must resolve its highest "
+                                                   "vibration frequencies and takes millions of steps: use "
+                                                   "method=\"bdf\" with max_order=2"))
+    else:
+        if options.get("max_order") is None or options["max_order"] > 2:
+            advice.append(Problem("simulation.max_order", "orders above 2 are not A-stable: an undamped beam's "
+                                                          "vibrations make their steps collapse; use max_order=2"))
+        if options["stabilization"] == "projection":
+            advice.append(Problem("simulation.stabilization", "a projection after each step strains the beam and "
+                                                              "upsets the implicit method's history; use "
+                                                              "stabilization=\"baumgarte\""))
+    return advice
 
 
 def _function(raw: Any, kind: str, where: str) -> dict:
