@@ -223,16 +223,22 @@ class Builder:
             self.spec["name"] = table.name if table.name is not None else self.default_name
             self.spec["gravity"] = [float(g) for g in table.gravity]
 
-    def point_table(self, raw: Any, where: str) -> list[dict]:
+    def named_points(self, raw: Any, where: str, what: str):
+        """(name, location, value) of each well-named entry of a table of points; ``what`` describes the table
+        in the message when it is not one (``points, e.g. { O = [...] }``)."""
         if not isinstance(raw, dict):
-            self.problem(where, f"must be a table of points, e.g. {{ O = [\"0 mm\", \"0 mm\"] }}, got {raw!r}")
-            return []
-        out = []
+            self.problem(where, f"must be a table of {what}, got {raw!r}")
+            return
         for name, value in raw.items():
             location = join(where, name)
             if not name or "." in name or name != name.strip():
                 self.problem(location, f"must be a point name without '.' or spaces, got {name!r}")
                 continue
+            yield name, location, value
+
+    def point_table(self, raw: Any, where: str) -> list[dict]:
+        out = []
+        for name, location, value in self.named_points(raw, where, 'points, e.g. { O = ["0 mm", "0 mm"] }'):
             try:
                 x, y = _pair(value, location)
             except _Bad as bad:
@@ -521,15 +527,8 @@ class Builder:
 
     def arclengths(self, raw: Any, where: str) -> list[dict]:
         """Named points of a beam by arclength, ``{ E = "75 mm" }``, as the core's list."""
-        if not isinstance(raw, dict):
-            self.problem(where, f'must be a table of arclengths, e.g. {{ E = "75 mm" }}, got {raw!r}')
-            return []
         out = []
-        for name, value in raw.items():
-            location = join(where, name)
-            if not name or "." in name or name != name.strip():
-                self.problem(location, f"must be a point name without '.' or spaces, got {name!r}")
-                continue
+        for name, location, value in self.named_points(raw, where, 'arclengths, e.g. { E = "75 mm" }'):
             if name in ("start", "end"):
                 self.problem(location, f"{name!r} names the beam's {'first' if name == 'start' else 'second'} end "
                                        "already; choose another name")
