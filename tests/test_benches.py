@@ -64,3 +64,32 @@ def test_lubricated_benchmark_reports_rows_errors_and_targets(capsys):
     assert report["reference"]["film_min"] == pytest.approx(14.758e-6, rel=1e-3)
     assert "targets (issue 4)" in capsys.readouterr().out
 
+
+
+def test_spin_up_beam_benchmark_quick_mode_reports_jointplay_and_exudyn_rows(capsys):
+    # exudyn is optional (pip install exudyn): without it its rows are skipped with the reason
+    bench = load("bench_spin_up_beam")
+    report = bench.main(["--quick", "--markdown"])
+    with_exudyn = importlib.util.find_spec("exudyn") is not None
+    names = [r["name"] for r in report["rows"]]
+    assert names == ["jointplay, 2 linear elements", *(["Exudyn, 2 linear elements"] if with_exudyn else [])]
+    for r in report["rows"]:
+        assert r["cpu"].n == 1 and r["wall"].n == 1
+        assert 0 <= r["error"] < 1e-3  # both codes near the reference over the first second
+    out = capsys.readouterr().out
+    assert "| jointplay, 2 linear elements |" in out
+    if with_exudyn:
+        assert "| Exudyn, 2 linear elements |" in out
+        assert [(n, clock) for n, clock, _ in report["verdicts"]] == [(2, "cpu"), (2, "wall")]
+        assert "goal, faster than Exudyn, 2 elements, CPU time" in out
+    else:
+        assert "Exudyn rows: skipped, exudyn is not installed" in out
+
+
+def test_spin_up_beam_benchmark_runs_without_exudyn(capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "exudyn", None)  # import exudyn now raises ImportError
+    bench = load("bench_spin_up_beam")
+    assert bench.exudyn is None
+    report = bench.main(["--quick"])
+    assert [r["name"] for r in report["rows"]] == ["jointplay, 2 linear elements"] and report["verdicts"] == []
+    assert "Exudyn rows: skipped, exudyn is not installed" in capsys.readouterr().out
