@@ -130,7 +130,7 @@ def _paper000_case(joint: str) -> Case:
     def build():
         import paper000_joint_models as ex
         # ex.simulate, to the example's own end time ex.T_END (7 ms)
-        return ex.build_model(joint), ex.T_END, {"rtol": 1e-6, "atol": 1e-10, "max_step": 2e-6, "output_step": 1e-6}
+        return ex.build_model(joint, "rigid"), ex.T_END, {"rtol": 1e-6, "atol": 1e-10, "max_step": 2e-6, "output_step": 1e-6}
     return build
 
 
