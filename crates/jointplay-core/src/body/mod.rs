@@ -72,6 +72,9 @@ pub enum MassBlock<'a> {
         /// The factor's values.
         factor: &'a [f64],
     },
+    /// Dense and dependent on the body's positions (a modal body's): formed and
+    /// factored at every solve, in a scratch of [`BodyKind::mass_scratch_len`] values.
+    ConfigurationDependent,
 }
 
 /// Every kind of body.
@@ -120,11 +123,11 @@ impl BodyKind {
         }
     }
 
-    /// Jacobian of the global velocity of `marker`'s point (its frame is `frame`)
-    /// by the velocity coordinates the marker moves with
-    /// ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
+    /// Jacobian of the global velocity of `marker`'s point (its frame is `frame`,
+    /// the body's reference frame `body`) by the velocity coordinates the marker
+    /// moves with ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
     #[inline]
-    pub fn marker_jacobian(&self, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
+    pub fn marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, marker.local, jx, jy),
             Self::Beam(_) => BeamBody::marker_jacobian(frame, marker, jx, jy),
@@ -143,9 +146,10 @@ impl BodyKind {
 
     /// Adds `along . d(v_P)/d(v)`, the Jacobian of `marker`'s point velocity
     /// projected on `along`, to the marker's block `out` (see
-    /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`].
+    /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`];
+    /// `body` is the body's reference frame.
     #[inline]
-    pub fn add_marker_jacobian(&self, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
+    pub fn add_marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_marker_jacobian(frame, marker.local, along, out),
             Self::Beam(_) => BeamBody::add_marker_jacobian(frame, marker, along, out),
@@ -164,9 +168,10 @@ impl BodyKind {
 
     /// `marker`'s point acceleration at zero coordinate accelerations (the
     /// velocity-dependent part, `-omega^2 A s` for a rigid body and for a beam's
-    /// section frame, whose coordinates are linear in the nodes') [m/s^2].
+    /// section frame, whose coordinates are linear in the nodes'); `body` is the
+    /// body's reference frame [m/s^2].
     #[inline]
-    pub fn marker_bias_acceleration(&self, frame: &Frame, marker: &Marker) -> Vec2 {
+    pub fn marker_bias_acceleration(&self, _body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
         match self {
             Self::PlanarRigid(_) | Self::Beam(_) => PlanarRigidBody::marker_acceleration(frame, &[0.0; 3], marker.local),
         }
@@ -181,10 +186,10 @@ impl BodyKind {
         }
     }
 
-    /// Global acceleration [m/s^2] of `marker`'s point from its frame and the
-    /// body's velocity-coordinate accelerations `a`.
+    /// Global acceleration [m/s^2] of `marker`'s point from its frame, the body's
+    /// reference frame `body` and the body's velocity-coordinate accelerations `a`.
     #[inline]
-    pub fn marker_acceleration(&self, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
+    pub fn marker_acceleration(&self, _body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_acceleration(frame, a, marker.local),
             Self::Beam(_) => BeamBody::marker_acceleration(frame, a, marker),
@@ -200,9 +205,17 @@ impl BodyKind {
         }
     }
 
-    /// `out = M^-1 f` over the body's velocity coordinates.
+    /// Values of scratch [`Self::solve_mass`] needs (a configuration-dependent mass block's matrix).
+    pub fn mass_scratch_len(&self) -> usize {
+        match self {
+            Self::PlanarRigid(_) | Self::Beam(_) => 0,
+        }
+    }
+
+    /// `out = M(q)^-1 f` over the body's velocity coordinates, at the body's
+    /// positions `q`, with `scratch` of at least [`Self::mass_scratch_len`] values.
     #[inline]
-    pub fn solve_mass(&self, f: &[f64], out: &mut [f64]) {
+    pub fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
         match self.mass_block() {
             MassBlock::ConstantDiagonal(w) => {
                 for ((o, w), f) in out.iter_mut().zip(w).zip(f) {
@@ -213,6 +226,15 @@ impl BodyKind {
                 out.copy_from_slice(f);
                 program.solve(factor, out);
             }
+            MassBlock::ConfigurationDependent => self.solve_configuration_dependent_mass(q, f, out, scratch),
+        }
+    }
+
+    /// The solve of a [`MassBlock::ConfigurationDependent`] block.
+    #[inline]
+    fn solve_configuration_dependent_mass(&self, _q: &[f64], f: &[f64], out: &mut [f64], _scratch: &mut [f64]) {
+        match self {
+            Self::PlanarRigid(_) | Self::Beam(_) => out.copy_from_slice(f),
         }
     }
 
@@ -267,9 +289,10 @@ impl BodyKind {
     }
 
     /// Adds the generalised force of the force `f` [N] at the global point `p` [m]
-    /// (a point moving with `marker`, whose frame is `frame`) to the body's generalised forces `out`.
+    /// (a point moving with `marker`, whose frame is `frame`; the body's reference
+    /// frame is `body`) to the body's generalised forces `out`.
     #[inline]
-    pub fn add_point_force(&self, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
+    pub fn add_point_force(&self, _body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_point_force(frame, p, f, out),
             Self::Beam(_) => BeamBody::add_point_force(frame, marker, p, f, out),
@@ -285,9 +308,9 @@ impl BodyKind {
         }
     }
 
-    /// Adds the generalised force of uniform gravity `g` [m/s^2] to `out`.
+    /// Adds the generalised force of uniform gravity `g` [m/s^2] at the body's positions `q` to `out`.
     #[inline]
-    pub fn add_gravity(&self, g: Vec2, out: &mut [f64]) {
+    pub fn add_gravity(&self, g: Vec2, _q: &[f64], out: &mut [f64]) {
         match self {
             Self::PlanarRigid(b) => b.add_gravity(g, out),
             Self::Beam(b) => b.add_gravity(g, out),
@@ -302,8 +325,8 @@ impl BodyKind {
         }
     }
 
-    /// Kinetic energy [J] from `v`.
-    pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
+    /// Kinetic energy [J] from the positions `q` and velocities `v`.
+    pub fn kinetic_energy(&self, _q: &[f64], v: &[f64]) -> f64 {
         match self {
             Self::PlanarRigid(b) => b.kinetic_energy(v),
             Self::Beam(b) => b.kinetic_energy(v),

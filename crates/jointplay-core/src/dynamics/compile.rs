@@ -7,7 +7,7 @@ use super::channels::{Channel, ChannelInfo, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use super::frame::{perp, BodyIndex, Frame, Marker, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
-use crate::body::{BodyKind, MassBlock, PlanarRigidBody, SectionSite, Site};
+use crate::body::{BodyKind, MassBlock, PlanarRigidBody, Site};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
@@ -171,19 +171,19 @@ impl<'s> Compiler<'s> {
                 return;
             }
         };
-        let marker = self.section_marker(body, site, Vec2::zeros());
+        let marker = self.section_marker(body, Site::Section(site), Vec2::zeros());
         self.name_point(body_name, name, marker, location);
     }
 
     /// A marker at a section of a flexible body (with its frame, shared by the markers at the same section).
-    fn section_marker(&mut self, body: BodyIndex, site: SectionSite, local: Vec2) -> Marker {
+    fn section_marker(&mut self, body: BodyIndex, site: Site, local: Vec2) -> Marker {
         let total_bodies = self.spec.bodies.len() + self.spec.beams.len();
         let section = Section { body, site };
         let k = self.model.sections.iter().position(|s| *s == section).unwrap_or_else(|| {
             self.model.sections.push(section);
             self.model.sections.len() - 1
         });
-        Marker { body, frame: 1 + total_bodies + k, site: Site::Section(site), local }
+        Marker { body, frame: 1 + total_bodies + k, site, local }
     }
 
     fn add_point(&mut self, body: BodyIndex, body_name: &str, name: &str, position: [f64; 2], location: String) {
@@ -594,7 +594,7 @@ impl<'s> Compiler<'s> {
         for body in &self.model.bodies {
             match body.kind.mass_block() {
                 MassBlock::ConstantDiagonal(w) => diagonal.extend_from_slice(w),
-                MassBlock::ConstantFactored { .. } => return,
+                MassBlock::ConstantFactored { .. } | MassBlock::ConfigurationDependent => return,
             }
         }
         self.model.diagonal_inverse_mass = Some(diagonal);
