@@ -18,14 +18,18 @@
 //! A marker's frame sits at a [`Site`] of its body: the body's reference
 //! frame, or (on a beam) a section interpolated from one element's nodes.
 //!
-//! Kinds: the planar rigid body (`planar_rigid.rs`) and the geometrically
-//! exact beam (`beam.rs`). Theory: `docs/theory/planar-formulation.md`,
-//! "Coordinates, bodies and markers", and `docs/theory/beam.md`.
+//! Kinds: the planar rigid body (`planar_rigid.rs`), the geometrically
+//! exact beam (`beam.rs`) and the modal body (`modal.rs`, floating frame plus
+//! Craig-Bampton modes). Theory: `docs/theory/planar-formulation.md`,
+//! "Coordinates, bodies and markers", `docs/theory/beam.md` and
+//! `docs/theory/modal-body.md`.
 
 mod beam;
+mod modal;
 mod planar_rigid;
 
 pub use beam::{BeamBody, BeamMesh};
+pub use modal::{ModalBody, ModalNodeSite, MAX_MODES};
 pub use planar_rigid::PlanarRigidBody;
 
 use std::ops::Range;
@@ -41,6 +45,8 @@ pub enum Site {
     Reference,
     /// A section of a beam, interpolated from the nodes of one element.
     Section(SectionSite),
+    /// A node of a modal body's structure.
+    ModalNode(ModalNodeSite),
 }
 
 /// A section of a beam: an element and a point in it.
@@ -84,6 +90,8 @@ pub enum BodyKind {
     PlanarRigid(PlanarRigidBody),
     /// Geometrically exact planar beam, nodes `(x, y, theta)` along it.
     Beam(BeamBody),
+    /// Modal body: floating frame `(x, y, phi)` plus modal amplitudes.
+    Modal(ModalBody),
 }
 
 impl BodyKind {
@@ -92,6 +100,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::NQ,
             Self::Beam(b) => b.n_coordinates(),
+            Self::Modal(b) => b.n_coordinates(),
         }
     }
 
@@ -100,6 +109,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::NV,
             Self::Beam(b) => b.n_coordinates(),
+            Self::Modal(b) => b.n_coordinates(),
         }
     }
 
@@ -111,6 +121,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::frame(q, v, previous),
             Self::Beam(_) => BeamBody::section_frame(&BeamBody::FIRST_NODE, q, v, previous),
+            Self::Modal(_) => ModalBody::frame(q, v, previous),
         }
     }
 
@@ -119,6 +130,7 @@ impl BodyKind {
     pub fn site_frame(&self, site: &Site, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
         match (self, site) {
             (Self::Beam(_), Site::Section(section)) => BeamBody::section_frame(section, q, v, previous),
+            (Self::Modal(b), Site::ModalNode(node)) => b.node_frame(node.node as usize, q, v, previous),
             _ => self.frame(q, v, previous),
         }
     }
@@ -127,10 +139,11 @@ impl BodyKind {
     /// the body's reference frame `body`) by the velocity coordinates the marker
     /// moves with ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
     #[inline]
-    pub fn marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
+    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, marker.local, jx, jy),
             Self::Beam(_) => BeamBody::marker_jacobian(frame, marker, jx, jy),
+            Self::Modal(b) => b.marker_jacobian(body, frame, marker, jx, jy),
         }
     }
 
@@ -141,6 +154,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => 0..PlanarRigidBody::NV,
             Self::Beam(_) => BeamBody::marker_coordinates(marker),
+            Self::Modal(b) => 0..b.n_coordinates(),
         }
     }
 
@@ -149,10 +163,11 @@ impl BodyKind {
     /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`];
     /// `body` is the body's reference frame.
     #[inline]
-    pub fn add_marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
+    pub fn add_marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_marker_jacobian(frame, marker.local, along, out),
             Self::Beam(_) => BeamBody::add_marker_jacobian(frame, marker, along, out),
+            Self::Modal(b) => b.add_marker_jacobian(body, frame, marker, along, out),
         }
     }
 
@@ -163,6 +178,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => out[2] += scale,
             Self::Beam(_) => BeamBody::add_marker_angle_jacobian(marker, scale, out),
+            Self::Modal(b) => b.add_marker_angle_jacobian(marker, scale, out),
         }
     }
 
@@ -171,28 +187,31 @@ impl BodyKind {
     /// section frame, whose coordinates are linear in the nodes'); `body` is the
     /// body's reference frame [m/s^2].
     #[inline]
-    pub fn marker_bias_acceleration(&self, _body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
+    pub fn marker_bias_acceleration(&self, body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
         match self {
             Self::PlanarRigid(_) | Self::Beam(_) => PlanarRigidBody::marker_acceleration(frame, &[0.0; 3], marker.local),
+            Self::Modal(_) => ModalBody::marker_bias_acceleration(body, frame, marker),
         }
     }
 
     /// `marker`'s angular acceleration at zero coordinate accelerations (zero
-    /// for a rigid body and for a beam's section) [rad/s^2].
+    /// for a rigid body, a beam's section and a modal body's node, whose angles
+    /// are linear in the coordinates) [rad/s^2].
     #[inline]
     pub fn marker_bias_angular_acceleration(&self, _frame: &Frame, _marker: &Marker) -> f64 {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => 0.0,
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => 0.0,
         }
     }
 
     /// Global acceleration [m/s^2] of `marker`'s point from its frame, the body's
     /// reference frame `body` and the body's velocity-coordinate accelerations `a`.
     #[inline]
-    pub fn marker_acceleration(&self, _body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
+    pub fn marker_acceleration(&self, body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_acceleration(frame, a, marker.local),
             Self::Beam(_) => BeamBody::marker_acceleration(frame, a, marker),
+            Self::Modal(b) => b.marker_acceleration(body, frame, a, marker),
         }
     }
 
@@ -202,6 +221,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(b) => MassBlock::ConstantDiagonal(b.inverse_mass()),
             Self::Beam(b) => b.mass_block(),
+            Self::Modal(_) => MassBlock::ConfigurationDependent,
         }
     }
 
@@ -209,6 +229,7 @@ impl BodyKind {
     pub fn mass_scratch_len(&self) -> usize {
         match self {
             Self::PlanarRigid(_) | Self::Beam(_) => 0,
+            Self::Modal(b) => b.mass_scratch_len(),
         }
     }
 
@@ -232,8 +253,10 @@ impl BodyKind {
 
     /// The solve of a [`MassBlock::ConfigurationDependent`] block.
     #[inline]
-    fn solve_configuration_dependent_mass(&self, _q: &[f64], f: &[f64], out: &mut [f64], _scratch: &mut [f64]) {
+    fn solve_configuration_dependent_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
         match self {
+            Self::Modal(b) => b.solve_mass(q, f, out, scratch),
+            // (their blocks are constant)
             Self::PlanarRigid(_) | Self::Beam(_) => out.copy_from_slice(f),
         }
     }
@@ -241,7 +264,7 @@ impl BodyKind {
     /// Whether [`Self::position_rates`] is the identity `q_dot = v` (the engine then copies `v`).
     pub fn has_identity_position_rates(&self) -> bool {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => true,
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => true,
         }
     }
 
@@ -249,7 +272,7 @@ impl BodyKind {
     pub fn has_body_forces(&self) -> bool {
         match self {
             Self::PlanarRigid(_) => false,
-            Self::Beam(_) => true,
+            Self::Beam(_) | Self::Modal(_) => true,
         }
     }
 
@@ -264,6 +287,8 @@ impl BodyKind {
             Self::PlanarRigid(_) => {}
             // (nodal coordinates in the inertial frame: M is constant, no inertial terms)
             Self::Beam(b) => b.subtract_internal_forces(q, v, out),
+            // (a moving frame: quadratic velocity terms, elastic and damping forces)
+            Self::Modal(b) => b.add_body_forces(q, v, out),
         }
     }
 
@@ -271,7 +296,7 @@ impl BodyKind {
     #[inline]
     pub fn position_rates(&self, _q: &[f64], v: &[f64], qdot: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => qdot.copy_from_slice(v),
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => qdot.copy_from_slice(v),
         }
     }
 
@@ -280,7 +305,7 @@ impl BodyKind {
     #[inline]
     pub fn displace(&self, q: &mut [f64], dv: &[f64]) {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => {
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => {
                 for (q, d) in q.iter_mut().zip(dv) {
                     *q += d;
                 }
@@ -292,10 +317,11 @@ impl BodyKind {
     /// (a point moving with `marker`, whose frame is `frame`; the body's reference
     /// frame is `body`) to the body's generalised forces `out`.
     #[inline]
-    pub fn add_point_force(&self, _body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
+    pub fn add_point_force(&self, body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_point_force(frame, p, f, out),
             Self::Beam(_) => BeamBody::add_point_force(frame, marker, p, f, out),
+            Self::Modal(b) => b.add_point_force(body, frame, marker, p, f, out),
         }
     }
 
@@ -305,15 +331,17 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_moment(m, out),
             Self::Beam(_) => BeamBody::add_moment(marker, m, out),
+            Self::Modal(b) => b.add_moment(marker, m, out),
         }
     }
 
     /// Adds the generalised force of uniform gravity `g` [m/s^2] at the body's positions `q` to `out`.
     #[inline]
-    pub fn add_gravity(&self, g: Vec2, _q: &[f64], out: &mut [f64]) {
+    pub fn add_gravity(&self, g: Vec2, q: &[f64], out: &mut [f64]) {
         match self {
             Self::PlanarRigid(b) => b.add_gravity(g, out),
             Self::Beam(b) => b.add_gravity(g, out),
+            Self::Modal(b) => b.add_gravity(g, q, out),
         }
     }
 
@@ -322,14 +350,16 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(b) => b.gravity_potential_energy(g, q),
             Self::Beam(b) => b.gravity_potential_energy(g, q) + b.strain_energy(q),
+            Self::Modal(b) => b.potential_energy(g, q),
         }
     }
 
     /// Kinetic energy [J] from the positions `q` and velocities `v`.
-    pub fn kinetic_energy(&self, _q: &[f64], v: &[f64]) -> f64 {
+    pub fn kinetic_energy(&self, q: &[f64], v: &[f64]) -> f64 {
         match self {
             Self::PlanarRigid(b) => b.kinetic_energy(v),
             Self::Beam(b) => b.kinetic_energy(v),
+            Self::Modal(b) => b.kinetic_energy(q, v),
         }
     }
 
@@ -337,7 +367,8 @@ impl BodyKind {
     /// absolute tolerance (1 for metres, radians and their rates).
     pub fn tolerance_scales(&self, q: &mut [f64], v: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => {
+            // (modal amplitudes are interface displacements [m, rad] or normal modes scaled to 1 m at most)
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => {
                 q.fill(1.0);
                 v.fill(1.0);
             }
@@ -350,6 +381,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::CHANNELS.to_vec(),
             Self::Beam(b) => b.coordinate_channels(),
+            Self::Modal(b) => b.coordinate_channels(),
         }
     }
 }

@@ -272,7 +272,7 @@ impl OdeSystem for MechanismSystem<'_> {
         // (the joint-coordinate formulation keeps forward differences)
         if self.tree.is_some() || !self.model.layout.identity_position_rates {
             SystemJacobian::Unavailable
-        } else if self.model.bodies.iter().any(|b| matches!(b.kind, BodyKind::Beam(_))) {
+        } else if self.model.bodies.iter().any(|b| matches!(b.kind, BodyKind::Beam(_) | BodyKind::Modal(_))) {
             SystemJacobian::Preferred
         } else {
             SystemJacobian::Available
