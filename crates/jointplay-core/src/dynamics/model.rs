@@ -240,6 +240,20 @@ impl Model {
         1 + self.bodies.len() + self.sections.len()
     }
 
+    /// The first bending frequency [Hz] of every modal body (its lowest mode
+    /// clamped at its frame node), with the body's name: a linear modal body
+    /// (no geometric stiffening) spinning faster than `2 pi` times this diverges,
+    /// which the front end warns of.
+    pub fn modal_bending_frequencies(&self) -> Vec<(&str, f64)> {
+        self.bodies
+            .iter()
+            .filter_map(|b| match &b.kind {
+                BodyKind::Modal(modal) => modal.first_bending_frequency().map(|f| (b.name.as_str(), f)),
+                _ => None,
+            })
+            .collect()
+    }
+
     /// Whether every body is rigid (no body force, no section frame).
     pub fn is_rigid(&self) -> bool {
         self.bodies.iter().all(|b| matches!(b.kind, BodyKind::PlanarRigid(_)))
