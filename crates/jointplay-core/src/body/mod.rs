@@ -91,7 +91,7 @@ pub enum BodyKind {
     /// Geometrically exact planar beam, nodes `(x, y, theta)` along it.
     Beam(BeamBody),
     /// Modal body: floating frame `(x, y, phi)` plus modal amplitudes.
-    Modal(ModalBody),
+    Modal(Box<ModalBody>),
 }
 
 impl BodyKind {

@@ -156,7 +156,7 @@ impl<'s> Compiler<'s> {
         let n_modes = built.body.n_modes();
         self.model.initial_coordinates.extend(built.pose.iter().copied().chain(std::iter::repeat_n(0.0, n_modes)));
         self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity].into_iter().chain(std::iter::repeat_n(0.0, n_modes)));
-        let kind = BodyKind::Modal(built.body);
+        let kind = BodyKind::Modal(Box::new(built.body));
         self.model.layout.push_body(&kind);
         self.model.bodies.push(Body { name: b.name.clone(), kind });
         for (name, node, location) in built.interface {

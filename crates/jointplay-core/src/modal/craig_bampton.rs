@@ -70,7 +70,7 @@ pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interf
 /// Square matrices of `3 n_nodes`, distinct interface nodes within the structure.
 fn check_sizes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize]) -> Result<(), String> {
     let n = mass.nrows();
-    if n == 0 || n % 3 != 0 || mass.ncols() != n || stiffness.shape() != (n, n) {
+    if n == 0 || !n.is_multiple_of(3) || mass.ncols() != n || stiffness.shape() != (n, n) {
         return Err(format!("the mass and stiffness matrices must be square, of the same size, three coordinates per node; got {:?} and {:?}", mass.shape(), stiffness.shape()));
     }
     if mass.iter().chain(stiffness.iter()).any(|v| !v.is_finite()) {

@@ -69,7 +69,7 @@ fn a_tip_load_deflects_the_reduced_body_exactly_as_the_mesh_and_as_timoshenko() 
     // K_ee eta = Phi^T f reproduces the mesh's clamped response, whatever the normal modes
     let mesh = beam(10);
     let body = ModalBody::from_beam(&mesh, &[0, mesh.n_nodes() - 1], 2, 0.0).unwrap().0;
-    let kind = BodyKind::Modal(body.clone());
+    let kind = BodyKind::Modal(Box::new(body.clone()));
     let tip = Marker { body: BodyIndex(1), frame: 2, site: Site::ModalNode(ModalNodeSite { node: (mesh.n_nodes() - 1) as u32 }), local: Vec2::zeros() };
     let n = body.n_coordinates();
     // the body at rest with its frame on the x axis
@@ -97,7 +97,7 @@ fn the_modal_kinetic_energy_is_the_beam_meshs_for_the_same_nodal_velocities() {
     // the beam's consistent mass in the inertial frame (a beam's mass is constant there)
     let mesh = beam(3);
     let body = ModalBody::from_beam(&mesh, &[0, mesh.n_nodes() - 1], 4, 0.0).unwrap().0;
-    let kind = BodyKind::Modal(body.clone());
+    let kind = BodyKind::Modal(Box::new(body.clone()));
     let (q, v) = state(&body);
     let mut nodal = Vec::new();
     for a in 0..body.n_nodes() {
@@ -123,7 +123,7 @@ fn mass_from_energy(kind: &BodyKind, q: &[f64]) -> DMatrix<f64> {
 #[test]
 fn the_mass_solve_inverts_the_mass_of_the_kinetic_energy() {
     let body = modal(3, 4);
-    let kind = BodyKind::Modal(body.clone());
+    let kind = BodyKind::Modal(Box::new(body.clone()));
     let (q, v) = state(&body);
     let mass = mass_from_energy(&kind, &q);
     let f = &mass * nalgebra::DVector::from_column_slice(&v);
@@ -140,7 +140,7 @@ fn the_body_forces_are_lagranges_velocity_terms_minus_the_elastic_force() {
     // Q_v = dT/dq - (dM/dq . q_dot) q_dot by central differences of the kinetic energy
     // (Lagrange's equations M q_ddot = Q_v + Q), and K eta the gradient of the strain energy
     let body = modal(3, 4);
-    let kind = BodyKind::Modal(body.clone());
+    let kind = BodyKind::Modal(Box::new(body.clone()));
     let (q, v) = state(&body);
     let n = q.len();
     let h = 1e-6;
@@ -164,7 +164,7 @@ fn the_body_forces_are_lagranges_velocity_terms_minus_the_elastic_force() {
 #[test]
 fn gravity_is_minus_the_gradient_of_its_potential() {
     let body = modal(3, 4);
-    let kind = BodyKind::Modal(body.clone());
+    let kind = BodyKind::Modal(Box::new(body.clone()));
     let (q, _) = state(&body);
     let g = Vec2::new(0.5, -9.81);
     let mut weight = vec![0.0; q.len()];
@@ -185,7 +185,7 @@ fn gravity_is_minus_the_gradient_of_its_potential() {
 #[test]
 fn a_node_marker_moves_as_its_jacobian_says_and_a_point_force_does_its_virtual_work() {
     let body = modal(3, 4);
-    let kind = BodyKind::Modal(body.clone());
+    let kind = BodyKind::Modal(Box::new(body.clone()));
     let (q, v) = state(&body);
     let n = q.len();
     let marker = Marker { body: BodyIndex(1), frame: 2, site: Site::ModalNode(ModalNodeSite { node: 4 }), local: Vec2::new(0.02, -0.03) };
@@ -230,7 +230,7 @@ fn a_node_marker_moves_as_its_jacobian_says_and_a_point_force_does_its_virtual_w
 fn a_node_markers_acceleration_is_the_derivative_of_its_velocity_along_a_motion() {
     // constant coordinate accelerations a from (q, v): the point's velocity at t = +-h by the body's own kinematics
     let body = modal(3, 4);
-    let kind = BodyKind::Modal(body.clone());
+    let kind = BodyKind::Modal(Box::new(body.clone()));
     let (q, v) = state(&body);
     let n = q.len();
     let a: Vec<f64> = (0..n).map(|k| if k < 3 { [3.0, -1.5, 4.0][k] } else { 0.5 * (0.9 * k as f64).cos() }).collect();
