@@ -155,6 +155,55 @@ class Model:
                      "is given by its resultants; ``elements`` or ``element_length``; named points by arclength "
                      "(``points={\"E\": \"75 mm\"}``), besides ``start`` and ``end``. Joints and forces attach to "
                      "``\"<beam>.<point>\"``.")
+    def add_modal_body(self, name: str, start: Vector, end: Vector, *, section: dict, material: dict | None = None,
+                       order: str = "quadratic", elements: int | None = None, element_length: Quantity | None = None,
+                       interface: dict[str, Quantity] | None = None, normal_modes: int = 4,
+                       damping_ratio: float = 0.0, velocity: Vector = (0.0, 0.0),
+                       angular_velocity: Quantity = 0.0) -> str:
+        """A flexible link as a modal body (docs/theory/modal-body.md): a floating frame plus Craig-Bampton
+        modes of the straight beam from ``start`` to ``end`` [m] of ``section`` and ``material`` (as
+        :meth:`add_beam` reads them) meshed by ``elements`` (or ``element_length``) elements of ``order``.
+        ``interface``: named interface nodes by arclength from ``start`` (each at a node of the mesh), by
+        default ``{"start": 0, "end": <length>}``; the first carries the body's frame (its three coordinates
+        held in the modes), the others get static constraint modes. ``normal_modes``: fixed-interface normal
+        modes kept. ``damping_ratio``: one ratio for every mode of the body clamped at its frame node.
+        ``velocity`` [m/s] and ``angular_velocity`` [rad/s]: the frame's initial rates. Joints and forces
+        attach to ``"<body>.<interface node>"``. Linear modes without geometric stiffening: a body spun
+        faster than its first bending frequency (``check()["modal_bending_frequencies"]``) diverges.
+
+        Returns the element's name."""
+        from pydantic_core import PydanticCustomError
+
+        from .modelfile import arguments
+        from .modelfile.fields import convert
+
+        where = _where("modal_bodies", name)
+        beam = arguments.beam(p.BEAM, name, {
+            "start": start, "end": end, "section": section, "material": material, "order": order,
+            "elements": elements, "element_length": element_length, "damping_time": 0.0, "velocity": velocity,
+            "angular_velocity": angular_velocity, "points": {}}, where)
+        length = math.dist(beam["start"], beam["end"])
+        problems = []
+        stations = []
+        for point, raw in ({"start": 0.0, "end": length} if interface is None else interface).items():
+            try:
+                stations.append({"name": str(point), "arclength": float(convert(raw, "length", ge=0))})
+            except PydanticCustomError as exc:
+                problems.append((f"{where}.interface.{point}", exc.message()))
+        if not stations:
+            problems.append((f"{where}.interface", "give at least one interface node (the first carries the frame)"))
+        if isinstance(normal_modes, bool) or not isinstance(normal_modes, int) or normal_modes < 0:
+            problems.append((f"{where}.normal_modes", f"must be a count >= 0, got {normal_modes!r}"))
+        if not (isinstance(damping_ratio, (int, float)) and math.isfinite(damping_ratio) and damping_ratio >= 0):
+            problems.append((f"{where}.damping_ratio", f"must be >= 0, got {damping_ratio!r}"))
+        if problems:
+            raise ModelError(problems)
+        body = {key: beam[key] for key in ("name", "start", "end", "section", "mesh", "velocity", "angular_velocity")}
+        body.update({"interface": stations, "normal_modes": normal_modes, "damping_ratio": float(damping_ratio)})
+        self._spec.setdefault("modal_bodies", []).append(body)
+        self._changed()
+        return name
+
     add_revolute = _adds(p.REVOLUTE, "joints")
     add_translational = _adds(p.TRANSLATIONAL, "joints")
     add_fixed = _adds(p.FIXED, "joints")
@@ -305,6 +354,7 @@ class Model:
         info["degrees_of_freedom"] = info["n_coordinates"] - assembled["constraint_rank"]
         info["initial_coordinates"] = np.asarray(assembled["coordinates"])
         info["initial_velocities"] = np.asarray(assembled["velocities"])
+        info["modal_bending_frequencies"] = dict(self.compile().modal_bending_frequencies())
         info["beam_frequencies"] = {
             name: {"free_free": list(free), "clamped": list(clamped)}
             for name, (free, clamped) in self.compile().beam_frequencies(3, _MAX_MODAL_COORDINATES).items()}
@@ -356,6 +406,7 @@ class Model:
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian)
         emit(_flexible_advice(spec_snapshot, options))
+        emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
@@ -432,6 +483,28 @@ def _flexible_advice(spec: dict, options: dict) -> list:
             advice.append(Problem("simulation.stabilization", "a projection after each step strains the beam and "
                                                               "upsets the implicit method's history; use "
                                                               "stabilization=\"baumgarte\""))
+    return advice
+
+
+def _modal_spin_advice(spec: dict, bending: dict[str, float]) -> list:
+    """A warning for each driver of a revolute joint whose rate exceeds a modal body's first bending frequency
+    (times 2 pi): a linear modal body has no geometric stiffening and diverges when spun that fast
+    (docs/theory/modal-body.md). Which body the driver spins is not traced: the warning names them all."""
+    from .errors import Problem
+    from .modelfile.plausibility import function_rate
+
+    if not bending:
+        return []
+    kinds = {j["name"]: j["type"] for j in spec.get("joints", [])}
+    advice = []
+    for d in spec.get("drivers", []):
+        rate = function_rate(d["function"])
+        fast = {name: f for name, f in bending.items() if rate > 2.0 * math.pi * f}
+        if kinds.get(d["joint"]) == "revolute" and fast:
+            bodies = ", ".join(f"{name} ({f:.3g} Hz = {2.0 * math.pi * f:.3g} rad/s)" for name, f in fast.items())
+            advice.append(Problem(_where("drivers", d["name"]), f"turns at up to {rate:.3g} rad/s, faster than the "
+                                  f"first bending frequency of the modal body {bodies}: a linear modal body has no "
+                                  "geometric stiffening and diverges if it is spun that fast; use a beam"))
     return advice
 
 

@@ -12,6 +12,7 @@ import re
 from typing import Any
 
 from .. import parameters as p
+from ..errors import ModelError
 from ..units import KINDS, per_time
 
 _BARE_KEY = re.compile(r"^[A-Za-z0-9_-]+$")
@@ -193,6 +194,9 @@ def _referenced_bodies(spec: dict) -> set[str]:
 
 def to_toml(spec: dict, simulation: dict | None = None, header: str | None = None) -> str:
     """Model-file text for a core spec (as ``Model.to_spec()`` returns) and simulation defaults."""
+    if spec.get("modal_bodies"):
+        raise ModelError([("modal_bodies", "model files do not hold modal bodies yet: keep this model in Python "
+                                           "(Model.to_spec / Model.from_spec keep it whole)")])
     blocks = []
     if header:
         blocks.append("\n".join(f"# {line}".rstrip() for line in header.splitlines()))
