@@ -8,7 +8,8 @@
 //!   velocity coordinates a marker moves with, the Jacobian of a marker point
 //!   and of a marker's angle by them, and the velocity-dependent part of the
 //!   marker's acceleration (what constraint rows are built from);
-//! - its mass block and the solve with it ([`MassBlock`]);
+//! - its mass block and the solve with it ([`MassBlock`]), at the body's
+//!   positions (a modal body's mass depends on them);
 //! - velocity-dependent inertial forces;
 //! - the map from `v` to `q_dot`, and a position displaced by a velocity-coordinate increment;
 //! - the generalised force of a point force and of a moment, and of gravity;
@@ -16,7 +17,8 @@
 //! - how its coordinates are scaled in the integrator's error control.
 //!
 //! A marker's frame sits at a [`Site`] of its body: the body's reference
-//! frame, or (on a beam) a section interpolated from one element's nodes.
+//! frame, (on a beam) a section interpolated from one element's nodes, or
+//! (on a modal body) a node of its structure.
 //!
 //! Kinds: the planar rigid body (`planar_rigid.rs`), the geometrically
 //! exact beam (`beam.rs`) and the modal body (`modal.rs`, floating frame plus
