@@ -88,3 +88,10 @@ def test_a_model_with_a_modal_body_is_not_written_to_a_model_file_half():
     with pytest.raises(jp.ModelError, match="model files do not hold modal bodies yet"):
         cantilever().to_toml()
     assert jp.Model.from_spec(cantilever().to_spec()).to_spec() == cantilever().to_spec()
+
+
+def test_results_of_a_modal_body_are_saved_and_read_back(tmp_path):
+    r = cantilever().simulate(0.2, method="bdf", max_order=2, output_step=0.05)
+    back = jp.open_results(r.save(tmp_path / "cantilever.nc"))
+    assert back["arm.eta2"] == pytest.approx(r["arm.eta2"], rel=0, abs=0)
+    assert back.spec["modal_bodies"][0]["name"] == "arm"
