@@ -76,6 +76,12 @@ fn check_sizes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize
     if mass.iter().chain(stiffness.iter()).any(|v| !v.is_finite()) {
         return Err("the mass and stiffness matrices must be finite".to_string());
     }
+    for (a, what) in [(mass, "mass"), (stiffness, "stiffness")] {
+        let largest = a.amax();
+        if (a - a.transpose()).amax() > 1e-9 * largest {
+            return Err(format!("the {what} matrix must be symmetric"));
+        }
+    }
     if interface.is_empty() {
         return Err("a modal body needs at least one interface node (the first carries its frame)".to_string());
     }

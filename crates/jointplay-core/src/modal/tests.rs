@@ -262,4 +262,8 @@ fn bad_structures_are_refused_with_a_reason() {
     let (m, k) = mesh.dense_mass_and_stiffness(&mesh.reference_coordinates());
     let nodes = vec![Vec2::zeros(); 4];
     assert!(ModalBody::from_finite_elements(&m, &k, &nodes, &[0], 1, 0.0).unwrap_err().contains("one finite position per node"));
+    let mut skew = k.clone();
+    skew[(3, 4)] += 1.0;
+    let nodes: Vec<Vec2> = (0..mesh.n_nodes()).map(|a| Vec2::new(0.25 * a as f64, 0.0)).collect();
+    assert!(ModalBody::from_finite_elements(&m, &skew, &nodes, &[0], 1, 0.0).unwrap_err().contains("stiffness matrix must be symmetric"));
 }
