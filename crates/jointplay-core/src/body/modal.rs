@@ -55,21 +55,21 @@ pub struct ModalBody {
     /// Modal damping `D` (m x m, row-major) [N s/m per unit^2].
     damping: Vec<f64>,
     /// Damping ratio of every mode of the body clamped at its frame node [-].
-    pub damping_ratio: f64,
+    damping_ratio: f64,
     /// Reference position of every node in the body frame [m].
     nodes: Vec<Vec2>,
     /// Mode rows of every node: `3 m` values, `Phi_a` x row, y row, then `Psi_a`.
     node_rows: Vec<f64>,
     /// Interface nodes; the first carries the frame.
-    pub interface: Vec<usize>,
+    interface: Vec<usize>,
     /// Number of constraint modes (the first modes).
     n_constraint: usize,
     /// Whether each mode's amplitude is a rotation (a constraint mode of a section angle).
     rotational: Vec<bool>,
     /// Angular frequencies of the fixed-interface normal modes [rad/s].
-    pub fixed_interface_frequencies: Vec<f64>,
+    fixed_interface_frequencies: Vec<f64>,
     /// Angular frequencies of the reduced body clamped at its frame node [rad/s].
-    pub clamped_frequencies: Vec<f64>,
+    clamped_frequencies: Vec<f64>,
 }
 
 impl ModalBody {
@@ -172,6 +172,26 @@ impl ModalBody {
     /// The inertia invariants.
     pub fn invariants(&self) -> &InertiaInvariants {
         &self.invariants
+    }
+
+    /// Damping ratio of every mode of the body clamped at its frame node [-].
+    pub fn damping_ratio(&self) -> f64 {
+        self.damping_ratio
+    }
+
+    /// The interface nodes (the first carries the frame).
+    pub fn interface(&self) -> &[usize] {
+        &self.interface
+    }
+
+    /// Angular frequencies of the fixed-interface normal modes kept [rad/s].
+    pub fn fixed_interface_frequencies(&self) -> &[f64] {
+        &self.fixed_interface_frequencies
+    }
+
+    /// Angular frequencies of the reduced body clamped at its frame node, lowest first [rad/s].
+    pub fn clamped_frequencies(&self) -> &[f64] {
+        &self.clamped_frequencies
     }
 
     /// The modal stiffness `K_ee` (m x m, row-major) [N/m per unit^2].
