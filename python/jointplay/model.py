@@ -155,55 +155,15 @@ class Model:
                      "is given by its resultants; ``elements`` or ``element_length``; named points by arclength "
                      "(``points={\"E\": \"75 mm\"}``), besides ``start`` and ``end``. Joints and forces attach to "
                      "``\"<beam>.<point>\"``.")
-    def add_modal_body(self, name: str, start: Vector, end: Vector, *, section: dict, material: dict | None = None,
-                       order: str = "quadratic", elements: int | None = None, element_length: Quantity | None = None,
-                       interface: dict[str, Quantity] | None = None, normal_modes: int = 4,
-                       damping_ratio: float = 0.0, velocity: Vector = (0.0, 0.0),
-                       angular_velocity: Quantity = 0.0) -> str:
-        """A flexible link as a modal body (docs/theory/modal-body.md): a floating frame plus Craig-Bampton
-        modes of the straight beam from ``start`` to ``end`` [m] of ``section`` and ``material`` (as
-        :meth:`add_beam` reads them) meshed by ``elements`` (or ``element_length``) elements of ``order``.
-        ``interface``: named interface nodes by arclength from ``start`` (each at a node of the mesh), by
-        default ``{"start": 0, "end": <length>}``; the first carries the body's frame (its three coordinates
-        held in the modes), the others get static constraint modes. ``normal_modes``: fixed-interface normal
-        modes kept. ``damping_ratio``: one ratio for every mode of the body clamped at its frame node.
-        ``velocity`` [m/s] and ``angular_velocity`` [rad/s]: the frame's initial rates. Joints and forces
-        attach to ``"<body>.<interface node>"``. Linear modes without geometric stiffening: a body spun
-        faster than its first bending frequency (``check()["modal_bending_frequencies"]``) diverges.
-
-        Returns the element's name."""
-        from pydantic_core import PydanticCustomError
-
-        from .modelfile import arguments
-        from .modelfile.fields import convert
-
-        where = _where("modal_bodies", name)
-        beam = arguments.beam(p.BEAM, name, {
-            "start": start, "end": end, "section": section, "material": material, "order": order,
-            "elements": elements, "element_length": element_length, "damping_time": 0.0, "velocity": velocity,
-            "angular_velocity": angular_velocity, "points": {}}, where)
-        length = math.dist(beam["start"], beam["end"])
-        problems = []
-        stations = []
-        for point, raw in ({"start": 0.0, "end": length} if interface is None else interface).items():
-            try:
-                stations.append({"name": str(point), "arclength": float(convert(raw, "length", ge=0))})
-            except PydanticCustomError as exc:
-                problems.append((f"{where}.interface.{point}", exc.message()))
-        if not stations:
-            problems.append((f"{where}.interface", "give at least one interface node (the first carries the frame)"))
-        if isinstance(normal_modes, bool) or not isinstance(normal_modes, int) or normal_modes < 0:
-            problems.append((f"{where}.normal_modes", f"must be a count >= 0, got {normal_modes!r}"))
-        if not (isinstance(damping_ratio, (int, float)) and math.isfinite(damping_ratio) and damping_ratio >= 0):
-            problems.append((f"{where}.damping_ratio", f"must be >= 0, got {damping_ratio!r}"))
-        if problems:
-            raise ModelError(problems)
-        body = {key: beam[key] for key in ("name", "start", "end", "section", "mesh", "velocity", "angular_velocity")}
-        body.update({"interface": stations, "normal_modes": normal_modes, "damping_ratio": float(damping_ratio)})
-        self._spec.setdefault("modal_bodies", []).append(body)
-        self._changed()
-        return name
-
+    add_modal_body = _adds(p.MODAL_BODY, "modal_bodies", positional=3, summary="A flexible link as a modal "
+                           "body (docs/theory/modal-body.md): a floating frame plus Craig-Bampton modes of the "
+                           "straight beam from ``start`` to ``end`` [m], its ``section``, ``material`` and mesh read "
+                           "as :meth:`add_beam` reads them; ``interface`` names the interface nodes by arclength "
+                           "(``interface={\"start\": 0, \"end\": \"300 mm\"}``, the default: the two ends), the "
+                           "first carrying the frame. Joints and forces attach to ``\"<body>.<interface node>\"``. "
+                           "Linear modes without geometric stiffening: a body spun faster than its first bending "
+                           "frequency (``check()[\"modal_bending_frequencies\"]``) diverges, and ``simulate`` warns "
+                           "of a driver that does so.")
     add_revolute = _adds(p.REVOLUTE, "joints")
     add_translational = _adds(p.TRANSLATIONAL, "joints")
     add_fixed = _adds(p.FIXED, "joints")
@@ -279,8 +239,8 @@ class Model:
         from .modelfile import arguments
 
         where = _where(section, name)
-        read = arguments.beam if section == "beams" else arguments.element
-        self._spec[section].append(read(table, name, values, where, hint))
+        read = {"beams": arguments.beam, "modal_bodies": arguments.modal_body}.get(section, arguments.element)
+        self._spec.setdefault(section, []).append(read(table, name, values, where, hint))
         self._changed()
         return name
 

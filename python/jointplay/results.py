@@ -213,9 +213,8 @@ class Results:
         return writer.finish(self.file_attributes())
 
     def model_toml(self) -> str:
-        """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table; empty
-        for a model with modal bodies, which model files do not hold yet (``model_json`` keeps it whole)."""
-        if self.spec is None or self.spec.get("modal_bodies"):
+        """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table."""
+        if self.spec is None:
             return ""
         simulation = {k: v for k, v in self.options.items() if v is not None}
         if self.error is None and self.time.size:

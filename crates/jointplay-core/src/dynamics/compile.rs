@@ -142,7 +142,7 @@ impl<'s> Compiler<'s> {
         for (k, b) in self.spec.beams.iter().enumerate() {
             self.beam(&format!("beams[{k}]"), b);
         }
-        for (k, b) in self.spec.modal_bodies.iter().enumerate() {
+        for (k, b) in self.spec.modal_bodies.iter().flatten().enumerate() {
             self.modal_body(&format!("modal_bodies[{k}]"), b);
         }
     }
@@ -202,7 +202,7 @@ impl<'s> Compiler<'s> {
 
     /// A marker at a section of a flexible body (with its frame, shared by the markers at the same section).
     fn section_marker(&mut self, body: BodyIndex, site: Site, local: Vec2) -> Marker {
-        let total_bodies = self.spec.bodies.len() + self.spec.beams.len() + self.spec.modal_bodies.len();
+        let total_bodies = self.spec.bodies.len() + self.spec.beams.len() + self.spec.modal_bodies.as_ref().map_or(0, Vec::len);
         let section = Section { body, site };
         let k = self.model.sections.iter().position(|s| *s == section).unwrap_or_else(|| {
             self.model.sections.push(section);

@@ -40,10 +40,10 @@ pub struct ModelSpec {
     pub bodies: Vec<BodySpec>,
     /// Flexible links.
     pub beams: Vec<BeamSpec>,
-    /// Flexible links reduced to modal bodies (a key that may be left out, so
+    /// Flexible links reduced to modal bodies; none when left out or null (so
     /// that descriptions written before modal bodies existed stay valid).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub modal_bodies: Vec<ModalBodySpec>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub modal_bodies: Option<Vec<ModalBodySpec>>,
     /// Ideal and clearance joints.
     pub joints: Vec<JointSpec>,
     /// Drivers prescribing joint coordinates over time.
