@@ -84,6 +84,37 @@ fn an_undamped_modal_body_spinning_and_vibrating_in_free_flight_keeps_its_energy
 }
 
 #[test]
+fn an_undamped_modal_pendulum_under_gravity_keeps_its_energy() {
+    // pinned at its frame node by an ideal revolute joint (no work), released horizontal: the
+    // exchange of gravity, kinetic and strain energy through the eta-dependent mass and weight
+    let interface = serde_json::json!([{"name": "start", "arclength": 0.0}, {"name": "end", "arclength": 1.0}]);
+    let mut arm = arm_json(1.0, SECTION, 4, interface, 3, 0.0, 0.0);
+    arm["velocity"] = serde_json::json!([0.0, 0.0]);
+    let m = model(serde_json::json!({
+        "name": "modal pendulum", "gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}], "bodies": [], "beams": [],
+        "modal_bodies": [arm],
+        "joints": [{"type": "revolute", "name": "pin", "first": "ground.O", "second": "arm.start"}],
+        "drivers": [], "forces": [], "sensors": []
+    }));
+    let mut ws = Workspace::new(&m);
+    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+    let options = SimulationOptions {
+        integrator: IntegratorOptions { rtol: 1e-10, atol: 1e-12, output_step: Some(0.01), ..IntegratorOptions::default() },
+        ..SimulationOptions::default()
+    };
+    let outcome = simulate(&m, &mut state, 1.0, &options, None);
+    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    let tr = &outcome.trajectory;
+    let (energy, kinetic) = (tr.channel("system.energy").unwrap(), tr.channel("system.kinetic_energy").unwrap());
+    // the swing turns m g L / 2 = 9.81 J of potential energy into kinetic energy by the bottom
+    let swing = kinetic.iter().fold(0.0_f64, |a, k| a.max(*k));
+    let (low, high) = energy.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), e| (l.min(*e), h.max(*e)));
+    assert!(swing > 5.0 && (high - low) < 1e-8 * swing, "energy varies by {} J over a swing of {swing} J", high - low);
+    // the body bends under its own inertia: some modal amplitude is not zero
+    assert!(tr.channel("arm.eta4").unwrap().iter().any(|e| e.abs() > 1e-5));
+}
+
+#[test]
 fn a_modal_cantilever_under_a_tip_load_settles_at_the_timoshenko_deflection() {
     // clamped at its frame node by a fixed joint, 10 N down at the free end, every mode
     // critically damped: the rest deflection is P L^3 / (3 EI) + P L / (k G A) = 33.346 mm
