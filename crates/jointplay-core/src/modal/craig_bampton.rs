@@ -6,7 +6,7 @@
 //! in the body frame. The interface nodes' coordinates are the boundary set;
 //! those of the **first** interface node are held: the floating frame is
 //! attached there (its position and section angle are the frame's, the
-//! "tangent frame" of Shabana, *Dynamics of Multibody Systems*, 4th ed., §5.6),
+//! "tangent frame" of Shabana, *Dynamics of Multibody Systems*, its reference conditions),
 //! so the rigid-body motion is carried by the frame and the modes hold none.
 //! The mode set is
 //!

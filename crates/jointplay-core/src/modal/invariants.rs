@@ -1,8 +1,8 @@
 //! Inertia invariants of a planar floating-frame body: the constant matrices
 //! from which its mass matrix, for any modal amplitudes `eta`, is formed
 //! without going back to the finite elements (Shabana, *Dynamics of
-//! Multibody Systems*, 4th ed., §5.5; Schwertassek and Wallrapp,
-//! *Dynamik flexibler Mehrkörpersysteme*, 1999, ch. 6).
+//! Multibody Systems*, the floating frame of reference formulation;
+//! Schwertassek and Wallrapp, *Dynamik flexibler Mehrkörpersysteme*, 1999).
 //!
 //! A node `a` of the structure sits at `X_a + Phi_a eta` in the body frame
 //! (reference position `X_a` [m], translation rows `Phi_a` of the modes), its
