@@ -52,7 +52,8 @@ def test_out_of_range_values_name_location_and_value(override, message):
     ("joints.B.clearence=0.1 mm", 'joints.B.clearence: unknown key (did you mean "clearance"?)'),
     ("bodies.crank.mas=1 kg", 'bodies.crank.mas: unknown key (did you mean "mass"?)'),
     ("simulaton.t_end=1", 'simulaton: unknown section (did you mean "simulation"?); '
-                          "sections: model, units, ground, bodies, beams, joints, drivers, forces, sensors, simulation"),
+                          "sections: model, units, ground, bodies, beams, modal_bodies, joints, drivers, forces, sensors, "
+                          "simulation"),
     ("joints.A.type=revolut", "joints.A.type: must be one of revolute, translational, fixed, clearance_revolute, "
                               "got 'revolut' (did you mean \"revolute\"?)"),
     ("joints.B.contact.law=lankarani", "joints.B.contact.law: must be one of hertz, hunt_crossley, "

@@ -258,11 +258,11 @@ def test_every_key_fixture_uses_every_key_of_every_table():
     visit(p.MODEL, doc["model"])
     visit(p.GROUND, doc["ground"])
     visit(p.SIMULATION, doc["simulation"])
-    for section, tables in (("bodies", None), ("beams", None), ("joints", p.JOINTS), ("drivers", None),
-                            ("forces", p.FORCES), ("sensors", p.SENSORS)):
+    for section, tables in (("bodies", None), ("beams", None), ("modal_bodies", None), ("joints", p.JOINTS),
+                            ("drivers", None), ("forces", p.FORCES), ("sensors", p.SENSORS)):
+        plain = {"bodies": p.BODY, "beams": p.BEAM, "modal_bodies": p.MODAL_BODY, "drivers": p.DRIVER}
         for raw in doc[section].values():
-            visit(tables[raw["type"]] if tables else {"bodies": p.BODY, "beams": p.BEAM, "drivers": p.DRIVER}[section],
-                  raw)
+            visit(tables[raw["type"]] if tables else plain[section], raw)
     missing = [(t.name, key) for t in p.all_tables() for key in [None, *t.keys()] if (id(t), key) not in seen]
     assert missing == []
 

@@ -204,6 +204,18 @@ def _beam_table(spec: dict, described: dict, frequencies: dict) -> Table:
     return t
 
 
+def _modal_table(spec: dict, described: dict) -> Table:
+    """Each modal body's reduction and its first bending frequency (clamped at its frame node), the spin above
+    which a linear modal body diverges."""
+    t = Table("modal body", "mass", "nodes", "interface", "modes", "damping ratio", "first bending (Hz)",
+              title="modal bodies: Craig-Bampton reduction and first bending frequency")
+    for b in spec["modal_bodies"]:
+        d = described[b["name"]]
+        t.add_row(b["name"], _fmt(d["mass"], "kg"), str(d["nodes"]), ", ".join(node["name"] for node in b["interface"]),
+                  str(d["modes"]), f"{d['damping_ratio']:g}", _fmt(d["first_bending_frequency"], ""))
+    return t
+
+
 def _acts_on(force: dict) -> str:
     """``ground.C -> boom.R``: the points and bodies a force element refers to, from its definition."""
     from . import parameters as p
@@ -258,6 +270,8 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
         out.print(bodies)
     if spec.get("beams"):
         out.print(_beam_table(spec, described, info["beam_frequencies"]))
+    if spec.get("modal_bodies"):
+        out.print(_modal_table(spec, described))
     joints = Table("joint or driver", "kind", "first body", "second body", "equations", title="constraints")
     for e in info["elements"]:
         if e["kind"] != "AssemblyLock":  # clearance joints are held only while assembling
@@ -277,14 +291,17 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
             t.add_row(f["name"], f["type"], _acts_on(f), _force_details(f))
         out.print(t)
     dof = info["degrees_of_freedom"]
-    elastic = sum(b["coordinates"][1] - 3 for b in info["bodies"] if b["kind"] == "beam")
+    elastic = sum(b["coordinates"][1] - 3 for b in info["bodies"] if b["kind"] in ("beam", "modal"))
+    flexible = {"beam": "beams", "modal": "modal bodies"}
+    kinds = {flexible[b["kind"]] for b in info["bodies"] if b["kind"] in flexible}
+    flexible_text = kinds.pop() if len(kinds) == 1 else "flexible bodies"
     free = dof - 2 * len(clearance) - elastic
     states = info.get("n_element_states", 0)
     out.print(f"coordinates {info['n_coordinates']}, "
               + (f"element states {states}, " if states else "")
               + f"constraint equations {info['n_equations']}, "
               f"degrees of freedom {dof} ({2 * len(clearance)} from {len(clearance)} clearance joint(s), "
-              + (f"{elastic} elastic of the beams, " if elastic else "") + f"{free} not driven)")
+              + (f"{elastic} elastic of the {flexible_text}, " if elastic else "") + f"{free} not driven)")
     if info.get("joint_coordinates") is not None:
         out.print(f"formulation (auto): joint coordinates, {info['joint_coordinates']} of them: the ideal joints "
                   "form a tree, so no constraint equation is solved while simulating")

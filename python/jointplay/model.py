@@ -155,6 +155,15 @@ class Model:
                      "is given by its resultants; ``elements`` or ``element_length``; named points by arclength "
                      "(``points={\"E\": \"75 mm\"}``), besides ``start`` and ``end``. Joints and forces attach to "
                      "``\"<beam>.<point>\"``.")
+    add_modal_body = _adds(p.MODAL_BODY, "modal_bodies", positional=3, summary="A flexible link as a modal "
+                           "body (docs/theory/modal-body.md): a floating frame plus Craig-Bampton modes of the "
+                           "straight beam from ``start`` to ``end`` [m], its ``section``, ``material`` and mesh read "
+                           "as :meth:`add_beam` reads them; ``interface`` names the interface nodes by arclength "
+                           "(``interface={\"start\": 0, \"end\": \"300 mm\"}``, the default: the two ends), the "
+                           "first carrying the frame. Joints and forces attach to ``\"<body>.<interface node>\"``. "
+                           "Linear modes without geometric stiffening: a body spun faster than its first bending "
+                           "frequency (``check()[\"modal_bending_frequencies\"]``) diverges, and ``simulate`` warns "
+                           "of a driver that does so.")
     add_revolute = _adds(p.REVOLUTE, "joints")
     add_translational = _adds(p.TRANSLATIONAL, "joints")
     add_fixed = _adds(p.FIXED, "joints")
@@ -230,8 +239,8 @@ class Model:
         from .modelfile import arguments
 
         where = _where(section, name)
-        read = arguments.beam if section == "beams" else arguments.element
-        self._spec[section].append(read(table, name, values, where, hint))
+        read = {"beams": arguments.beam, "modal_bodies": arguments.modal_body}.get(section, arguments.element)
+        self._spec.setdefault(section, []).append(read(table, name, values, where, hint))
         self._changed()
         return name
 
@@ -305,6 +314,7 @@ class Model:
         info["degrees_of_freedom"] = info["n_coordinates"] - assembled["constraint_rank"]
         info["initial_coordinates"] = np.asarray(assembled["coordinates"])
         info["initial_velocities"] = np.asarray(assembled["velocities"])
+        info["modal_bending_frequencies"] = dict(self.compile().modal_bending_frequencies())
         info["beam_frequencies"] = {
             name: {"free_free": list(free), "clamped": list(clamped)}
             for name, (free, clamped) in self.compile().beam_frequencies(3, _MAX_MODAL_COORDINATES).items()}
@@ -356,6 +366,7 @@ class Model:
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian)
         emit(_flexible_advice(spec_snapshot, options))
+        emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
@@ -432,6 +443,28 @@ def _flexible_advice(spec: dict, options: dict) -> list:
             advice.append(Problem("simulation.stabilization", "a projection after each step strains the beam and "
                                                               "upsets the implicit method's history; use "
                                                               "stabilization=\"baumgarte\""))
+    return advice
+
+
+def _modal_spin_advice(spec: dict, bending: dict[str, float]) -> list:
+    """A warning for each driver of a revolute joint whose rate exceeds a modal body's first bending frequency
+    (times 2 pi): a linear modal body has no geometric stiffening and diverges when spun that fast
+    (docs/theory/modal-body.md). Which body the driver spins is not traced: the warning names them all."""
+    from .errors import Problem
+    from .modelfile.plausibility import function_rate
+
+    if not bending:
+        return []
+    kinds = {j["name"]: j["type"] for j in spec.get("joints", [])}
+    advice = []
+    for d in spec.get("drivers", []):
+        rate = function_rate(d["function"])
+        fast = {name: f for name, f in bending.items() if rate > 2.0 * math.pi * f}
+        if kinds.get(d["joint"]) == "revolute" and fast:
+            bodies = ", ".join(f"{name} ({f:.3g} Hz = {2.0 * math.pi * f:.3g} rad/s)" for name, f in fast.items())
+            advice.append(Problem(_where("drivers", d["name"]), f"turns at up to {rate:.3g} rad/s, faster than the "
+                                  f"first bending frequency of the modal body {bodies}: a linear modal body has no "
+                                  "geometric stiffening and diverges if it is spun that fast; use a beam"))
     return advice
 
 

@@ -669,6 +669,26 @@ BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reiss
           in_spec=False),
 ))
 
+MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating frame plus Craig-Bampton modes of a "
+                   "straight beam of jointplay's elements (section, material and mesh as a beam's), with linear modes "
+                   "and no geometric stiffening; its named points are its interface nodes "
+                   "(docs/theory/modal-body.md).", (
+    *(BEAM[key] for key in ("start", "end", "section", "material", "order", "elements", "element_length")),
+    Param("interface", "arclengths", "interface nodes by arclength from the first end, each at a node of the mesh: "
+          '`interface = { start = "0 mm", end = "300 mm" }`; the first carries the body\'s frame, the others get '
+          "static constraint modes; joints attach to `\"<body>.<node>\"`", {},
+          default_text="the two ends, named `start` and `end`"),
+    Param("normal_modes", "count", "fixed-interface normal modes kept", 4,
+          why="a uniform link's three lowest clamped-free frequencies within 1e-3, free-free within 5e-3"),
+    Param("damping_ratio", "dimensionless", "damping ratio of every mode of the body clamped at its frame node", 0.0,
+          ge=0, why="undamped unless chosen"),
+    Param("velocity", "vector", "initial velocity of the frame's origin (the first interface node)", (0.0, 0.0),
+          of="velocity"),
+    Param("angular_velocity", "angular velocity", "initial angular velocity of the frame", 0.0),
+    Param("free", "flag", "allow a modal body that no joint or force element refers to (otherwise an error)", False,
+          in_spec=False),
+))
+
 STRAIN_GAUGE = Table("strain_gauge", "Stress resultants of a beam's section at a point (axial force N, shear force "
                      "Q, bending moment M), the axis strain, the curvature and the axial strain of a fibre at "
                      "`fibre` from the axis, as channels `<name>.axial_force` ... `<name>.axial_strain`.", (
@@ -727,7 +747,7 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
 
 
 #: The sections of a model file, in the order they are written; the tables of each, by variant.
-SECTIONS = ("model", "units", "ground", "bodies", "beams", "joints", "drivers", "forces", "sensors",
+SECTIONS = ("model", "units", "ground", "bodies", "beams", "modal_bodies", "joints", "drivers", "forces", "sensors",
             "simulation")
 
 #: The name of a mechanism built in Python without one (a model file's default is its file name).
@@ -806,5 +826,5 @@ def all_tables() -> list[Table]:
     """Every table defined here, each variant once (the tests check each against the schema, the builder
     and the writer)."""
     laws = [t for tables in LAWS.values() for t in variants(tables)]
-    return [MODEL, GROUND, BODY, BEAM, BEAM_MATERIAL, *variants(BEAM_SECTIONS), *variants(JOINTS), MATERIAL,
+    return [MODEL, GROUND, BODY, BEAM, MODAL_BODY, BEAM_MATERIAL, *variants(BEAM_SECTIONS), *variants(JOINTS), MATERIAL,
             LUBRICATION, *laws, DRIVER, *variants(FUNCTIONS), *variants(FORCES), *variants(SENSORS), SIMULATION]

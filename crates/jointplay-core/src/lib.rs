@@ -39,6 +39,7 @@ pub mod integrate;
 pub mod joint;
 pub mod linalg;
 pub mod lubrication;
+pub mod modal;
 pub mod motion;
 pub mod spec;
 

@@ -218,6 +218,15 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
                 e.set_item("bending_stiffness", section.bending_stiffness)?;
                 e.set_item("damping_time", beam.damping_time)?;
             }
+            BodyKind::Modal(modal) => {
+                e.set_item("kind", "modal")?;
+                e.set_item("mass", modal.mass())?;
+                e.set_item("modes", modal.n_modes())?;
+                e.set_item("nodes", modal.n_nodes())?;
+                e.set_item("interface_nodes", modal.interface().to_vec())?;
+                e.set_item("damping_ratio", modal.damping_ratio())?;
+                e.set_item("first_bending_frequency", modal.first_bending_frequency())?;
+            }
         }
         bodies.append(e)?;
     }

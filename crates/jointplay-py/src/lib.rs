@@ -145,6 +145,16 @@ impl CoreModel {
         Ok(out)
     }
 
+    /// The first bending frequency [Hz] of each modal body (clamped at its frame node): `{name: f1}`.
+    /// A linear modal body spun faster than `2 pi f1` diverges (no geometric stiffening).
+    fn modal_bending_frequencies<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let out = PyDict::new(py);
+        for (name, frequency) in self.model.modal_bending_frequencies() {
+            out.set_item(name, frequency)?;
+        }
+        Ok(out)
+    }
+
     /// Consistent initial coordinates and velocities at `t0`, or an error record.
     fn assemble<'py>(&self, py: Python<'py>, t0: f64) -> PyResult<Bound<'py, PyDict>> {
         let model = Arc::clone(&self.model);

@@ -6,7 +6,7 @@
 //! (`joints[2]`, which Python turns into `joints.B`), not as one message
 //! pointing at a column of the JSON text.
 
-use jointplay_core::spec::{BodySpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, PointSpec};
+use jointplay_core::spec::{BodySpec, DriverSpec, ForceSpec, JointSpec, ModalBodySpec, ModelSpec, PointSpec};
 use serde::de::DeserializeOwned;
 use serde_json::Value;
 
@@ -24,6 +24,7 @@ pub fn read_spec(text: &str) -> Result<ModelSpec, Vec<Problem>> {
             let mut problems = Vec::new();
             elements::<PointSpec>(&value, "ground_points", &mut problems);
             elements::<BodySpec>(&value, "bodies", &mut problems);
+            elements::<ModalBodySpec>(&value, "modal_bodies", &mut problems);
             elements::<JointSpec>(&value, "joints", &mut problems);
             elements::<DriverSpec>(&value, "drivers", &mut problems);
             elements::<ForceSpec>(&value, "forces", &mut problems);

@@ -113,7 +113,8 @@ def to_toml(model, header: str | None = None) -> str:
     return _spec_to_toml(model.to_spec(), getattr(model, "simulation", None), header)
 
 
-_INDEXED = re.compile(r"^(ground_points|bodies|beams|joints|drivers|forces|sensors)\[(\d+)\](?:\.points\[(\d+)\])?")
+_INDEXED = re.compile(r"^(ground_points|bodies|beams|modal_bodies|joints|drivers|forces|sensors)\[(\d+)\]"
+                      r"(?:\.(points|interface)\[(\d+)\])?")
 
 
 def core_location(location: str, spec: dict) -> str:
@@ -123,7 +124,7 @@ def core_location(location: str, spec: dict) -> str:
     match = _INDEXED.match(location)
     if not match:
         return location
-    section, index, point = match.group(1), int(match.group(2)), match.group(3)
+    section, index, points, point = match.group(1), int(match.group(2)), match.group(3), match.group(4)
     try:
         entry = spec[section][index]
         if section == "ground_points":
@@ -131,7 +132,7 @@ def core_location(location: str, spec: dict) -> str:
         else:
             head = join(section, entry["name"])
             if point is not None:
-                head = join(head, "points", entry["points"][int(point)]["name"])
+                head = join(head, points, entry[points][int(point)]["name"])
     except (KeyError, IndexError):
         return location
     rest = location[match.end():]
@@ -145,7 +146,7 @@ def element_location(element: str | None, spec: dict) -> str:
     if not element:
         return "model"
     name = element.removesuffix(" (assembly lock)")
-    for section in ("joints", "drivers", "forces", "sensors", "bodies", "beams"):
+    for section in ("joints", "drivers", "forces", "sensors", "bodies", "beams", "modal_bodies"):
         if any(e["name"] == name for e in spec.get(section, [])):
             return join(section, name)
     return "model"

@@ -59,6 +59,7 @@ class Builder:
         self.ground()
         self.bodies()
         self.beams()
+        self.modal_bodies()
         self.joints()
         self.drivers()
         self.forces()
@@ -452,6 +453,21 @@ class Builder:
     def beam(self, name: str, where: str, t: Strict, raw: dict, stations: list[dict]) -> dict | None:
         """The core's dict of a validated beam table: section and material as one ``section``, the mesh keys as
         one ``mesh``; None after adding problems."""
+        geometry = self.beam_geometry(where, t, raw, (stations, "points"))
+        if geometry is None:
+            return None
+        section, mesh = geometry
+        return {"name": name, "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
+                "section": section, "mesh": mesh, "damping_time": float(t.damping_time),
+                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity),
+                "points": stations}
+
+    def beam_geometry(self, where: str, t: Strict, raw: dict,
+                      named: tuple[list[dict], str]) -> tuple[dict, dict] | None:
+        """The core's ``section`` and ``mesh`` of a validated beam or modal body table whose named stations
+        are ``named`` (the list and the key that holds them: points or interface nodes); None after adding
+        problems."""
+        stations, key = named
         section = self.variant(raw, p.BEAM["section"], where)
         material = self.beam_material(t, section, join(where, "material"))
         mesh_ok = self.exactly_one(t, ("elements", "element_length"), where)
@@ -461,7 +477,7 @@ class Builder:
                                              f"(a beam has a length), got [{t.end[0].text}, {t.end[1].text}]")
         for station in stations:
             if length > 0.0 and station["arclength"] > length:
-                self.problem(join(where, "points", station["name"]),
+                self.problem(join(where, key, station["name"]),
                              f"must lie on the beam, from 0 to its length {_text(length)}, got "
                              f"{_text(station['arclength'])}")
         if section is None or material is False or not mesh_ok or length == 0.0:
@@ -470,10 +486,52 @@ class Builder:
         core_section = {"type": shape, **section, **({} if material is None else {"material": material})}
         mesh = {"order": t.order, "elements": t.elements,
                 "element_length": None if t.element_length is None else float(t.element_length)}
+        return core_section, mesh
+
+    def modal_bodies(self) -> None:
+        for name, where, raw in self.entries("modal_bodies"):
+            self.claim(name, where)
+            table = self.validate(s.ModalBodyTable, raw, where)
+            stations = self.interface_nodes(raw, where)
+            self.points.setdefault(name, [station["name"] for station in stations])
+            if table is None:
+                continue
+            if table.free:
+                self.free.add(name)
+            body = self.modal_body(name, where, table, raw, stations)
+            if body is not None:
+                self.spec.setdefault("modal_bodies", []).append(body)
+
+    def interface_nodes(self, raw: dict, where: str) -> list[dict]:
+        """A modal body's interface nodes by arclength (``start`` and ``end`` by default), as the core's list;
+        ``end``'s default arclength is filled in by :meth:`modal_body` once the length is known."""
+        given = raw.get("interface") or {"start": 0.0, "end": None}
+        out = []
+        for name, location, value in self.named_points(given, join(where, "interface"),
+                                                       'arclengths, e.g. { start = "0 mm", end = "300 mm" }'):
+            try:
+                arclength = None if value is None else float(convert(value, "length", ge=0))
+            except PydanticCustomError as exc:
+                self.problem(location, exc.message())
+                continue
+            out.append({"name": name, "arclength": arclength})
+        return out
+
+    def modal_body(self, name: str, where: str, t: Strict, raw: dict, stations: list[dict]) -> dict | None:
+        """The core's dict of a validated modal body table; None after adding problems."""
+        length = math.dist(t.start, t.end)
+        for station in stations:
+            if station["arclength"] is None:
+                station["arclength"] = length
+        geometry = self.beam_geometry(where, t, raw, (stations, "interface"))
+        if geometry is None:
+            return None
+        section, mesh = geometry
         return {"name": name, "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
-                "section": core_section, "mesh": mesh, "damping_time": float(t.damping_time),
-                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity),
-                "points": stations}
+                "section": section, "mesh": mesh,
+                "interface": [{"name": station["name"], "arclength": station["arclength"]} for station in stations],
+                "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
+                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity)}
 
     def beam_material(self, t: Strict, section: dict | None, where: str) -> dict | None | bool:
         """The core's material of a beam: None for a section given by its resultants, False after problems."""
@@ -570,14 +628,14 @@ class Builder:
     def connectivity(self) -> None:
         """A model without bodies is a mistake; so is a body that no joint or force element refers to,
         unless marked ``free = true``."""
-        if not self.table("bodies") and not self.table("beams"):
+        if not self.table("bodies") and not self.table("beams") and not self.table("modal_bodies"):
             self.problem("bodies", "the model has no bodies: describe at least one as a [bodies.NAME] table "
                                    "with its mass and inertia (or a flexible link as a [beams.NAME] table)")
             return
         if any(p.location.startswith(("joints", "forces")) for p in self.problems):
             return  # references are incomplete; do not pile on
-        for section in ("bodies", "beams"):
-            for body in self.spec[section]:
+        for section in ("bodies", "beams", "modal_bodies"):
+            for body in self.spec.get(section, []):
                 name = body["name"]
                 if name not in self.referenced and name not in self.free:
                     self.problem(join(section, name), "is connected to nothing: no joint or force element refers "

@@ -261,7 +261,7 @@ def model_speed(spec: dict, size: float) -> float:
     kinds = {j["name"]: j["type"] for j in spec.get("joints", [])}
     speeds = [function_rate(d["function"]) * (size if kinds.get(d["joint"]) == "revolute" else 1.0)
               for d in spec.get("drivers", [])]
-    for b in spec.get("bodies", []) + spec.get("beams", []):
+    for b in spec.get("bodies", []) + spec.get("beams", []) + spec.get("modal_bodies", []):
         speeds += [math.hypot(*b["velocity"]), abs(b["angular_velocity"]) * size]
     speeds.append(math.sqrt(2.0 * math.hypot(*spec.get("gravity", (0.0, 0.0))) * size))
     return max(speeds, default=0.0)
@@ -300,7 +300,7 @@ def _far_bodies(spec: dict, size: float) -> list[Problem]:
 
 
 def _nothing_moves(spec: dict) -> list[Problem]:
-    moving = spec.get("bodies", []) + spec.get("beams", [])
+    moving = spec.get("bodies", []) + spec.get("beams", []) + spec.get("modal_bodies", [])
     if not moving or spec.get("drivers") or spec.get("forces"):
         return []
     if any(spec.get("gravity", (0.0, 0.0))):

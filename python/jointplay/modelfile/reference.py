@@ -117,6 +117,7 @@ def text() -> str:
               "### Beam sections\n\n`section = { shape = ..., ... }` of a beam.",
               *_family(p.BEAM_SECTIONS, "####"),
               table_text(p.BEAM_MATERIAL, "### Beam materials\n\n`material = { ... }` of a beam."),
+              table_text(p.MODAL_BODY, "## `[modal_bodies.NAME]`\n\n`section` and `material` as a beam's."),
               "## `[joints.NAME]`\n\nEvery joint has a `type`.",
               *_family(p.JOINTS, "###"),
               "## Tables inside an element",

@@ -149,17 +149,35 @@ def _value_of(param: p.Param, value: Any) -> Any:
 def _beam(beam: dict) -> dict:
     """A beam's table: the core's ``section`` is the model file's ``section`` (its shape) and ``material``, its
     ``mesh`` the keys ``order``, ``elements``, ``element_length``, its points a table of arclengths."""
+    values = {**_beam_geometry(beam), "damping_time": beam["damping_time"],
+              "velocity": beam["velocity"], "angular_velocity": beam["angular_velocity"],
+              "points": {point["name"]: point["arclength"] for point in beam["points"]}}
+    return _in_order(p.BEAM, values)
+
+
+def _modal_body(body: dict) -> dict:
+    """A modal body's table: section, material and mesh as a beam's, its interface nodes a table of arclengths."""
+    values = {**_beam_geometry(body), "interface": {node["name"]: node["arclength"] for node in body["interface"]},
+              "normal_modes": body["normal_modes"], "damping_ratio": body["damping_ratio"],
+              "velocity": body["velocity"], "angular_velocity": body["angular_velocity"]}
+    return _in_order(p.MODAL_BODY, values)
+
+
+def _beam_geometry(beam: dict) -> dict:
+    """The ends, the section (its shape), the material and the mesh keys of a beam's or modal body's spec."""
     section = dict(beam["section"])
     shape = section.pop("type")
     material = section.pop("material", None)
     shape_table = p.BEAM_SECTIONS[shape]
-    values = {"start": beam["start"], "end": beam["end"],
-              "section": {"shape": shape, **{key: _value_of(shape_table[key], v) for key, v in section.items()}},
-              "material": material, **beam["mesh"], "damping_time": beam["damping_time"],
-              "velocity": beam["velocity"], "angular_velocity": beam["angular_velocity"],
-              "points": {point["name"]: point["arclength"] for point in beam["points"]}}
+    return {"start": beam["start"], "end": beam["end"],
+            "section": {"shape": shape, **{key: _value_of(shape_table[key], v) for key, v in section.items()}},
+            "material": material, **beam["mesh"]}
+
+
+def _in_order(table: p.Table, values: dict) -> dict:
+    """``values`` as the file writes them, in the order of the table's keys that the core reads."""
     out = {}
-    for param in p.BEAM.params:
+    for param in table.params:
         if param.in_spec:
             value = values.get(param.key)
             out[param.key] = value if param.kind == "variant" else _value_of(param, value)
@@ -206,6 +224,9 @@ def to_toml(spec: dict, simulation: dict | None = None, header: str | None = Non
     for b in spec.get("beams", []):
         free = {"free": True} if b["name"] not in referenced else {}
         blocks.append(_table(f"beams.{_key(b['name'])}", {**_beam(b), **free}))
+    for b in spec.get("modal_bodies", []):
+        free = {"free": True} if b["name"] not in referenced else {}
+        blocks.append(_table(f"modal_bodies.{_key(b['name'])}", {**_modal_body(b), **free}))
     joint_types = {j["name"]: j["type"] for j in spec.get("joints", [])}
     for j in spec.get("joints", []):
         blocks.append(_table(f"joints.{_key(j['name'])}", _element(p.JOINTS[j["type"]], j)))

@@ -204,7 +204,7 @@ impl BeamBody {
     fn section(marker: &Marker) -> &SectionSite {
         match &marker.site {
             Site::Section(s) => s,
-            Site::Reference => &Self::FIRST_NODE,
+            Site::Reference | Site::ModalNode(_) => &Self::FIRST_NODE,
         }
     }
 

@@ -8,7 +8,8 @@
 //!   velocity coordinates a marker moves with, the Jacobian of a marker point
 //!   and of a marker's angle by them, and the velocity-dependent part of the
 //!   marker's acceleration (what constraint rows are built from);
-//! - its mass block and the solve with it ([`MassBlock`]);
+//! - its mass block and the solve with it ([`MassBlock`]), at the body's
+//!   positions (a modal body's mass depends on them);
 //! - velocity-dependent inertial forces;
 //! - the map from `v` to `q_dot`, and a position displaced by a velocity-coordinate increment;
 //! - the generalised force of a point force and of a moment, and of gravity;
@@ -16,16 +17,21 @@
 //! - how its coordinates are scaled in the integrator's error control.
 //!
 //! A marker's frame sits at a [`Site`] of its body: the body's reference
-//! frame, or (on a beam) a section interpolated from one element's nodes.
+//! frame, (on a beam) a section interpolated from one element's nodes, or
+//! (on a modal body) a node of its structure.
 //!
-//! Kinds: the planar rigid body (`planar_rigid.rs`) and the geometrically
-//! exact beam (`beam.rs`). Theory: `docs/theory/planar-formulation.md`,
-//! "Coordinates, bodies and markers", and `docs/theory/beam.md`.
+//! Kinds: the planar rigid body (`planar_rigid.rs`), the geometrically
+//! exact beam (`beam.rs`) and the modal body (`modal.rs`, floating frame plus
+//! Craig-Bampton modes). Theory: `docs/theory/planar-formulation.md`,
+//! "Coordinates, bodies and markers", `docs/theory/beam.md` and
+//! `docs/theory/modal-body.md`.
 
 mod beam;
+mod modal;
 mod planar_rigid;
 
 pub use beam::{BeamBody, BeamMesh};
+pub use modal::{ModalBody, ModalNodeSite, MAX_MODES};
 pub use planar_rigid::PlanarRigidBody;
 
 use std::ops::Range;
@@ -41,6 +47,8 @@ pub enum Site {
     Reference,
     /// A section of a beam, interpolated from the nodes of one element.
     Section(SectionSite),
+    /// A node of a modal body's structure.
+    ModalNode(ModalNodeSite),
 }
 
 /// A section of a beam: an element and a point in it.
@@ -72,6 +80,9 @@ pub enum MassBlock<'a> {
         /// The factor's values.
         factor: &'a [f64],
     },
+    /// Dense and dependent on the body's positions (a modal body's): formed and
+    /// factored at every solve, in a scratch of [`BodyKind::mass_scratch_len`] values.
+    ConfigurationDependent,
 }
 
 /// Every kind of body.
@@ -81,6 +92,8 @@ pub enum BodyKind {
     PlanarRigid(PlanarRigidBody),
     /// Geometrically exact planar beam, nodes `(x, y, theta)` along it.
     Beam(BeamBody),
+    /// Modal body: floating frame `(x, y, phi)` plus modal amplitudes.
+    Modal(Box<ModalBody>),
 }
 
 impl BodyKind {
@@ -89,6 +102,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::NQ,
             Self::Beam(b) => b.n_coordinates(),
+            Self::Modal(b) => b.n_coordinates(),
         }
     }
 
@@ -97,6 +111,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::NV,
             Self::Beam(b) => b.n_coordinates(),
+            Self::Modal(b) => b.n_coordinates(),
         }
     }
 
@@ -108,6 +123,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::frame(q, v, previous),
             Self::Beam(_) => BeamBody::section_frame(&BeamBody::FIRST_NODE, q, v, previous),
+            Self::Modal(_) => ModalBody::frame(q, v, previous),
         }
     }
 
@@ -116,18 +132,20 @@ impl BodyKind {
     pub fn site_frame(&self, site: &Site, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
         match (self, site) {
             (Self::Beam(_), Site::Section(section)) => BeamBody::section_frame(section, q, v, previous),
+            (Self::Modal(b), Site::ModalNode(node)) => b.node_frame(node.node as usize, q, v, previous),
             _ => self.frame(q, v, previous),
         }
     }
 
-    /// Jacobian of the global velocity of `marker`'s point (its frame is `frame`)
-    /// by the velocity coordinates the marker moves with
-    /// ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
+    /// Jacobian of the global velocity of `marker`'s point (its frame is `frame`,
+    /// the body's reference frame `body`) by the velocity coordinates the marker
+    /// moves with ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
     #[inline]
-    pub fn marker_jacobian(&self, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
+    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, marker.local, jx, jy),
             Self::Beam(_) => BeamBody::marker_jacobian(frame, marker, jx, jy),
+            Self::Modal(b) => b.marker_jacobian(body, frame, marker, jx, jy),
         }
     }
 
@@ -138,17 +156,20 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => 0..PlanarRigidBody::NV,
             Self::Beam(_) => BeamBody::marker_coordinates(marker),
+            Self::Modal(b) => 0..b.n_coordinates(),
         }
     }
 
     /// Adds `along . d(v_P)/d(v)`, the Jacobian of `marker`'s point velocity
     /// projected on `along`, to the marker's block `out` (see
-    /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`].
+    /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`];
+    /// `body` is the body's reference frame.
     #[inline]
-    pub fn add_marker_jacobian(&self, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
+    pub fn add_marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_marker_jacobian(frame, marker.local, along, out),
             Self::Beam(_) => BeamBody::add_marker_jacobian(frame, marker, along, out),
+            Self::Modal(b) => b.add_marker_jacobian(body, frame, marker, along, out),
         }
     }
 
@@ -159,35 +180,40 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => out[2] += scale,
             Self::Beam(_) => BeamBody::add_marker_angle_jacobian(marker, scale, out),
+            Self::Modal(b) => b.add_marker_angle_jacobian(marker, scale, out),
         }
     }
 
     /// `marker`'s point acceleration at zero coordinate accelerations (the
     /// velocity-dependent part, `-omega^2 A s` for a rigid body and for a beam's
-    /// section frame, whose coordinates are linear in the nodes') [m/s^2].
+    /// section frame, whose coordinates are linear in the nodes'); `body` is the
+    /// body's reference frame [m/s^2].
     #[inline]
-    pub fn marker_bias_acceleration(&self, frame: &Frame, marker: &Marker) -> Vec2 {
+    pub fn marker_bias_acceleration(&self, body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
         match self {
             Self::PlanarRigid(_) | Self::Beam(_) => PlanarRigidBody::marker_acceleration(frame, &[0.0; 3], marker.local),
+            Self::Modal(_) => ModalBody::marker_bias_acceleration(body, frame, marker),
         }
     }
 
     /// `marker`'s angular acceleration at zero coordinate accelerations (zero
-    /// for a rigid body and for a beam's section) [rad/s^2].
+    /// for a rigid body, a beam's section and a modal body's node, whose angles
+    /// are linear in the coordinates) [rad/s^2].
     #[inline]
     pub fn marker_bias_angular_acceleration(&self, _frame: &Frame, _marker: &Marker) -> f64 {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => 0.0,
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => 0.0,
         }
     }
 
-    /// Global acceleration [m/s^2] of `marker`'s point from its frame and the
-    /// body's velocity-coordinate accelerations `a`.
+    /// Global acceleration [m/s^2] of `marker`'s point from its frame, the body's
+    /// reference frame `body` and the body's velocity-coordinate accelerations `a`.
     #[inline]
-    pub fn marker_acceleration(&self, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
+    pub fn marker_acceleration(&self, body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_acceleration(frame, a, marker.local),
             Self::Beam(_) => BeamBody::marker_acceleration(frame, a, marker),
+            Self::Modal(b) => b.marker_acceleration(body, frame, a, marker),
         }
     }
 
@@ -197,12 +223,22 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(b) => MassBlock::ConstantDiagonal(b.inverse_mass()),
             Self::Beam(b) => b.mass_block(),
+            Self::Modal(_) => MassBlock::ConfigurationDependent,
         }
     }
 
-    /// `out = M^-1 f` over the body's velocity coordinates.
+    /// Values of scratch [`Self::solve_mass`] needs (a configuration-dependent mass block's matrix).
+    pub fn mass_scratch_len(&self) -> usize {
+        match self {
+            Self::PlanarRigid(_) | Self::Beam(_) => 0,
+            Self::Modal(b) => b.mass_scratch_len(),
+        }
+    }
+
+    /// `out = M(q)^-1 f` over the body's velocity coordinates, at the body's
+    /// positions `q`, with `scratch` of at least [`Self::mass_scratch_len`] values.
     #[inline]
-    pub fn solve_mass(&self, f: &[f64], out: &mut [f64]) {
+    pub fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
         match self.mass_block() {
             MassBlock::ConstantDiagonal(w) => {
                 for ((o, w), f) in out.iter_mut().zip(w).zip(f) {
@@ -213,13 +249,24 @@ impl BodyKind {
                 out.copy_from_slice(f);
                 program.solve(factor, out);
             }
+            MassBlock::ConfigurationDependent => self.solve_configuration_dependent_mass(q, f, out, scratch),
+        }
+    }
+
+    /// The solve of a [`MassBlock::ConfigurationDependent`] block.
+    #[inline]
+    fn solve_configuration_dependent_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
+        match self {
+            Self::Modal(b) => b.solve_mass(q, f, out, scratch),
+            // (their blocks are constant)
+            Self::PlanarRigid(_) | Self::Beam(_) => out.copy_from_slice(f),
         }
     }
 
     /// Whether [`Self::position_rates`] is the identity `q_dot = v` (the engine then copies `v`).
     pub fn has_identity_position_rates(&self) -> bool {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => true,
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => true,
         }
     }
 
@@ -227,7 +274,7 @@ impl BodyKind {
     pub fn has_body_forces(&self) -> bool {
         match self {
             Self::PlanarRigid(_) => false,
-            Self::Beam(_) => true,
+            Self::Beam(_) | Self::Modal(_) => true,
         }
     }
 
@@ -242,6 +289,8 @@ impl BodyKind {
             Self::PlanarRigid(_) => {}
             // (nodal coordinates in the inertial frame: M is constant, no inertial terms)
             Self::Beam(b) => b.subtract_internal_forces(q, v, out),
+            // (a moving frame: quadratic velocity terms, elastic and damping forces)
+            Self::Modal(b) => b.add_body_forces(q, v, out),
         }
     }
 
@@ -249,7 +298,7 @@ impl BodyKind {
     #[inline]
     pub fn position_rates(&self, _q: &[f64], v: &[f64], qdot: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => qdot.copy_from_slice(v),
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => qdot.copy_from_slice(v),
         }
     }
 
@@ -258,7 +307,7 @@ impl BodyKind {
     #[inline]
     pub fn displace(&self, q: &mut [f64], dv: &[f64]) {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => {
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => {
                 for (q, d) in q.iter_mut().zip(dv) {
                     *q += d;
                 }
@@ -267,12 +316,14 @@ impl BodyKind {
     }
 
     /// Adds the generalised force of the force `f` [N] at the global point `p` [m]
-    /// (a point moving with `marker`, whose frame is `frame`) to the body's generalised forces `out`.
+    /// (a point moving with `marker`, whose frame is `frame`; the body's reference
+    /// frame is `body`) to the body's generalised forces `out`.
     #[inline]
-    pub fn add_point_force(&self, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
+    pub fn add_point_force(&self, body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_point_force(frame, p, f, out),
             Self::Beam(_) => BeamBody::add_point_force(frame, marker, p, f, out),
+            Self::Modal(b) => b.add_point_force(body, frame, marker, p, f, out),
         }
     }
 
@@ -282,15 +333,17 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_moment(m, out),
             Self::Beam(_) => BeamBody::add_moment(marker, m, out),
+            Self::Modal(b) => b.add_moment(marker, m, out),
         }
     }
 
-    /// Adds the generalised force of uniform gravity `g` [m/s^2] to `out`.
+    /// Adds the generalised force of uniform gravity `g` [m/s^2] at the body's positions `q` to `out`.
     #[inline]
-    pub fn add_gravity(&self, g: Vec2, out: &mut [f64]) {
+    pub fn add_gravity(&self, g: Vec2, q: &[f64], out: &mut [f64]) {
         match self {
             Self::PlanarRigid(b) => b.add_gravity(g, out),
             Self::Beam(b) => b.add_gravity(g, out),
+            Self::Modal(b) => b.add_gravity(g, q, out),
         }
     }
 
@@ -299,14 +352,16 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(b) => b.gravity_potential_energy(g, q),
             Self::Beam(b) => b.gravity_potential_energy(g, q) + b.strain_energy(q),
+            Self::Modal(b) => b.potential_energy(g, q),
         }
     }
 
-    /// Kinetic energy [J] from `v`.
-    pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
+    /// Kinetic energy [J] from the positions `q` and velocities `v`.
+    pub fn kinetic_energy(&self, q: &[f64], v: &[f64]) -> f64 {
         match self {
             Self::PlanarRigid(b) => b.kinetic_energy(v),
             Self::Beam(b) => b.kinetic_energy(v),
+            Self::Modal(b) => b.kinetic_energy(q, v),
         }
     }
 
@@ -314,7 +369,8 @@ impl BodyKind {
     /// absolute tolerance (1 for metres, radians and their rates).
     pub fn tolerance_scales(&self, q: &mut [f64], v: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) | Self::Beam(_) => {
+            // (modal amplitudes are interface displacements [m, rad] or normal modes scaled to 1 m at most)
+            Self::PlanarRigid(_) | Self::Beam(_) | Self::Modal(_) => {
                 q.fill(1.0);
                 v.fill(1.0);
             }
@@ -327,6 +383,7 @@ impl BodyKind {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::CHANNELS.to_vec(),
             Self::Beam(b) => b.coordinate_channels(),
+            Self::Modal(b) => b.coordinate_channels(),
         }
     }
 }

@@ -149,7 +149,7 @@ fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
 fn kinetic_and_potential_energy(model: &Model, y: &[f64], ws: &Workspace) -> [f64; 2] {
     let (q, v, _) = model.layout.split(y);
     let bodies = model.bodies.iter().zip(&model.layout.bodies);
-    let kinetic: f64 = bodies.clone().map(|(b, a)| b.kind.kinetic_energy(&v[a.v_range()])).sum();
+    let kinetic: f64 = bodies.clone().map(|(b, a)| b.kind.kinetic_energy(&q[a.q_range()], &v[a.v_range()])).sum();
     let own: f64 = bodies.map(|(b, a)| b.kind.potential_energy(model.gravity, &q[a.q_range()])).sum();
     let elements: f64 = model.forces.iter().zip(&ws.element_work).map(|(element, work)| element.potential_energy(work)).sum();
     let potential = own + elements;

@@ -7,13 +7,13 @@ use super::channels::{Channel, ChannelInfo, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use super::frame::{perp, BodyIndex, Frame, Marker, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
-use crate::body::{BodyKind, MassBlock, PlanarRigidBody, SectionSite, Site};
+use crate::body::{BodyKind, MassBlock, ModalNodeSite, PlanarRigidBody, Site};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
 use super::joint_coordinates::JointTree;
-use crate::spec::{BeamSpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, SensorSpec, GROUND};
+use crate::spec::{BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, SensorSpec, GROUND};
 
 #[path = "compile/beams.rs"]
 mod beams;
@@ -23,11 +23,14 @@ mod hydraulic;
 mod laws;
 #[path = "compile/lubrication.rs"]
 mod lubrication;
+#[path = "compile/modal.rs"]
+mod modal;
 
 use laws::{build_friction, build_function, build_normal_force_law, build_stiffness};
 use beams::build_beam;
 use hydraulic::build_cylinder;
 use lubrication::build_lubrication;
+use modal::build_modal_body;
 
 /// Default bound on penetration as a fraction of the journal radius: far
 /// beyond elastic contact of metals, so reaching it means a wrong input.
@@ -139,6 +142,28 @@ impl<'s> Compiler<'s> {
         for (k, b) in self.spec.beams.iter().enumerate() {
             self.beam(&format!("beams[{k}]"), b);
         }
+        for (k, b) in self.spec.modal_bodies.iter().flatten().enumerate() {
+            self.modal_body(&format!("modal_bodies[{k}]"), b);
+        }
+    }
+
+    /// A modal body: its body, coordinates, interface points and channels.
+    fn modal_body(&mut self, loc: &str, b: &'s ModalBodySpec) {
+        self.claim_name(&b.name, &format!("{loc}.name"));
+        let Some(built) = build_modal_body(b, loc, &mut self.errors) else { return };
+        let index = BodyIndex(self.model.bodies.len() + 1);
+        self.body_index.insert(&b.name, index);
+        let n_modes = built.body.n_modes();
+        self.model.initial_coordinates.extend(built.pose.iter().copied().chain(std::iter::repeat_n(0.0, n_modes)));
+        self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity].into_iter().chain(std::iter::repeat_n(0.0, n_modes)));
+        let kind = BodyKind::Modal(Box::new(built.body));
+        self.model.layout.push_body(&kind);
+        self.model.bodies.push(Body { name: b.name.clone(), kind });
+        for (name, node, location) in built.interface {
+            let marker = self.section_marker(index, Site::ModalNode(ModalNodeSite { node: node as u32 }), Vec2::zeros());
+            self.name_point(&b.name, &name, marker, location);
+        }
+        self.body_channels(index.0 - 1, &b.name);
     }
 
     /// A beam: its body, coordinates, points (`start`, `end` and the described ones) and channels.
@@ -171,19 +196,19 @@ impl<'s> Compiler<'s> {
                 return;
             }
         };
-        let marker = self.section_marker(body, site, Vec2::zeros());
+        let marker = self.section_marker(body, Site::Section(site), Vec2::zeros());
         self.name_point(body_name, name, marker, location);
     }
 
     /// A marker at a section of a flexible body (with its frame, shared by the markers at the same section).
-    fn section_marker(&mut self, body: BodyIndex, site: SectionSite, local: Vec2) -> Marker {
-        let total_bodies = self.spec.bodies.len() + self.spec.beams.len();
+    fn section_marker(&mut self, body: BodyIndex, site: Site, local: Vec2) -> Marker {
+        let total_bodies = self.spec.bodies.len() + self.spec.beams.len() + self.spec.modal_bodies.as_ref().map_or(0, Vec::len);
         let section = Section { body, site };
         let k = self.model.sections.iter().position(|s| *s == section).unwrap_or_else(|| {
             self.model.sections.push(section);
             self.model.sections.len() - 1
         });
-        Marker { body, frame: 1 + total_bodies + k, site: Site::Section(site), local }
+        Marker { body, frame: 1 + total_bodies + k, site, local }
     }
 
     fn add_point(&mut self, body: BodyIndex, body_name: &str, name: &str, position: [f64; 2], location: String) {
@@ -594,7 +619,7 @@ impl<'s> Compiler<'s> {
         for body in &self.model.bodies {
             match body.kind.mass_block() {
                 MassBlock::ConstantDiagonal(w) => diagonal.extend_from_slice(w),
-                MassBlock::ConstantFactored { .. } => return,
+                MassBlock::ConstantFactored { .. } | MassBlock::ConfigurationDependent => return,
             }
         }
         self.model.diagonal_inverse_mass = Some(diagonal);

@@ -79,12 +79,12 @@ fn diagonal_term_value(term: &SchurTerm, values: &[f64], inverse_mass: &[f64]) -
 }
 
 /// Adds the terms of the first `rows` rows of `S` into `out` at the index `at(term)`.
-fn add_terms(model: &Model, rows: usize, ws: &mut Workspace, out: &mut [f64], at: impl Fn(&SchurTerm) -> usize) {
+fn add_terms(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace, out: &mut [f64], at: impl Fn(&SchurTerm) -> usize) {
     let terms = model.schur_terms.iter().take_while(|term| (term.row as usize) < rows);
     match &model.diagonal_inverse_mass {
         Some(w) => terms.for_each(|term| out[at(term)] += diagonal_term_value(term, &ws.jacobian, w)),
         None => {
-            solve_blocks_with_mass(model, rows, ws);
+            solve_blocks_with_mass(model, rows, q, ws);
             let blocks = model.jacobian_pattern.blocks();
             terms.for_each(|term| out[at(term)] += term_value(term, blocks, &ws.jacobian, &ws.jacobian_solved));
         }
@@ -92,33 +92,35 @@ fn add_terms(model: &Model, rows: usize, ws: &mut Workspace, out: &mut [f64], at
 }
 
 /// `M_c^-1 J_c^T` of every block of the first `rows` rows into `ws.jacobian_solved`, each over
-/// all velocity coordinates of its body `c` (the block widened by zeros), with the body kind's solve.
-fn solve_blocks_with_mass(model: &Model, rows: usize, ws: &mut Workspace) {
+/// all velocity coordinates of its body `c` (the block widened by zeros), with the body kind's solve
+/// at the positions `q`.
+fn solve_blocks_with_mass(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace) {
     for block in model.jacobian_pattern.blocks_of_rows(rows) {
         let kind = &model.bodies[block.body].kind;
-        let nv = model.layout.bodies[block.body].nv;
+        let address = &model.layout.bodies[block.body];
+        let nv = address.nv;
         let widened = &mut ws.mass_scratch[..nv];
         widened.fill(0.0);
         widened[block.offset_in_body..block.offset_in_body + block.width].copy_from_slice(&ws.jacobian[block.values()]);
-        kind.solve_mass(widened, &mut ws.jacobian_solved[block.solved..block.solved + nv]);
+        kind.solve_mass(&q[address.q_range()], widened, &mut ws.jacobian_solved[block.solved..block.solved + nv], &mut ws.mass_matrix);
     }
 }
 
 /// Forms the lower triangle of `S` for the first `rows` rows, row-major `rows x rows`, into `out`.
-fn form_dense(model: &Model, rows: usize, ws: &mut Workspace, out: &mut [f64]) {
+fn form_dense(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace, out: &mut [f64]) {
     let out = &mut out[..rows * rows];
     out.fill(0.0);
-    add_terms(model, rows, ws, out, |term| term.row as usize * rows + term.column as usize);
+    add_terms(model, rows, q, ws, out, |term| term.row as usize * rows + term.column as usize);
 }
 
 /// Factors `S` for the first `rows` rows: the regular path when it is well
 /// conditioned, else the regularised factor of the singular path. Fails only
 /// when `S` is not finite or the regularised factor has a non-positive pivot.
-pub(crate) fn factor(model: &Model, rows: usize, ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
-    let kind = match factor_regular(model, rows, ws) {
+pub(crate) fn factor(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
+    let kind = match factor_regular(model, rows, q, ws) {
         Ok(kind) => kind,
         Err(_) => {
-            factor_spectral(model, rows, ws)?;
+            factor_spectral(model, rows, q, ws)?;
             ws.singular_solves += 1;
             FactorKind::Spectral
         }
@@ -128,18 +130,18 @@ pub(crate) fn factor(model: &Model, rows: usize, ws: &mut Workspace) -> Result<F
 }
 
 /// The regular path: patterned `L D L^T` of the dynamic rows or dense Cholesky.
-fn factor_regular(model: &Model, rows: usize, ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
+fn factor_regular(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
     if rows == model.schur_factor.size() {
         let mut schur = std::mem::take(&mut ws.schur);
         schur[..rows * (rows + 1)].fill(0.0);
-        add_terms(model, rows, ws, &mut schur, |term| term.entry as usize);
+        add_terms(model, rows, q, ws, &mut schur, |term| term.entry as usize);
         let factored = model.schur_factor.factor(&mut schur[..rows * (rows + 1)]);
         ws.schur = schur;
         factored?;
         Ok(FactorKind::Pattern)
     } else {
         let mut schur = std::mem::take(&mut ws.schur);
-        form_dense(model, rows, ws, &mut schur);
+        form_dense(model, rows, q, ws, &mut schur);
         let factored = crate::linalg::cholesky_factor(&mut schur, rows);
         ws.schur = schur;
         factored?;
@@ -148,9 +150,9 @@ fn factor_regular(model: &Model, rows: usize, ws: &mut Workspace) -> Result<Fact
 }
 
 /// The eigendecomposition of `S` into `ws.schur` (eigenvectors) and `ws.schur_eigenvalues`.
-fn factor_spectral(model: &Model, rows: usize, ws: &mut Workspace) -> Result<(), RankDeficiency> {
+fn factor_spectral(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace) -> Result<(), RankDeficiency> {
     let mut matrix = std::mem::take(&mut ws.schur_matrix);
-    form_dense(model, rows, ws, &mut matrix);
+    form_dense(model, rows, q, ws, &mut matrix);
     ws.schur_matrix = matrix;
     let a = &mut ws.schur_matrix[..rows * rows];
     for i in 0..rows {

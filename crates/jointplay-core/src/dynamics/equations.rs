@@ -91,7 +91,7 @@ pub(crate) fn jacobian_transpose_times(model: &Model, rows: usize, jacobian: &[f
 /// ([`constraint_solution::factor`]), remembered so that an evaluation at the
 /// same time and positions (after a velocity projection) reuses the factor.
 pub(crate) fn factor_constraint_matrix_at(model: &Model, rows: usize, t: f64, q: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
-    constraint_solution::factor(model, rows, ws).map_err(|d| non_finite_constraints(model, t, d))?;
+    constraint_solution::factor(model, rows, q, ws).map_err(|d| non_finite_constraints(model, t, d))?;
     ws.factored_positions.copy_from_slice(q);
     ws.factored_at = Some((t, rows));
     Ok(())
@@ -129,8 +129,8 @@ pub(crate) fn applied_forces(model: &Model, memory: &[ElementMemory], t: f64, (q
             body.kind.add_body_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
         }
     }
-    let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout);
-    forces.add_gravity(model.gravity);
+    let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout, &ws.frames);
+    forces.add_gravity(model.gravity, q);
     for (k, element) in model.forces.iter().enumerate() {
         let states = model.layout.force_states[k].clone();
         let own = (&z[states.clone()], &mut ws.element_state_rates[states]);
@@ -192,7 +192,7 @@ pub(crate) fn constrained_accelerations(
             factor_constraint_matrix_at(model, rows, t, q, ws)?;
         }
         // the right-hand side J M^-1 Q - gamma, solved in place into lambda
-        model.solve_mass(&ws.generalised_force, &mut ws.accelerations);
+        model.solve_mass(q, &ws.generalised_force, &mut ws.accelerations, &mut ws.mass_matrix);
         let lambda = &mut ws.multipliers;
         jacobian_times(model, rows, &ws.jacobian, &ws.accelerations, lambda);
         for (l, g) in lambda[..rows].iter_mut().zip(&ws.gamma) {
@@ -204,9 +204,9 @@ pub(crate) fn constrained_accelerations(
         for (c, f) in ws.scratch.iter_mut().zip(&ws.generalised_force) {
             *c = f - *c;
         }
-        model.solve_mass(&ws.scratch, &mut ws.accelerations);
+        model.solve_mass(q, &ws.scratch, &mut ws.accelerations, &mut ws.mass_matrix);
     } else {
-        model.solve_mass(&ws.generalised_force, &mut ws.accelerations);
+        model.solve_mass(q, &ws.generalised_force, &mut ws.accelerations, &mut ws.mass_matrix);
     }
     Ok(())
 }

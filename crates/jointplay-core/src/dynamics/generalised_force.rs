@@ -13,12 +13,14 @@ pub struct GeneralisedForces<'a> {
     bodies: &'a [Body],
     /// Their addresses.
     layout: &'a StateLayout,
+    /// The frames of the evaluation (a body's reference frame is `frames[body.0]`).
+    frames: &'a [Frame],
 }
 
 impl<'a> GeneralisedForces<'a> {
-    /// `values` (velocity length) for the bodies of `layout`.
-    pub fn new(values: &'a mut [f64], bodies: &'a [Body], layout: &'a StateLayout) -> Self {
-        Self { values, bodies, layout }
+    /// `values` (velocity length) for the bodies of `layout`, whose frames are `frames`.
+    pub fn new(values: &'a mut [f64], bodies: &'a [Body], layout: &'a StateLayout, frames: &'a [Frame]) -> Self {
+        Self { values, bodies, layout, frames }
     }
 
     /// Adds the force `f` [N] at the global point `p` [m], a point moving with
@@ -26,7 +28,8 @@ impl<'a> GeneralisedForces<'a> {
     #[inline]
     pub fn add_point_force(&mut self, marker: &Marker, frame: &Frame, p: Vec2, f: Vec2) {
         if let Some(address) = self.layout.body(marker.body) {
-            self.bodies[marker.body.0 - 1].kind.add_point_force(frame, marker, p, f, &mut self.values[address.v_range()]);
+            let body = &self.frames[marker.body.0];
+            self.bodies[marker.body.0 - 1].kind.add_point_force(body, frame, marker, p, f, &mut self.values[address.v_range()]);
         }
     }
 
@@ -38,10 +41,10 @@ impl<'a> GeneralisedForces<'a> {
         }
     }
 
-    /// Adds uniform gravity `g` [m/s^2] on every body.
-    pub fn add_gravity(&mut self, g: Vec2) {
+    /// Adds uniform gravity `g` [m/s^2] on every body at the positions `q`.
+    pub fn add_gravity(&mut self, g: Vec2, q: &[f64]) {
         for (body, address) in self.bodies.iter().zip(&self.layout.bodies) {
-            body.kind.add_gravity(g, &mut self.values[address.v_range()]);
+            body.kind.add_gravity(g, &q[address.q_range()], &mut self.values[address.v_range()]);
         }
     }
 }

@@ -293,7 +293,7 @@ impl StructuredJacobian {
         jacobian: &mut [f64],
     ) -> Result<usize, SimulationError> {
         let passes = self.local_derivatives(model, memory, t, y, floors)?;
-        self.assemble(model, ws, jacobian);
+        self.assemble(model, model.layout.split(y).0, ws, jacobian);
         Ok(passes)
     }
 
@@ -344,8 +344,8 @@ impl StructuredJacobian {
     }
 
     /// The Jacobian from the local derivatives: `q_dot = v`, `A` applied to the
-    /// columns of `dQ/dy`, `dz_dot/dy` as differenced.
-    fn assemble(&mut self, model: &Model, ws: &mut Workspace, jacobian: &mut [f64]) {
+    /// columns of `dQ/dy`, `dz_dot/dy` as differenced (the mass at the positions `q`).
+    fn assemble(&mut self, model: &Model, q: &[f64], ws: &mut Workspace, jacobian: &mut [f64]) {
         let (nq, nv) = (model.layout.nq, model.layout.nv);
         let n = model.layout.len();
         let rows = model.n_dynamic_equations();
@@ -361,7 +361,7 @@ impl StructuredJacobian {
             let column = &self.derivatives[c * self.n_rows..(c + 1) * self.n_rows];
             let (forces, rates) = column.split_at(nv);
             if forces.iter().any(|&d| d != 0.0) {
-                constrained_response(model, rows, ws, forces, (&mut self.solved, &mut self.multipliers), &mut self.response);
+                constrained_response(model, rows, q, ws, forces, (&mut self.solved, &mut self.multipliers), &mut self.response);
                 for (i, a) in self.response.iter().enumerate() {
                     jacobian[(nq + i) * n + c] = *a;
                 }
@@ -419,7 +419,7 @@ fn evaluate(model: &Model, memory: &[ElementMemory], t: f64, contribution: Contr
         Contribution::Force(k) => {
             scratch.forces.fill(0.0);
             let states = layout.force_states[k].clone();
-            let mut forces = GeneralisedForces::new(&mut scratch.forces, &model.bodies, layout);
+            let mut forces = GeneralisedForces::new(&mut scratch.forces, &model.bodies, layout, &scratch.frames);
             model.forces[k]
                 .apply(&scratch.frames, t, (&z[states.clone()], &mut scratch.rates[states]), &memory[k], &mut scratch.work[k], false, &mut forces)
                 .map_err(|fault| fault.at(t, &model.force_names[k]))?;
@@ -450,18 +450,18 @@ fn evaluate(model: &Model, memory: &[ElementMemory], t: f64, contribution: Contr
 
 /// `out = A g`: the accelerations that the generalised forces `g` cause under
 /// the constraints linearised in the workspace (`rows` rows, factored there):
-/// `A g = M^-1 (g - Phi_q^T S^-1 Phi_q M^-1 g)`, `S = Phi_q M^-1 Phi_q^T`.
-pub(crate) fn constrained_response(model: &Model, rows: usize, ws: &mut Workspace, g: &[f64], (solved, multipliers): (&mut [f64], &mut [f64]), out: &mut [f64]) {
+/// `A g = M^-1 (g - Phi_q^T S^-1 Phi_q M^-1 g)`, `S = Phi_q M^-1 Phi_q^T`, `M` at the positions `q`.
+pub(crate) fn constrained_response(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace, g: &[f64], (solved, multipliers): (&mut [f64], &mut [f64]), out: &mut [f64]) {
     if rows == 0 {
-        model.solve_mass(g, out);
+        model.solve_mass(q, g, out, &mut ws.mass_matrix);
         return;
     }
-    model.solve_mass(g, solved);
+    model.solve_mass(q, g, solved, &mut ws.mass_matrix);
     jacobian_times(model, rows, &ws.jacobian, solved, multipliers);
     constraint_solution::solve(model, rows, ws, multipliers);
     jacobian_transpose_times(model, rows, &ws.jacobian, multipliers, solved);
     for (s, g) in solved.iter_mut().zip(g) {
         *s = g - *s;
     }
-    model.solve_mass(solved, out);
+    model.solve_mass(q, solved, out, &mut ws.mass_matrix);
 }

@@ -54,4 +54,6 @@ mod element_tests;
 #[cfg(test)]
 mod beam_tests;
 #[cfg(test)]
+mod modal_tests;
+#[cfg(test)]
 mod jacobian_tests;

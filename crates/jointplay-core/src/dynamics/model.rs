@@ -151,8 +151,8 @@ pub struct Model {
 pub struct Section {
     /// The body.
     pub body: BodyIndex,
-    /// Where on it.
-    pub site: SectionSite,
+    /// Where on it (a beam's section, a modal body's node).
+    pub site: Site,
 }
 
 /// A strain gauge: the stress resultants of a beam's section and the axial
@@ -212,8 +212,10 @@ impl Model {
         self.layout.nv
     }
 
-    /// `out = M^-1 f` over all velocity coordinates, body by body with each body kind's mass block.
-    pub fn solve_mass(&self, f: &[f64], out: &mut [f64]) {
+    /// `out = M(q)^-1 f` over all velocity coordinates at the positions `q`, body
+    /// by body with each body kind's mass block (`scratch`: the workspace's
+    /// `mass_matrix`, for configuration-dependent blocks).
+    pub fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
         if let Some(w) = &self.diagonal_inverse_mass {
             for ((o, w), f) in out.iter_mut().zip(w).zip(f) {
                 *o = w * f;
@@ -221,7 +223,7 @@ impl Model {
             return;
         }
         for (body, address) in self.bodies.iter().zip(&self.layout.bodies) {
-            body.kind.solve_mass(&f[address.v_range()], &mut out[address.v_range()]);
+            body.kind.solve_mass(&q[address.q_range()], &f[address.v_range()], &mut out[address.v_range()], scratch);
         }
     }
 
@@ -230,12 +232,26 @@ impl Model {
     pub fn section_frame(&self, section: &Section, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
         let address = &self.layout.bodies[section.body.0 - 1];
         let kind = &self.bodies[section.body.0 - 1].kind;
-        kind.site_frame(&Site::Section(section.site), &q[address.q_range()], &v[address.v_range()], previous)
+        kind.site_frame(&section.site, &q[address.q_range()], &v[address.v_range()], previous)
     }
 
     /// Number of frames of an evaluation: the ground, the bodies, the sections.
     pub fn n_frames(&self) -> usize {
         1 + self.bodies.len() + self.sections.len()
+    }
+
+    /// The first bending frequency [Hz] of every modal body (its lowest mode
+    /// clamped at its frame node), with the body's name: a linear modal body
+    /// (no geometric stiffening) spinning faster than `2 pi` times this diverges,
+    /// which the front end warns of.
+    pub fn modal_bending_frequencies(&self) -> Vec<(&str, f64)> {
+        self.bodies
+            .iter()
+            .filter_map(|b| match &b.kind {
+                BodyKind::Modal(modal) => modal.first_bending_frequency().map(|f| (b.name.as_str(), f)),
+                _ => None,
+            })
+            .collect()
     }
 
     /// Whether every body is rigid (no body force, no section frame).

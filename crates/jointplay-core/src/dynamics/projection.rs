@@ -63,7 +63,7 @@ pub(crate) fn project_positions(
         for s in ws.scratch.iter_mut() {
             *s = -*s;
         }
-        model.solve_mass(&ws.scratch, &mut ws.correction);
+        model.solve_mass(q, &ws.scratch, &mut ws.correction, &mut ws.mass_matrix);
         for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
             body.kind.displace(&mut q[address.q_range()], &ws.correction[address.v_range()]);
         }
@@ -106,7 +106,7 @@ pub(crate) fn project_velocities(
     factor_constraint_matrix_at(model, rows, t, q, ws)?;
     solve_in_multipliers(model, rows, ws);
     jacobian_transpose_times(model, rows, &ws.jacobian, &ws.multipliers, &mut ws.scratch);
-    model.solve_mass(&ws.scratch, &mut ws.correction);
+    model.solve_mass(q, &ws.scratch, &mut ws.correction, &mut ws.mass_matrix);
     for (v, correction) in qdot.iter_mut().zip(&ws.correction) {
         *v -= correction;
     }

@@ -272,7 +272,7 @@ impl OdeSystem for MechanismSystem<'_> {
         // (the joint-coordinate formulation keeps forward differences)
         if self.tree.is_some() || !self.model.layout.identity_position_rates {
             SystemJacobian::Unavailable
-        } else if self.model.bodies.iter().any(|b| matches!(b.kind, BodyKind::Beam(_))) {
+        } else if self.model.bodies.iter().any(|b| matches!(b.kind, BodyKind::Beam(_) | BodyKind::Modal(_))) {
             SystemJacobian::Preferred
         } else {
             SystemJacobian::Available
@@ -528,5 +528,5 @@ impl MechanismSystem<'_> {
 fn point_acceleration(model: &Model, ws: &Workspace, marker: &Marker) -> f64 {
     let Some(address) = model.layout.body(marker.body) else { return 0.0 };
     let kind = &model.bodies[marker.body.0 - 1].kind;
-    kind.marker_acceleration(&ws.frames[marker.frame], &ws.accelerations[address.v_range()], marker).norm()
+    kind.marker_acceleration(&ws.frames[marker.body.0], &ws.frames[marker.frame], &ws.accelerations[address.v_range()], marker).norm()
 }

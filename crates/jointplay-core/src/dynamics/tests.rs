@@ -501,7 +501,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     let n = model.n_velocities();
     update_frames(&model, state.coordinates(), state.velocities(), &mut ws.frames);
     equations::linearise_constraints(&model, model.n_dynamic_constraints, 0.0, &mut ws);
-    assert_eq!(super::constraint_solution::factor(&model, rows, &mut ws).unwrap(), super::constraint_solution::FactorKind::Pattern);
+    assert_eq!(super::constraint_solution::factor(&model, rows, state.coordinates(), &mut ws).unwrap(), super::constraint_solution::FactorKind::Pattern);
     let sparse = ws.schur[..rows * (rows + 1)].to_vec();
     // the same matrix formed densely from the Jacobian and factored by the dense kernel
     // (M^-1 column by column through the body kinds' solves)
@@ -509,7 +509,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     for k in 0..n {
         let mut unit = vec![0.0; n];
         unit[k] = 1.0;
-        model.solve_mass(&unit, &mut inverse_mass[k * n..(k + 1) * n]);
+        model.solve_mass(state.coordinates(), &unit, &mut inverse_mass[k * n..(k + 1) * n], &mut []);
     }
     let entry = |r: usize, k: usize| redundancy::jacobian_entry(&model, &ws, r, k);
     let mut dense = vec![0.0; rows * rows];

@@ -23,6 +23,8 @@ pub struct Workspace {
     pub jacobian_solved: Vec<f64>,
     /// One body's velocity coordinates (the widest body).
     pub mass_scratch: Vec<f64>,
+    /// A configuration-dependent mass block formed and factored in place (the largest body's).
+    pub mass_matrix: Vec<f64>,
     /// Constraint residuals `Phi`.
     pub residual: Vec<f64>,
     /// Velocity right-hand side `nu`.
@@ -83,6 +85,7 @@ impl Workspace {
             jacobian: vec![0.0; model.jacobian_pattern.n_values()],
             jacobian_solved: vec![0.0; model.jacobian_pattern.n_solved()],
             mass_scratch: vec![0.0; model.layout.bodies.iter().map(|b| b.nv).max().unwrap_or(0)],
+            mass_matrix: vec![0.0; model.bodies.iter().map(|b| b.kind.mass_scratch_len()).max().unwrap_or(0)],
             residual: vec![0.0; m],
             nu: vec![0.0; m],
             gamma: vec![0.0; m],

@@ -80,7 +80,7 @@ impl ConstraintRows<'_> {
     pub fn add_point_jacobian(&mut self, frames: &[Frame], r: usize, slot: usize, marker: &Marker, along: Vec2) {
         if let Some(block) = self.pattern.slot(self.row + r, slot) {
             let kind = &self.bodies[marker.body.0 - 1].kind;
-            kind.add_marker_jacobian(&frames[marker.frame], marker, along, &mut self.jacobian[block.values()]);
+            kind.add_marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, along, &mut self.jacobian[block.values()]);
         }
     }
 
@@ -93,7 +93,7 @@ impl ConstraintRows<'_> {
         // (a later row's blocks sit after an earlier row's)
         let (head, tail) = self.jacobian.split_at_mut(y.start);
         let (jx, jy) = (&mut head[x], &mut tail[..y.end - y.start]);
-        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.frame], marker, jx, jy);
+        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, jx, jy);
         if scale != 1.0 {
             jx.iter_mut().chain(jy.iter_mut()).for_each(|j| *j *= scale);
         }
@@ -113,7 +113,7 @@ impl ConstraintRows<'_> {
         if marker.body.is_ground() {
             return Vec2::zeros();
         }
-        self.bodies[marker.body.0 - 1].kind.marker_bias_acceleration(&frames[marker.frame], marker)
+        self.bodies[marker.body.0 - 1].kind.marker_bias_acceleration(&frames[marker.body.0], &frames[marker.frame], marker)
     }
 
     /// The velocity-dependent part of `marker`'s angular acceleration (zero on the ground) [rad/s^2].

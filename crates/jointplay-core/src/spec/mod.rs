@@ -15,10 +15,12 @@
 mod beams;
 mod laws;
 mod lubrication;
+mod modal;
 
 pub use beams::{BeamMaterialSpec, BeamMeshSpec, BeamPointSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec, SensorSpec};
 pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
 pub use lubrication::{CavitationSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
+pub use modal::ModalBodySpec;
 use serde::{Deserialize, Serialize};
 
 /// Name of the fixed frame.
@@ -38,6 +40,10 @@ pub struct ModelSpec {
     pub bodies: Vec<BodySpec>,
     /// Flexible links.
     pub beams: Vec<BeamSpec>,
+    /// Flexible links reduced to modal bodies; none when left out or null (so
+    /// that descriptions written before modal bodies existed stay valid).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub modal_bodies: Option<Vec<ModalBodySpec>>,
     /// Ideal and clearance joints.
     pub joints: Vec<JointSpec>,
     /// Drivers prescribing joint coordinates over time.

@@ -11,7 +11,7 @@ use crate::spec::{BeamMaterialSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec}
 pub(super) const MAX_BEAM_ELEMENTS: usize = 2000;
 
 /// The beam described by `spec`; every problem goes to `errors` at `loc`.
-pub(super) fn build_beam(spec: &BeamSpec, loc: &str, errors: &mut ModelErrors) -> Option<BeamBody> {
+pub(in crate::dynamics) fn build_beam(spec: &BeamSpec, loc: &str, errors: &mut ModelErrors) -> Option<BeamBody> {
     let section = build_section(&spec.section, &format!("{loc}.section"), errors);
     let (start, end) = (Vec2::new(spec.start[0], spec.start[1]), Vec2::new(spec.end[0], spec.end[1]));
     let length = (end - start).norm();

@@ -94,6 +94,7 @@ impl JointTree {
             match &body.kind {
                 BodyKind::PlanarRigid(b) => mass.extend(b.inverse_mass().iter().map(|w| 1.0 / w)),
                 BodyKind::Beam(_) => return Err(format!("body {:?} is a beam (flexible bodies run in absolute coordinates)", body.name)),
+                BodyKind::Modal(_) => return Err(format!("body {:?} is a modal body (flexible bodies run in absolute coordinates)", body.name)),
             }
         }
         let joints = joint_elements(model)?;

@@ -1,0 +1,556 @@
+//! The planar modal body (floating frame of reference): coordinates
+//! `q = v = (x, y, phi, eta_1 .. eta_m)`, the frame's origin [m] and angle
+//! [rad] in the inertial frame and the amplitudes of `m` modes [m or rad].
+//!
+//! A node `a` of the underlying structure is at `r_a = R + A(phi) (X_a + Phi_a eta)`,
+//! its section at the angle `phi + Psi_a eta` (`Phi_a`, `Psi_a`: the
+//! translation and rotation rows of the modes, `X_a` the reference position in
+//! the body frame). The frame sits on the first interface node (see
+//! [`crate::modal::craig_bampton_modes`]).
+//!
+//! - **Mass:** `M(q) = T(phi) Mbar(eta) T(phi)^T`, `T = diag(A, 1, I)`, with the
+//!   body-frame mass `Mbar` formed from the inertia invariants
+//!   ([`crate::modal::InertiaInvariants`]) and factored (dense Cholesky) at
+//!   every solve, in the workspace's scratch.
+//! - **Body forces:** the quadratic velocity vector `dT/dq - M_dot q_dot`
+//!   (centrifugal and Coriolis terms), minus the elastic force `K_ee eta` and
+//!   modal damping `D eta_dot` (one damping ratio for every mode of the body
+//!   clamped at its frame node).
+//! - **Markers** sit at nodes (interface nodes, for joints): frame, Jacobian over
+//!   all `3 + m` coordinates, bias acceleration with the modal Coriolis terms.
+//!
+//! Linear modes, small elastic deformation, no geometric stiffening. Theory:
+//! `docs/theory/modal-body.md`.
+
+use std::borrow::Cow;
+
+use nalgebra::DMatrix;
+
+use super::{channel, BeamBody, CoordinateChannels, Site};
+use crate::beam::vibration_modes;
+use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
+use crate::linalg::{cholesky_factor, cholesky_solve};
+use crate::modal::{craig_bampton_modes, InertiaInvariants};
+
+/// Most modes of one body: the hot loop keeps its vectors on the stack.
+pub const MAX_MODES: usize = 40;
+
+/// Most coordinates of one body.
+const MAX_COORDINATES: usize = 3 + MAX_MODES;
+
+/// Where on a modal body a marker's frame is: a node of its structure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ModalNodeSite {
+    /// The node (counted in the structure's order).
+    pub node: u32,
+}
+
+/// A modal body: its invariants, modal stiffness and damping, and the nodes' mode rows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ModalBody {
+    /// The inertia invariants.
+    invariants: InertiaInvariants,
+    /// Modal stiffness `K_ee = Phi^T K Phi` (m x m, row-major) [N/m per unit^2].
+    stiffness: Vec<f64>,
+    /// Modal damping `D` (m x m, row-major) [N s/m per unit^2].
+    damping: Vec<f64>,
+    /// Damping ratio of every mode of the body clamped at its frame node [-].
+    damping_ratio: f64,
+    /// Reference position of every node in the body frame [m].
+    nodes: Vec<Vec2>,
+    /// Mode rows of every node: `3 m` values, `Phi_a` x row, y row, then `Psi_a`.
+    node_rows: Vec<f64>,
+    /// Interface nodes; the first carries the frame.
+    interface: Vec<usize>,
+    /// Number of constraint modes (the first modes).
+    n_constraint: usize,
+    /// Whether each mode's amplitude is a rotation (a constraint mode of a section angle).
+    rotational: Vec<bool>,
+    /// Angular frequencies of the fixed-interface normal modes [rad/s].
+    fixed_interface_frequencies: Vec<f64>,
+    /// Angular frequencies of the reduced body clamped at its frame node [rad/s].
+    clamped_frequencies: Vec<f64>,
+}
+
+impl ModalBody {
+    /// The body of a structure of mass `mass` and stiffness `stiffness` (dense,
+    /// symmetric, `3 n_nodes` square, nodal `(u_x, u_y, theta)` in the body
+    /// frame), nodes at `nodes` [m] (body frame; the frame's origin is moved to the
+    /// first interface node), Craig-Bampton modes for the interface nodes
+    /// `interface` with `n_normal` fixed-interface modes, and the damping ratio
+    /// `damping_ratio` [-] of every mode.
+    pub fn from_finite_elements(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, nodes: &[Vec2], interface: &[usize], n_normal: usize, damping_ratio: f64) -> Result<Self, String> {
+        if !(damping_ratio.is_finite() && damping_ratio >= 0.0) {
+            return Err(format!("the damping ratio must be >= 0, got {damping_ratio}"));
+        }
+        let modes = craig_bampton_modes(mass, stiffness, interface, n_normal)?;
+        let shapes = &modes.shapes;
+        let m = shapes.ncols();
+        if m > MAX_MODES {
+            return Err(format!("a modal body has at most {MAX_MODES} modes, got {m}"));
+        }
+        if nodes.len() * 3 != mass.nrows() || nodes.iter().any(|p| !(p.x.is_finite() && p.y.is_finite())) {
+            return Err(format!("give one finite position per node: {} positions for {} nodes", nodes.len(), mass.nrows() / 3));
+        }
+        let origin = nodes[interface[0]];
+        let nodes: Vec<Vec2> = nodes.iter().map(|p| p - origin).collect();
+        let invariants = InertiaInvariants::new(mass, &nodes, shapes)?;
+        let modal_stiffness = shapes.transpose() * stiffness * shapes;
+        let modal_mass = DMatrix::from_row_slice(m, m, &invariants.modal_mass);
+        let (clamped_frequencies, damping) = clamped_modes(&modal_mass, &modal_stiffness, damping_ratio)?;
+        let mut node_rows = Vec::with_capacity(3 * m * nodes.len());
+        for a in 0..nodes.len() {
+            for i in 0..3 {
+                node_rows.extend(shapes.row(3 * a + i).iter());
+            }
+        }
+        let boundary: Vec<usize> = interface[1..].iter().flat_map(|&k| 3 * k..3 * k + 3).collect();
+        let rotational = (0..m).map(|j| j < boundary.len() && boundary[j] % 3 == 2).collect();
+        Ok(Self {
+            invariants,
+            stiffness: modal_stiffness.transpose().iter().copied().collect(),
+            damping: damping.transpose().iter().copied().collect(),
+            damping_ratio,
+            nodes,
+            node_rows,
+            interface: interface.to_vec(),
+            n_constraint: modes.n_constraint,
+            rotational,
+            fixed_interface_frequencies: modes.fixed_interface_frequencies,
+            clamped_frequencies,
+        })
+    }
+
+    /// The modal body of `beam` in its unstressed reference configuration (its
+    /// consistent mass and linear stiffness there), with the interface nodes
+    /// `interface` (node indices along the beam), `n_normal` fixed-interface modes
+    /// and the damping ratio `damping_ratio`; also the frame's initial pose
+    /// `(x, y, phi)` [m, m, rad]: the first interface node's.
+    pub fn from_beam(beam: &BeamBody, interface: &[usize], n_normal: usize, damping_ratio: f64) -> Result<(Self, [f64; 3]), String> {
+        let reference = beam.reference_coordinates();
+        let first = *interface.first().ok_or("a modal body needs at least one interface node (the first carries its frame)")?;
+        if first >= beam.n_nodes() {
+            return Err(format!("interface node {first} is not a node of the beam (it has {} nodes)", beam.n_nodes()));
+        }
+        let pose = [reference[3 * first], reference[3 * first + 1], reference[3 * first + 2]];
+        let (mass, stiffness) = beam.dense_mass_and_stiffness(&reference);
+        // (the structure expressed in the frame: every node's translations turned by -phi)
+        let (sin, cos) = pose[2].sin_cos();
+        let n = mass.nrows();
+        let rotation = DMatrix::from_fn(n, n, |i, j| match (i / 3 == j / 3, i % 3, j % 3) {
+            (true, 0, 0) | (true, 1, 1) => cos,
+            (true, 0, 1) => -sin,
+            (true, 1, 0) => sin,
+            (true, 2, 2) => 1.0,
+            _ => 0.0,
+        });
+        let local = |a: &DMatrix<f64>| rotation.transpose() * a * &rotation;
+        let nodes: Vec<Vec2> = reference.chunks_exact(3).map(|p| Vec2::new(cos * (p[0] - pose[0]) + sin * (p[1] - pose[1]), -sin * (p[0] - pose[0]) + cos * (p[1] - pose[1]))).collect();
+        Ok((Self::from_finite_elements(&local(&mass), &local(&stiffness), &nodes, interface, n_normal, damping_ratio)?, pose))
+    }
+
+    /// Number of modes `m`.
+    pub fn n_modes(&self) -> usize {
+        self.invariants.n_modes
+    }
+
+    /// Number of coordinates `3 + m`.
+    pub fn n_coordinates(&self) -> usize {
+        3 + self.n_modes()
+    }
+
+    /// Number of nodes of the structure.
+    pub fn n_nodes(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Total mass [kg].
+    pub fn mass(&self) -> f64 {
+        self.invariants.mass
+    }
+
+    /// The inertia invariants.
+    pub fn invariants(&self) -> &InertiaInvariants {
+        &self.invariants
+    }
+
+    /// Damping ratio of every mode of the body clamped at its frame node [-].
+    pub fn damping_ratio(&self) -> f64 {
+        self.damping_ratio
+    }
+
+    /// The interface nodes (the first carries the frame).
+    pub fn interface(&self) -> &[usize] {
+        &self.interface
+    }
+
+    /// Angular frequencies of the fixed-interface normal modes kept [rad/s].
+    pub fn fixed_interface_frequencies(&self) -> &[f64] {
+        &self.fixed_interface_frequencies
+    }
+
+    /// Angular frequencies of the reduced body clamped at its frame node, lowest first [rad/s].
+    pub fn clamped_frequencies(&self) -> &[f64] {
+        &self.clamped_frequencies
+    }
+
+    /// The modal stiffness `K_ee` (m x m, row-major) [N/m per unit^2].
+    pub fn modal_stiffness(&self) -> &[f64] {
+        &self.stiffness
+    }
+
+    /// Reference position of node `a` in the body frame [m].
+    pub fn node_position(&self, a: usize) -> Vec2 {
+        self.nodes[a]
+    }
+
+    /// The lowest bending frequency [Hz] of the body clamped at its frame node:
+    /// above this spin rate a linear modal body (no geometric stiffening) diverges.
+    pub fn first_bending_frequency(&self) -> Option<f64> {
+        self.clamped_frequencies.first().map(|w| w / (2.0 * std::f64::consts::PI))
+    }
+
+    /// Free-free natural frequencies [Hz] of the reduced body at rest (its three rigid modes left out).
+    pub fn free_frequencies(&self) -> Result<Vec<f64>, String> {
+        let n = self.n_coordinates();
+        let mut mass = vec![0.0; n * n];
+        self.body_frame_mass(&vec![0.0; self.n_modes()], &mut mass);
+        let mass = DMatrix::from_row_slice(n, n, &mass);
+        let mut stiffness = DMatrix::zeros(n, n);
+        let m = self.n_modes();
+        stiffness.view_mut((3, 3), (m, m)).copy_from(&DMatrix::from_row_slice(m, m, &self.stiffness));
+        let modes = vibration_modes(&mass, &stiffness, &[])?;
+        Ok(modes.angular_frequencies.iter().skip(3).map(|w| w / (2.0 * std::f64::consts::PI)).collect())
+    }
+
+    /// The interface node of a marker (its reference site: the frame's node).
+    #[inline]
+    fn node(&self, marker: &Marker) -> usize {
+        match marker.site {
+            Site::ModalNode(site) => site.node as usize,
+            _ => self.interface[0],
+        }
+    }
+
+    /// The x row, y row and rotation row of node `a`'s modes.
+    #[inline]
+    fn rows(&self, a: usize) -> (&[f64], &[f64], &[f64]) {
+        let m = self.n_modes();
+        let rows = &self.node_rows[3 * m * a..3 * m * (a + 1)];
+        (&rows[..m], &rows[m..2 * m], &rows[2 * m..])
+    }
+
+    /// The body frame's pose and velocity from `(x, y, phi)` and their rates.
+    #[inline]
+    pub fn frame(q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        Frame::from_coordinates_after(previous, q, v)
+    }
+
+    /// Frame of node `a`: position `R + A (X_a + Phi_a eta)`, angle `phi + Psi_a eta` and their rates.
+    pub fn node_frame(&self, a: usize, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        let body = Frame::from_coordinates(q, v);
+        let (rx, ry, rt) = self.rows(a);
+        let (eta, rates) = (&q[3..], &v[3..]);
+        let local = self.nodes[a] + Vec2::new(dot(rx, eta), dot(ry, eta));
+        let local_rate = Vec2::new(dot(rx, rates), dot(ry, rates));
+        let offset = body.rotate(local);
+        let position = body.position + offset;
+        let velocity = body.velocity + perp(offset) * body.angular_velocity + body.rotate(local_rate);
+        let angle = q[2] + dot(rt, eta);
+        Frame::from_coordinates_after(previous, &[position.x, position.y, angle], &[velocity.x, velocity.y, v[2] + dot(rt, rates)])
+    }
+
+    /// Column `3 + i` of a marker point's Jacobian: `A Phi_a,i + perp(s) Psi_a,i` (`s` the point from the node) [m/unit].
+    #[inline]
+    fn modal_column(body: &Frame, rows: (&[f64], &[f64], &[f64]), s: Vec2, i: usize) -> Vec2 {
+        body.rotate(Vec2::new(rows.0[i], rows.1[i])) + perp(s) * rows.2[i]
+    }
+
+    /// `d(v_P)/d(v)`: `[I, perp(P - R), A Phi_a + perp(s) Psi_a]`, rows x and y.
+    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
+        let s = frame.rotate(marker.local);
+        let d = frame.position + s - body.position;
+        jx[..3].copy_from_slice(&[1.0, 0.0, -d.y]);
+        jy[..3].copy_from_slice(&[0.0, 1.0, d.x]);
+        let rows = self.rows(self.node(marker));
+        for i in 0..self.n_modes() {
+            let c = Self::modal_column(body, rows, s, i);
+            jx[3 + i] = c.x;
+            jy[3 + i] = c.y;
+        }
+    }
+
+    /// Adds `along . d(v_P)/d(v)` to `out`.
+    pub fn add_marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
+        let s = frame.rotate(marker.local);
+        let d = frame.position + s - body.position;
+        out[0] += along.x;
+        out[1] += along.y;
+        out[2] += along.dot(&perp(d));
+        let rows = self.rows(self.node(marker));
+        for i in 0..self.n_modes() {
+            out[3 + i] += along.dot(&Self::modal_column(body, rows, s, i));
+        }
+    }
+
+    /// Adds `scale d(omega_P)/d(v)` = `scale [0, 0, 1, Psi_a]` to `out`.
+    pub fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]) {
+        out[2] += scale;
+        let (_, _, rt) = self.rows(self.node(marker));
+        for (o, r) in out[3..].iter_mut().zip(rt) {
+            *o += scale * r;
+        }
+    }
+
+    /// `omega^2 d + 2 omega perp(v_a - R_dot) - omega_a^2 s` [m/s^2]: the point's
+    /// acceleration at zero coordinate accelerations (`d` the node from the frame
+    /// origin, `v_a` its velocity, `omega_a` its section's rate, `s` the point from the node).
+    pub fn marker_bias_acceleration(body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
+        let s = frame.rotate(marker.local);
+        let d = frame.position - body.position;
+        let omega = body.angular_velocity;
+        d * (omega * omega) + perp(frame.velocity - body.velocity) * (2.0 * omega) - s * (frame.angular_velocity * frame.angular_velocity)
+    }
+
+    /// The bias acceleration plus the Jacobian times the accelerations `a` [m/s^2].
+    pub fn marker_acceleration(&self, body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
+        let s = frame.rotate(marker.local);
+        let d = frame.position + s - body.position;
+        let rows = self.rows(self.node(marker));
+        let modal: Vec2 = (0..self.n_modes()).map(|i| Self::modal_column(body, rows, s, i) * a[3 + i]).sum();
+        Self::marker_bias_acceleration(body, frame, marker) + Vec2::new(a[0], a[1]) + perp(d) * a[2] + modal
+    }
+
+    /// Adds the generalised force of `f` [N] at `p` [m] (moving with `marker`): the transpose of its Jacobian times `f`.
+    pub fn add_point_force(&self, body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
+        let s = p - frame.position;
+        out[0] += f.x;
+        out[1] += f.y;
+        out[2] += cross(p - body.position, f);
+        let rows = self.rows(self.node(marker));
+        for i in 0..self.n_modes() {
+            out[3 + i] += f.dot(&Self::modal_column(body, rows, s, i));
+        }
+    }
+
+    /// Adds the generalised force of the moment `m` [N m] on the node's section: `m [0, 0, 1, Psi_a]`.
+    pub fn add_moment(&self, marker: &Marker, m: f64, out: &mut [f64]) {
+        self.add_marker_angle_jacobian(marker, m, out);
+    }
+
+    /// Values of scratch the mass solve needs: the `(3 + m)^2` body-frame mass.
+    pub fn mass_scratch_len(&self) -> usize {
+        self.n_coordinates() * self.n_coordinates()
+    }
+
+    /// `Mbar(eta)`, row-major `(3 + m)^2`, into `out`.
+    pub fn body_frame_mass(&self, eta: &[f64], out: &mut [f64]) {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        let n = 3 + m;
+        let out = &mut out[..n * n];
+        out.fill(0.0);
+        let b = self.rotation_coupling(eta);
+        out[0] = inv.mass;
+        out[n + 1] = inv.mass;
+        out[2] = b.x;
+        out[n + 2] = b.y;
+        out[2 * n + 2] = self.rotational_inertia(eta);
+        for j in 0..m {
+            let (sx, sy, h) = (inv.first_moment_modes[j], inv.first_moment_modes[m + j], self.modal_rotation(eta, j));
+            out[3 + j] = sx;
+            out[n + 3 + j] = sy;
+            out[2 * n + 3 + j] = h;
+            for i in 0..m {
+                out[(3 + i) * n + 3 + j] = inv.modal_mass[i * m + j];
+            }
+        }
+        for i in 0..n {
+            for j in 0..i {
+                out[i * n + j] = out[j * n + i];
+            }
+        }
+    }
+
+    /// `a_0 + A_1 eta` [kg m].
+    #[inline]
+    fn rotation_coupling(&self, eta: &[f64]) -> Vec2 {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        inv.rotation_coupling + Vec2::new(dot(&inv.rotation_coupling_modes[..m], eta), dot(&inv.rotation_coupling_modes[m..], eta))
+    }
+
+    /// `I_0 + 2 I_1 . eta + eta^T I_2 eta` [kg m^2].
+    #[inline]
+    fn rotational_inertia(&self, eta: &[f64]) -> f64 {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        let quadratic: f64 = (0..m).map(|i| eta[i] * dot(&inv.inertia_quadratic[i * m..(i + 1) * m], eta)).sum();
+        inv.inertia + 2.0 * dot(&inv.inertia_linear, eta) + quadratic
+    }
+
+    /// `(h_0 + H_1^T eta)_j` [kg m^2 / unit].
+    #[inline]
+    fn modal_rotation(&self, eta: &[f64], j: usize) -> f64 {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        inv.modal_rotation[j] + (0..m).map(|k| inv.modal_rotation_linear[k * m + j] * eta[k]).sum::<f64>()
+    }
+
+    /// `out = M(q)^-1 f`: `f` turned into the body frame, solved with the Cholesky
+    /// factor of `Mbar(eta)` made in `scratch`, turned back. A mass that does not
+    /// factor (a non-finite state) gives NaN, which the engine reports.
+    pub fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
+        let n = self.n_coordinates();
+        self.body_frame_mass(&q[3..], scratch);
+        if cholesky_factor(&mut scratch[..n * n], n).is_err() {
+            out.fill(f64::NAN);
+            return;
+        }
+        let (sin, cos) = q[2].sin_cos();
+        out.copy_from_slice(f);
+        out[0] = cos * f[0] + sin * f[1];
+        out[1] = -sin * f[0] + cos * f[1];
+        cholesky_solve(&scratch[..n * n], n, out);
+        let (x, y) = (out[0], out[1]);
+        out[0] = cos * x - sin * y;
+        out[1] = sin * x + cos * y;
+    }
+
+    /// `p = Mbar(eta) u` over the `3 + m` body-frame velocities `u`.
+    fn times_body_mass(&self, eta: &[f64], u: &[f64], p: &mut [f64]) {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        let (b, omega, rates) = (self.rotation_coupling(eta), u[2], &u[3..]);
+        let st = &inv.first_moment_modes;
+        p[0] = inv.mass * u[0] + b.x * omega + dot(&st[..m], rates);
+        p[1] = inv.mass * u[1] + b.y * omega + dot(&st[m..], rates);
+        p[2] = b.x * u[0] + b.y * u[1] + self.rotational_inertia(eta) * omega + (0..m).map(|j| self.modal_rotation(eta, j) * rates[j]).sum::<f64>();
+        for i in 0..m {
+            p[3 + i] = st[i] * u[0] + st[m + i] * u[1] + self.modal_rotation(eta, i) * omega + dot(&inv.modal_mass[i * m..(i + 1) * m], rates);
+        }
+    }
+
+    /// The body-frame velocities `u = (A^T R_dot, omega, eta_dot)` from `v`.
+    #[inline]
+    fn body_velocities(q: &[f64], v: &[f64], u: &mut [f64]) {
+        let (sin, cos) = q[2].sin_cos();
+        u[..v.len()].copy_from_slice(v);
+        u[0] = cos * v[0] + sin * v[1];
+        u[1] = -sin * v[0] + cos * v[1];
+    }
+
+    /// Adds the quadratic velocity vector, minus the elastic and damping forces, to `out`.
+    pub fn add_body_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]) {
+        let (n, m) = (self.n_coordinates(), self.n_modes());
+        let (mut qv, mut u) = ([0.0; MAX_COORDINATES], [0.0; MAX_COORDINATES]);
+        Self::body_velocities(q, v, &mut u[..n]);
+        self.quadratic_velocity_vector(&q[3..], &u[..n], &mut qv[..n]);
+        let (sin, cos) = q[2].sin_cos();
+        out[0] += cos * qv[0] - sin * qv[1];
+        out[1] += sin * qv[0] + cos * qv[1];
+        out[2] += qv[2];
+        let (eta, rates) = (&q[3..], &v[3..]);
+        for i in 0..m {
+            let row = i * m..(i + 1) * m;
+            out[3 + i] += qv[3 + i] - dot(&self.stiffness[row.clone()], eta) - dot(&self.damping[row], rates);
+        }
+    }
+
+    /// `dT/dq - M_dot q_dot` in body-frame components (`u` the body-frame
+    /// velocities): centrifugal, Coriolis and gyroscopic terms [N, N m, N per unit].
+    fn quadratic_velocity_vector(&self, eta: &[f64], u: &[f64], out: &mut [f64]) {
+        let (inv, m, n) = (&self.invariants, self.n_modes(), self.n_coordinates());
+        let (omega, rates) = (u[2], &u[3..n]);
+        let mut p = [0.0; MAX_COORDINATES];
+        self.times_body_mass(eta, u, &mut p);
+        // Mbar w with w = (J^T u_R, 0, 0): the rate of the frame's turn seen in the body frame
+        let w = Vec2::new(u[1], -u[0]);
+        let b = self.rotation_coupling(eta);
+        // M_dot u (the rates of the eta-dependent entries)
+        let b_rate = Vec2::new(dot(&inv.rotation_coupling_modes[..m], rates), dot(&inv.rotation_coupling_modes[m..], rates));
+        let inertia_rate = 2.0 * (dot(&inv.inertia_linear, rates) + (0..m).map(|i| rates[i] * dot(&inv.inertia_quadratic[i * m..(i + 1) * m], eta)).sum::<f64>());
+        let h_rate = |j: usize| (0..m).map(|k| inv.modal_rotation_linear[k * m + j] * rates[k]).sum::<f64>();
+        let h_rate_dot: f64 = (0..m).map(|j| h_rate(j) * rates[j]).sum();
+        out[0] = -omega * (-p[1]) - b_rate.x * omega - omega * inv.mass * w.x;
+        out[1] = -omega * p[0] - b_rate.y * omega - omega * inv.mass * w.y;
+        out[2] = w.x * p[0] + w.y * p[1] - (b_rate.dot(&Vec2::new(u[0], u[1])) + inertia_rate * omega + h_rate_dot) - omega * b.dot(&w);
+        for i in 0..m {
+            let st = Vec2::new(inv.first_moment_modes[i], inv.first_moment_modes[m + i]);
+            let a1 = Vec2::new(inv.rotation_coupling_modes[i], inv.rotation_coupling_modes[m + i]);
+            let h1_rates = dot(&inv.modal_rotation_linear[i * m..(i + 1) * m], rates);
+            let kinetic_gradient = omega * a1.dot(&Vec2::new(u[0], u[1])) + omega * omega * (inv.inertia_linear[i] + dot(&inv.inertia_quadratic[i * m..(i + 1) * m], eta)) + omega * h1_rates;
+            out[3 + i] = kinetic_gradient - h_rate(i) * omega - omega * st.dot(&w);
+        }
+    }
+
+    /// Generalised gravity `-dV/dq`, `V = -g . (m R + A s(eta))`, `s = s_0 + S_t eta`.
+    pub fn add_gravity(&self, g: Vec2, q: &[f64], out: &mut [f64]) {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        let (sin, cos) = q[2].sin_cos();
+        let g_body = Vec2::new(cos * g.x + sin * g.y, -sin * g.x + cos * g.y);
+        out[0] += inv.mass * g.x;
+        out[1] += inv.mass * g.y;
+        out[2] += cross(self.first_moment(&q[3..]), g_body);
+        for i in 0..m {
+            out[3 + i] += inv.first_moment_modes[i] * g_body.x + inv.first_moment_modes[m + i] * g_body.y;
+        }
+    }
+
+    /// `s(eta) = s_0 + S_t eta` in the body frame [kg m].
+    fn first_moment(&self, eta: &[f64]) -> Vec2 {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        inv.first_moment + Vec2::new(dot(&inv.first_moment_modes[..m], eta), dot(&inv.first_moment_modes[m..], eta))
+    }
+
+    /// Gravity's potential `-g . (m R + A s(eta))` plus the strain energy `eta^T K_ee eta / 2` [J].
+    pub fn potential_energy(&self, g: Vec2, q: &[f64]) -> f64 {
+        let m = self.n_modes();
+        let eta = &q[3..];
+        let (sin, cos) = q[2].sin_cos();
+        let s = self.first_moment(eta);
+        let centre = Vec2::new(q[0], q[1]) * self.invariants.mass + Vec2::new(cos * s.x - sin * s.y, sin * s.x + cos * s.y);
+        let strain: f64 = (0..m).map(|i| eta[i] * dot(&self.stiffness[i * m..(i + 1) * m], eta)).sum();
+        -g.dot(&centre) + 0.5 * strain
+    }
+
+    /// `u^T Mbar(eta) u / 2` [J].
+    pub fn kinetic_energy(&self, q: &[f64], v: &[f64]) -> f64 {
+        let n = self.n_coordinates();
+        let (mut u, mut p) = ([0.0; MAX_COORDINATES], [0.0; MAX_COORDINATES]);
+        Self::body_velocities(q, v, &mut u[..n]);
+        self.times_body_mass(&q[3..], &u[..n], &mut p[..n]);
+        0.5 * dot(&u[..n], &p[..n])
+    }
+
+    /// Channels: the frame's `x`, `y`, `angle` (as a rigid body's) and `eta1`, `eta2`, ... with their rates.
+    pub fn coordinate_channels(&self) -> Vec<CoordinateChannels> {
+        let frame = [
+            CoordinateChannels { position: channel("x", "m", "frame origin x"), velocity: channel("vx", "m/s", "frame origin velocity x"), acceleration: channel("ax", "m/s^2", "frame origin acceleration x") },
+            CoordinateChannels { position: channel("y", "m", "frame origin y"), velocity: channel("vy", "m/s", "frame origin velocity y"), acceleration: channel("ay", "m/s^2", "frame origin acceleration y") },
+            CoordinateChannels { position: channel("angle", "rad", "frame angle"), velocity: channel("omega", "rad/s", "frame angular velocity"), acceleration: channel("alpha", "rad/s^2", "frame angular acceleration") },
+        ];
+        let modes = (0..self.n_modes()).map(|j| {
+            let kind = if j < self.n_constraint { "constraint" } else { "fixed-interface normal" };
+            let (unit, rate, acceleration) = if self.rotational[j] { ("rad", "rad/s", "rad/s^2") } else { ("m", "m/s", "m/s^2") };
+            let named = |prefix: &str, unit: &'static str, what: &str| (Cow::Owned(format!("{prefix}{}", j + 1)), unit, Cow::Owned(format!("{what} of mode {} ({kind})", j + 1)));
+            CoordinateChannels { position: named("eta", unit, "amplitude"), velocity: named("eta_rate", rate, "amplitude rate"), acceleration: named("eta_acceleration", acceleration, "amplitude acceleration") }
+        });
+        frame.into_iter().chain(modes).collect()
+    }
+}
+
+/// The modes of the reduced body clamped at its frame node: angular
+/// frequencies [rad/s], and the modal damping `D = M V diag(2 zeta w) V^T M`
+/// that gives each of them the damping ratio `zeta` (`V` mass-normalised).
+fn clamped_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, zeta: f64) -> Result<(Vec<f64>, DMatrix<f64>), String> {
+    let m = mass.nrows();
+    if m == 0 {
+        return Ok((Vec::new(), DMatrix::zeros(0, 0)));
+    }
+    let modes = vibration_modes(mass, stiffness, &[])?;
+    let rates = DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(m, modes.angular_frequencies.iter().map(|w| 2.0 * zeta * w)));
+    let mv = mass * &modes.shapes;
+    Ok((modes.angular_frequencies, &mv * rates * mv.transpose()))
+}
+
+/// `a . b` over the shorter.
+#[inline]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(a, b)| a * b).sum()
+}
