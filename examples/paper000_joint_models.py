@@ -48,8 +48,9 @@ paper's values, and the results are not a reproduction of its figures):
   rectangles of the rigid links' masses, 5 mm deep in the plane of the
   mechanism (coupler 13.4 mm wide, crank 20.1 mm): the coupler's first
   pinned-pinned bending mode is then about 2 kHz and its mid-span
-  deflection under the crank pin's centripetal load some tens of um, the
-  order of the clearance, as the paper argues for its links; coupler 3
+  deflection under the crank pin's centripetal load, estimated by hand
+  (not measured), some tens of um, the order of the clearance, as the
+  paper argues for its links; coupler 3
   quadratic elements, crank 2; strain-rate damping with a retardation time
   of 4 us (2.5 % of critical at 2 kHz);
 - point E at the middle of AB, the strain of its axis (the section's mean
