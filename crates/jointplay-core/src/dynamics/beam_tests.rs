@@ -280,12 +280,8 @@ fn a_very_stiff_beam_rod_reproduces_the_rigid_slider_crank() {
     // with the motion; its strain-rate damping (2 us) and the L-stable second-order
     // formula remove it within a few milliseconds, after which the two agree
     let run = |m: &Model, integrator: IntegratorOptions, stabilization: Stabilization| {
-        let mut ws = Workspace::new(m);
-        let mut state = assemble(m, 0.0, &mut ws).unwrap();
-        let options = SimulationOptions { integrator: IntegratorOptions { output_step: Some(1e-3), ..integrator }, stabilization, ..SimulationOptions::default() };
-        let outcome = simulate(m, &mut state, 0.05, &options, None);
-        assert!(outcome.error.is_none(), "{:?}", outcome.error);
-        (outcome.trajectory.channel("slider.x").unwrap(), outcome.trajectory.channel("slider.ax").unwrap())
+        let trajectory = run_slider_crank(m, integrator, stabilization);
+        (trajectory.channel("slider.x").unwrap(), trajectory.channel("slider.ax").unwrap())
     };
     let explicit = IntegratorOptions { rtol: 1e-9, atol: 1e-12, ..IntegratorOptions::default() };
     let implicit = IntegratorOptions { method: Method::NumericalDifferentiation, max_order: 2, rtol: 1e-8, atol: 1e-11, ..IntegratorOptions::default() };
@@ -298,4 +294,14 @@ fn a_very_stiff_beam_rod_reproduces_the_rigid_slider_crank() {
         // 1.4 m/s^2 of 1600 at rtol 1e-8, 0.07 at 1e-9)
         assert!((a_rigid[k] - a_beam[k]).abs() < 2e-3 * peak, "sample {k}: ax {} vs {}", a_rigid[k], a_beam[k]);
     }
+}
+
+/// Runs a slider-crank test model from its assembled start to 0.05 s, samples every 1 ms; panics on an error.
+pub(super) fn run_slider_crank(m: &Model, integrator: IntegratorOptions, stabilization: Stabilization) -> Trajectory {
+    let mut ws = Workspace::new(m);
+    let mut state = assemble(m, 0.0, &mut ws).unwrap();
+    let options = SimulationOptions { integrator: IntegratorOptions { output_step: Some(1e-3), ..integrator }, stabilization, ..SimulationOptions::default() };
+    let outcome = simulate(m, &mut state, 0.05, &options, None);
+    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    outcome.trajectory
 }

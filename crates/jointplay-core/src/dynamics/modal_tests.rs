@@ -7,7 +7,7 @@
 //! "Dynamics of a cantilever beam attached to a moving base", J. Guidance 10(2),
 //! 1987, 139-151).
 
-use super::beam_tests::{model, spin_up_beam};
+use super::beam_tests::{model, run_slider_crank, spin_up_beam};
 use super::*;
 use crate::body::{ModalNodeSite, Site};
 use crate::dynamics::frame::{Frame, Vec2};
@@ -279,14 +279,7 @@ fn slider_crank(modal_rod: bool, clearance: bool) -> Model {
 fn a_stiff_modal_rod_reproduces_the_rigid_slider_crank_and_carries_a_clearance_joint() {
     // the rod (E 100 times steel's) starts unstressed, its axial constraint mode (about 7e5 rad/s)
     // damped at 20 % by the modal damping and the L-stable second-order formula
-    let run = |m: &Model, integrator: IntegratorOptions, stabilization: Stabilization| {
-        let mut ws = Workspace::new(m);
-        let mut state = assemble(m, 0.0, &mut ws).unwrap();
-        let options = SimulationOptions { integrator: IntegratorOptions { output_step: Some(1e-3), ..integrator }, stabilization, ..SimulationOptions::default() };
-        let outcome = simulate(m, &mut state, 0.05, &options, None);
-        assert!(outcome.error.is_none(), "{:?}", outcome.error);
-        outcome.trajectory
-    };
+    let run = run_slider_crank;
     let explicit = IntegratorOptions { rtol: 1e-9, atol: 1e-12, ..IntegratorOptions::default() };
     let implicit = IntegratorOptions { method: Method::NumericalDifferentiation, max_order: 2, rtol: 1e-8, atol: 1e-11, ..IntegratorOptions::default() };
     let baumgarte = Stabilization::Baumgarte { alpha: 50.0, beta: 50.0 };
