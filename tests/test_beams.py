@@ -133,7 +133,8 @@ def test_a_gauge_must_sit_on_a_beam_and_a_loose_beam_is_an_error():
     with pytest.raises(jp.ModelError) as info:
         jp.loads(m.to_toml())
     assert [str(p) for p in info.value.problems] == [
-        "sensors.wrong.point: must be a point of a beam; 'block' is a rigid body (beams: rod)"]
+        "sensors.wrong.point: must be a point of a beam or modal body; 'block' is a rigid body (beams and modal "
+        "bodies: rod)"]
     loose = PENDULUM.replace('[joints.pin]\ntype = "revolute"\nfirst = "ground.O"\nsecond = "rod.start"\n', "")
     assert "beams.rod: is connected to nothing: no joint or force element refers to it (write free = true if it " \
            "is meant to move freely)" in problems(loose)

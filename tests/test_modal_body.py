@@ -16,13 +16,14 @@ from jointplay import sections
 SECTION = sections.resultants("2e6 N", "8e5 N", "100 N m^2", "2 kg/m", "1e-4 kg m")
 
 
-def cantilever(load: float = 10.0) -> jp.Model:
-    """A modal body clamped at its start, a load down at its end, every mode critically damped; a spring of no
-    stiffness from (1, -1) to the tip measures the tip's height (its length is y + 1 while x stays 1)."""
+def cantilever(load: float = 10.0, points: dict | None = None) -> jp.Model:
+    """A modal body clamped at its start (its frame too), a load down at its end, every mode critically damped; a
+    spring of no stiffness from (1, -1) to the tip measures the tip's height (its length is y + 1 while x stays 1)."""
     m = jp.Model("modal cantilever", gravity=(0, 0))
     m.add_ground_point("O", (0, 0))
     m.add_ground_point("below", ("1 m", "-1 m"))
-    m.add_modal_body("arm", (0, 0), ("1 m", 0), section=SECTION, elements=6, normal_modes=2, damping_ratio=1.0)
+    m.add_modal_body("arm", (0, 0), ("1 m", 0), section=SECTION, elements=6, normal_modes=2, damping_ratio=1.0,
+                     frame="clamped", points=points)
     m.add_fixed("clamp", "ground.O", "arm.start")
     m.add_point_force("load", "arm.end", fx=0.0, fy=-load)
     m.add_spring_damper("probe", "ground.below", "arm.end", stiffness=0.0, damping=0.0, free_length=0.0)
@@ -39,12 +40,34 @@ def test_check_lists_the_first_bending_frequency_of_euler_bernoulli():
     assert body["kind"] == "modal" and body["modes"] == 3 + 2 and body["mass"] == pytest.approx(2.0, rel=1e-12)
 
 
+def test_a_link_with_two_interface_nodes_is_held_simply_supported_by_default():
+    # the chord frame: f1 = pi^2 sqrt(EI / (rho A L^4)) / (2 pi) = 11.107 Hz (shear and rotary inertia lower it
+    # by 9e-4)
+    m = jp.Model("modal link", gravity=(0, 0))
+    m.add_modal_body("arm", (0, 0), ("1 m", 0), section=SECTION, elements=6, normal_modes=2)
+    (name, frequency), = m.check()["modal_bending_frequencies"].items()
+    assert frequency == pytest.approx(math.pi**2 * math.sqrt(100.0 / 2.0) / (2.0 * math.pi), rel=1e-3)
+
+
 def test_a_clamped_modal_cantilever_settles_at_the_timoshenko_deflection():
     r = cantilever().simulate(2.0, method="bdf", max_order=2, rtol=1e-8, atol=1e-11, output_step=0.05)
     expected = 10.0 / (3.0 * 100.0) + 10.0 / 8e5  # P L^3 / (3 EI) + P L / (k G A) [m]
     assert r["probe.length"][-1] - 1.0 == pytest.approx(-expected, rel=1e-5)
     assert r["clamp.fy"][-1] == pytest.approx(10.0, rel=1e-6)
     assert "arm.eta1" in r.channels and "arm.angle" in r.channels
+
+
+def test_strains_recovered_from_the_modes_are_the_cantilevers_statics():
+    # at rest under the tip load P: N = 0, Q = P, M = P (L - s) at the arclength s (statics of the cantilever),
+    # fibre strain -y M / EI; the gauge at mid-span is at a node (the modal body's points are nodes)
+    m = cantilever(points={"mid": "0.5 m"})
+    m.add_strain_gauge("gauge", "arm.mid", fibre="10 mm")
+    r = m.simulate(2.0, method="bdf", max_order=2, rtol=1e-8, atol=1e-11, output_step=0.05)
+    moment = r["gauge.bending_moment"][-1]
+    assert abs(moment) == pytest.approx(10.0 * 0.5, rel=1e-6)
+    assert abs(r["gauge.shear_force"][-1]) == pytest.approx(10.0, rel=1e-6)
+    assert abs(r["gauge.axial_force"][-1]) < 1e-6
+    assert r["gauge.axial_strain"][-1] == pytest.approx(-0.01 * moment / 100.0, rel=1e-6)
 
 
 def test_a_free_modal_body_keeps_its_energy_while_spinning():
@@ -72,6 +95,8 @@ def test_a_driver_spinning_a_modal_body_past_its_first_bending_frequency_is_warn
 @pytest.mark.parametrize(("arguments", "location", "text"), [
     ({"interface": {"start": 0, "mid": "0.3 m"}}, "modal_bodies.arm.interface.mid.arclength", "every 0.25 m"),
     ({"damping_ratio": -0.1}, "modal_bodies.arm.damping_ratio", "must be >= 0"),
+    ({"frame": "mean_axis"}, "modal_bodies.arm.frame", "chord"),
+    ({"frame": "chord", "interface": {"start": 0}}, "modal_bodies.arm", "second interface node"),
     ({"normal_modes": -1}, "modal_bodies.arm.normal_modes", ""),
     ({"interface": {"start": "-1 m"}}, "modal_bodies.arm.interface.start", ""),
 ])
@@ -95,6 +120,7 @@ start = [0, 0]
 end = ["1 m", 0]
 section = { shape = "resultants", axial_stiffness = "2e6 N", shear_stiffness = "8e5 N", bending_stiffness = "100 N m^2", mass_per_length = "2 kg/m", rotary_inertia_per_length = "1e-4 kg m" }
 elements = 6
+frame = "clamped"
 normal_modes = 2
 damping_ratio = 1.0
 [joints.clamp]

@@ -205,14 +205,14 @@ def _beam_table(spec: dict, described: dict, frequencies: dict) -> Table:
 
 
 def _modal_table(spec: dict, described: dict) -> Table:
-    """Each modal body's reduction and its first bending frequency (clamped at its frame node), the spin above
-    which a linear modal body diverges."""
-    t = Table("modal body", "mass", "nodes", "interface", "modes", "damping ratio", "first bending (Hz)",
+    """Each modal body's reduction and its first bending frequency (held at its frame's reference conditions), the
+    spin above which a linear modal body diverges."""
+    t = Table("modal body", "mass", "nodes", "interface", "frame", "modes", "damping ratio", "first bending (Hz)",
               title="modal bodies: Craig-Bampton reduction and first bending frequency")
     for b in spec["modal_bodies"]:
         d = described[b["name"]]
         t.add_row(b["name"], _fmt(d["mass"], "kg"), str(d["nodes"]), ", ".join(node["name"] for node in b["interface"]),
-                  str(d["modes"]), f"{d['damping_ratio']:g}", _fmt(d["first_bending_frequency"], ""))
+                  d["frame"], str(d["modes"]), f"{d['damping_ratio']:g}", _fmt(d["first_bending_frequency"], ""))
     return t
 
 

@@ -641,6 +641,7 @@ BEAM_SECTIONS = family(
 VARIANTS = {"section": BEAM_SECTIONS}
 
 ELEMENT_ORDERS = ("linear", "quadratic")
+MODAL_FRAMES = ("chord", "clamped")
 
 BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reissner) beam, straight and unstressed "
              "at the start, divided into elements of equal length; its named points are `start`, `end` and those of "
@@ -678,10 +679,23 @@ MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating 
           '`interface = { start = "0 mm", end = "300 mm" }`; the first carries the body\'s frame, the others get '
           "static constraint modes; joints attach to `\"<body>.<node>\"`", {},
           default_text="the two ends, named `start` and `end`"),
+    Param("points", "arclengths", "other named points by arclength from the first end, each at a node of the mesh: "
+          '`points = { mid = "150 mm" }`; forces and strain gauges attach there (joints belong at interface nodes)',
+          {}),
+    Param("frame", "choice", "reference conditions of the body's frame: `chord` (origin at the first interface "
+          "node, x axis through the second: simply supported modes, for a link pinned at two points) or `clamped` "
+          "(origin and axes on the first interface node's section: cantilever modes, for a link clamped at one end)",
+          None, of=MODAL_FRAMES, default_text="`chord` with two or more interface nodes, `clamped` with one",
+          why="a force along the line of two pins stays along the chord frame's axis; in the clamped frame it "
+              "crosses it and acts as a false geometric stiffness (docs/theory/modal-body.md)"),
     Param("normal_modes", "count", "fixed-interface normal modes kept", 4,
           why="a uniform link's three lowest clamped-free frequencies within 1e-3, free-free within 5e-3"),
-    Param("damping_ratio", "dimensionless", "damping ratio of every mode of the body clamped at its frame node", 0.0,
+    Param("damping_ratio", "dimensionless", "damping ratio of every mode of the body held at its frame's reference "
+          "conditions", 0.0,
           ge=0, why="undamped unless chosen"),
+    Param("damping_time", "time", "retardation time tau of stiffness-proportional damping `tau K`, added to the "
+          "modal damping: a beam's strain-rate damping of the same `damping_time`, linearised (mode n gets the "
+          "ratio tau w_n / 2)", 0.0, ge=0, why="undamped unless chosen"),
     Param("velocity", "vector", "initial velocity of the frame's origin (the first interface node)", (0.0, 0.0),
           of="velocity"),
     Param("angular_velocity", "angular velocity", "initial angular velocity of the frame", 0.0),
@@ -691,8 +705,9 @@ MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating 
 
 STRAIN_GAUGE = Table("strain_gauge", "Stress resultants of a beam's section at a point (axial force N, shear force "
                      "Q, bending moment M), the axis strain, the curvature and the axial strain of a fibre at "
-                     "`fibre` from the axis, as channels `<name>.axial_force` ... `<name>.axial_strain`.", (
-    _point("point", "a point of a beam", 'a point of a beam "beam.point", e.g. "rod.E"'),
+                     "`fibre` from the axis, as channels `<name>.axial_force` ... `<name>.axial_strain`; on a modal "
+                     "body, recovered from its modes (elastic part: modal damping is not a section stress).", (
+    _point("point", "a point of a beam or modal body", 'a point of a beam or modal body "body.point", e.g. "rod.E"'),
     Param("fibre", "length", "distance of the fibre from the axis, positive to the left of the beam's direction "
           "(start to end)", 0.0, why="the axis"),
 ), tag="type")

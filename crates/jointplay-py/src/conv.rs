@@ -2,6 +2,7 @@
 
 use jointplay_core::dynamics::{ChannelInfo, Formulation, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::body::BodyKind;
+use jointplay_core::modal::FrameReference;
 use jointplay_core::integrate::{JacobianMethod, Method};
 use jointplay_core::SimulationError;
 use numpy::{PyArray1, PyArrayMethods};
@@ -224,7 +225,12 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
                 e.set_item("modes", modal.n_modes())?;
                 e.set_item("nodes", modal.n_nodes())?;
                 e.set_item("interface_nodes", modal.interface().to_vec())?;
+                e.set_item("frame", match modal.frame_reference() {
+                    FrameReference::Chord => "chord",
+                    FrameReference::Clamped => "clamped",
+                })?;
                 e.set_item("damping_ratio", modal.damping_ratio())?;
+                e.set_item("damping_time", modal.retardation_time())?;
                 e.set_item("first_bending_frequency", modal.first_bending_frequency())?;
             }
         }

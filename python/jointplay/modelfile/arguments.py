@@ -132,15 +132,16 @@ def beam(table, name: str, values: dict[str, Any], where: str, hint: str = "") -
 
 def modal_body(table, name: str, values: dict[str, Any], where: str, hint: str = "") -> dict:
     """The core's dict of a modal body of the Python builder (:func:`beam` for the modal body table):
-    ``interface`` a dict of arclengths, ``{"start": 0, "end": "300 mm"}`` (None: the two ends)."""
+    ``interface`` and ``points`` dicts of arclengths, ``{"start": 0, "end": "300 mm"}`` (interface None: the two
+    ends)."""
     from .build import Builder
     from .schema import ModalBodyTable
 
     raw = {key: value for key, value in values.items() if value is not None}
     builder = Builder({}, check_references=False)
-    stations = builder.interface_nodes(raw, where)
+    named = (builder.interface_nodes(raw, where), builder.arclengths(raw.get("points", {}), join(where, "points")))
     t = builder.validate(ModalBodyTable, raw, where)
-    spec = None if t is None else builder.modal_body(name, where, t, raw, stations)
+    spec = None if t is None else builder.modal_body(name, where, t, raw, named)
     if builder.problems or spec is None:
         raise ModelError(builder.problems or [Problem(where, f"cannot be read: {values!r}")])
     return spec

@@ -43,7 +43,7 @@ class Builder:
         self.names: dict[str, str] = {}
         self.referenced: set[str] = set()
         self.free: set[str] = set()
-        self.beam_names: set[str] = set()
+        self.flexible_names: set[str] = set()  # beams and modal bodies: where strain gauges go
 
     def run(self) -> Builder:
         for key in self.doc:
@@ -441,7 +441,7 @@ class Builder:
             table = self.validate(s.BeamTable, raw, where)
             stations = self.arclengths(raw.get("points", {}), join(where, "points"))
             self.points.setdefault(name, ["start", "end", *(station["name"] for station in stations)])
-            self.beam_names.add(name)
+            self.flexible_names.add(name)
             if table is None:
                 continue
             if table.free:
@@ -453,7 +453,7 @@ class Builder:
     def beam(self, name: str, where: str, t: Strict, raw: dict, stations: list[dict]) -> dict | None:
         """The core's dict of a validated beam table: section and material as one ``section``, the mesh keys as
         one ``mesh``; None after adding problems."""
-        geometry = self.beam_geometry(where, t, raw, (stations, "points"))
+        geometry = self.beam_geometry(where, t, raw, [(stations, "points")])
         if geometry is None:
             return None
         section, mesh = geometry
@@ -463,11 +463,10 @@ class Builder:
                 "points": stations}
 
     def beam_geometry(self, where: str, t: Strict, raw: dict,
-                      named: tuple[list[dict], str]) -> tuple[dict, dict] | None:
+                      named: list[tuple[list[dict], str]]) -> tuple[dict, dict] | None:
         """The core's ``section`` and ``mesh`` of a validated beam or modal body table whose named stations
-        are ``named`` (the list and the key that holds them: points or interface nodes); None after adding
+        are ``named`` (each list with the key that holds it: points or interface nodes); None after adding
         problems."""
-        stations, key = named
         section = self.variant(raw, p.BEAM["section"], where)
         material = self.beam_material(t, section, join(where, "material"))
         mesh_ok = self.exactly_one(t, ("elements", "element_length"), where)
@@ -475,7 +474,7 @@ class Builder:
         if length == 0.0:
             self.problem(join(where, "end"), f"must differ from start = [{t.start[0].text}, {t.start[1].text}] "
                                              f"(a beam has a length), got [{t.end[0].text}, {t.end[1].text}]")
-        for station in stations:
+        for station, key in ((station, key) for stations, key in named for station in stations):
             if length > 0.0 and station["arclength"] > length:
                 self.problem(join(where, key, station["name"]),
                              f"must lie on the beam, from 0 to its length {_text(length)}, got "
@@ -493,12 +492,14 @@ class Builder:
             self.claim(name, where)
             table = self.validate(s.ModalBodyTable, raw, where)
             stations = self.interface_nodes(raw, where)
-            self.points.setdefault(name, [station["name"] for station in stations])
+            points = self.arclengths(raw.get("points", {}), join(where, "points"))
+            self.points.setdefault(name, [station["name"] for station in (*stations, *points)])
+            self.flexible_names.add(name)
             if table is None:
                 continue
             if table.free:
                 self.free.add(name)
-            body = self.modal_body(name, where, table, raw, stations)
+            body = self.modal_body(name, where, table, raw, (stations, points))
             if body is not None:
                 self.spec.setdefault("modal_bodies", []).append(body)
 
@@ -517,20 +518,24 @@ class Builder:
             out.append({"name": name, "arclength": arclength})
         return out
 
-    def modal_body(self, name: str, where: str, t: Strict, raw: dict, stations: list[dict]) -> dict | None:
-        """The core's dict of a validated modal body table; None after adding problems."""
+    def modal_body(self, name: str, where: str, t: Strict, raw: dict,
+                   named: tuple[list[dict], list[dict]]) -> dict | None:
+        """The core's dict of a validated modal body table with its interface nodes and points ``named``; None
+        after adding problems."""
+        stations, points = named
         length = math.dist(t.start, t.end)
         for station in stations:
             if station["arclength"] is None:
                 station["arclength"] = length
-        geometry = self.beam_geometry(where, t, raw, (stations, "interface"))
+        geometry = self.beam_geometry(where, t, raw, [(stations, "interface"), (points, "points")])
         if geometry is None:
             return None
         section, mesh = geometry
         return {"name": name, "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
                 "section": section, "mesh": mesh,
                 "interface": [{"name": station["name"], "arclength": station["arclength"]} for station in stations],
-                "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
+                "points": points, "frame": t.frame, "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
+                "damping_time": float(t.damping_time),
                 "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity)}
 
     def beam_material(self, t: Strict, section: dict | None, where: str) -> dict | None | bool:
@@ -612,9 +617,10 @@ class Builder:
             sensor = self.element_spec(p.SENSORS[kind], name, where, t, raw)
             self.referenced = referenced
             body = t.point.partition(".")[0]
-            if self.check_references and body in self.points and body not in self.beam_names:
-                self.problem(join(where, "point"), f"must be a point of a beam; {body!r} is a rigid body "
-                                                   f"(beams: {', '.join(sorted(self.beam_names)) or 'none'})")
+            if self.check_references and body in self.points and body not in self.flexible_names:
+                self.problem(join(where, "point"), f"must be a point of a beam or modal body; {body!r} is a rigid "
+                                                   f"body (beams and modal bodies: "
+                                                   f"{', '.join(sorted(self.flexible_names)) or 'none'})")
             elif sensor is not None:
                 self.spec["sensors"].append(sensor)
 

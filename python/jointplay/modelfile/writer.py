@@ -158,7 +158,9 @@ def _beam(beam: dict) -> dict:
 def _modal_body(body: dict) -> dict:
     """A modal body's table: section, material and mesh as a beam's, its interface nodes a table of arclengths."""
     values = {**_beam_geometry(body), "interface": {node["name"]: node["arclength"] for node in body["interface"]},
-              "normal_modes": body["normal_modes"], "damping_ratio": body["damping_ratio"],
+              "points": {point["name"]: point["arclength"] for point in body.get("points", [])},
+              "frame": body.get("frame"), "normal_modes": body["normal_modes"], "damping_ratio": body["damping_ratio"],
+              "damping_time": body.get("damping_time", 0.0),
               "velocity": body["velocity"], "angular_velocity": body["angular_velocity"]}
     return _in_order(p.MODAL_BODY, values)
 

@@ -5,8 +5,9 @@
 //! A node `a` of the underlying structure is at `r_a = R + A(phi) (X_a + Phi_a eta)`,
 //! its section at the angle `phi + Psi_a eta` (`Phi_a`, `Psi_a`: the
 //! translation and rotation rows of the modes, `X_a` the reference position in
-//! the body frame). The frame sits on the first interface node (see
-//! [`crate::modal::craig_bampton_modes`]).
+//! the body frame). The frame's origin is the first interface node; its axes
+//! follow the chord to the second or the first node's section
+//! ([`crate::modal::FrameReference`], [`crate::modal::craig_bampton_modes`]).
 //!
 //! - **Mass:** `M(q) = T(phi) Mbar(eta) T(phi)^T`, `T = diag(A, 1, I)`, with the
 //!   body-frame mass `Mbar` formed from the inertia invariants
@@ -15,7 +16,7 @@
 //! - **Body forces:** the quadratic velocity vector `dT/dq - M_dot q_dot`
 //!   (centrifugal and Coriolis terms), minus the elastic force `K_ee eta` and
 //!   modal damping `D eta_dot` (one damping ratio for every mode of the body
-//!   clamped at its frame node).
+//!   held at its frame's reference conditions).
 //! - **Markers** sit at nodes (interface nodes, for joints): frame, Jacobian over
 //!   all `3 + m` coordinates, bias acceleration with the modal Coriolis terms.
 //!
@@ -26,11 +27,11 @@ use std::borrow::Cow;
 
 use nalgebra::DMatrix;
 
-use super::{channel, BeamBody, CoordinateChannels, Site};
-use crate::beam::vibration_modes;
+use super::{channel, BeamBody, CoordinateChannels, SectionSite, Site};
+use crate::beam::{vibration_modes, BeamStrains};
 use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
 use crate::linalg::{cholesky_factor, cholesky_solve};
-use crate::modal::{craig_bampton_modes, InertiaInvariants};
+use crate::modal::{craig_bampton_modes, FrameReference, InertiaInvariants};
 
 /// Most modes of one body: the hot loop keeps its vectors on the stack.
 pub const MAX_MODES: usize = 40;
@@ -45,6 +46,14 @@ pub struct ModalNodeSite {
     pub node: u32,
 }
 
+/// The beam a modal body was reduced from, with its frame's pose then
+/// `(x, y, phi)` [m, m, rad]: strains are recovered on its elements.
+#[derive(Clone, Debug, PartialEq)]
+struct SourceBeam {
+    beam: BeamBody,
+    pose: [f64; 3],
+}
+
 /// A modal body: its invariants, modal stiffness and damping, and the nodes' mode rows.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ModalBody {
@@ -54,8 +63,12 @@ pub struct ModalBody {
     stiffness: Vec<f64>,
     /// Modal damping `D` (m x m, row-major) [N s/m per unit^2].
     damping: Vec<f64>,
-    /// Damping ratio of every mode of the body clamped at its frame node [-].
+    /// Retardation time of the stiffness-proportional part of `D` [s].
+    retardation_time: f64,
+    /// Damping ratio of every mode of the body held at its frame's reference conditions [-].
     damping_ratio: f64,
+    /// The frame's reference conditions.
+    reference: FrameReference,
     /// Reference position of every node in the body frame [m].
     nodes: Vec<Vec2>,
     /// Mode rows of every node: `3 m` values, `Phi_a` x row, y row, then `Psi_a`.
@@ -68,22 +81,25 @@ pub struct ModalBody {
     rotational: Vec<bool>,
     /// Angular frequencies of the fixed-interface normal modes [rad/s].
     fixed_interface_frequencies: Vec<f64>,
-    /// Angular frequencies of the reduced body clamped at its frame node [rad/s].
-    clamped_frequencies: Vec<f64>,
+    /// Angular frequencies of the reduced body held at its frame's reference conditions [rad/s].
+    held_frequencies: Vec<f64>,
+    /// The beam reduced, when the body is one (not a structure given by matrices).
+    source: Option<Box<SourceBeam>>,
 }
 
 impl ModalBody {
     /// The body of a structure of mass `mass` and stiffness `stiffness` (dense,
     /// symmetric, `3 n_nodes` square, nodal `(u_x, u_y, theta)` in the body
-    /// frame), nodes at `nodes` [m] (body frame; the frame's origin is moved to the
-    /// first interface node), Craig-Bampton modes for the interface nodes
-    /// `interface` with `n_normal` fixed-interface modes, and the damping ratio
-    /// `damping_ratio` [-] of every mode.
-    pub fn from_finite_elements(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, nodes: &[Vec2], interface: &[usize], n_normal: usize, damping_ratio: f64) -> Result<Self, String> {
+    /// frame's directions), nodes at `nodes` [m] (the frame's origin is moved to the
+    /// first interface node; with a chord frame the second must lie on its x
+    /// axis), Craig-Bampton modes for the interface nodes `interface` and the
+    /// reference conditions `reference` with `n_normal` fixed-interface modes,
+    /// and the damping ratio `damping_ratio` [-] of every mode.
+    pub fn from_finite_elements(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, nodes: &[Vec2], interface: &[usize], reference: FrameReference, n_normal: usize, damping_ratio: f64) -> Result<Self, String> {
         if !(damping_ratio.is_finite() && damping_ratio >= 0.0) {
             return Err(format!("the damping ratio must be >= 0, got {damping_ratio}"));
         }
-        let modes = craig_bampton_modes(mass, stiffness, interface, n_normal)?;
+        let modes = craig_bampton_modes(mass, stiffness, interface, reference, n_normal)?;
         let shapes = &modes.shapes;
         let m = shapes.ncols();
         if m > MAX_MODES {
@@ -94,45 +110,56 @@ impl ModalBody {
         }
         let origin = nodes[interface[0]];
         let nodes: Vec<Vec2> = nodes.iter().map(|p| p - origin).collect();
+        if reference == FrameReference::Chord {
+            let chord = nodes[interface[1]];
+            if chord.y.abs() > 1e-9 * chord.norm() {
+                return Err(format!("with a chord frame the second interface node must lie on the frame's x axis; it is at ({}, {}) m from the first", chord.x, chord.y));
+            }
+        }
         let invariants = InertiaInvariants::new(mass, &nodes, shapes)?;
         let modal_stiffness = shapes.transpose() * stiffness * shapes;
         let modal_mass = DMatrix::from_row_slice(m, m, &invariants.modal_mass);
-        let (clamped_frequencies, damping) = clamped_modes(&modal_mass, &modal_stiffness, damping_ratio)?;
+        let (held_frequencies, damping) = held_modes(&modal_mass, &modal_stiffness, damping_ratio)?;
         let mut node_rows = Vec::with_capacity(3 * m * nodes.len());
         for a in 0..nodes.len() {
             for i in 0..3 {
                 node_rows.extend(shapes.row(3 * a + i).iter());
             }
         }
-        let boundary: Vec<usize> = interface[1..].iter().flat_map(|&k| 3 * k..3 * k + 3).collect();
-        let rotational = (0..m).map(|j| j < boundary.len() && boundary[j] % 3 == 2).collect();
+        let rotational = (0..m).map(|j| j < modes.n_constraint && modes.boundary[j] % 3 == 2).collect();
         Ok(Self {
             invariants,
             stiffness: modal_stiffness.transpose().iter().copied().collect(),
             damping: damping.transpose().iter().copied().collect(),
             damping_ratio,
+            retardation_time: 0.0,
+            reference,
             nodes,
             node_rows,
             interface: interface.to_vec(),
             n_constraint: modes.n_constraint,
             rotational,
             fixed_interface_frequencies: modes.fixed_interface_frequencies,
-            clamped_frequencies,
+            held_frequencies,
+            source: None,
         })
     }
 
     /// The modal body of `beam` in its unstressed reference configuration (its
     /// consistent mass and linear stiffness there), with the interface nodes
-    /// `interface` (node indices along the beam), `n_normal` fixed-interface modes
-    /// and the damping ratio `damping_ratio`; also the frame's initial pose
-    /// `(x, y, phi)` [m, m, rad]: the first interface node's.
-    pub fn from_beam(beam: &BeamBody, interface: &[usize], n_normal: usize, damping_ratio: f64) -> Result<(Self, [f64; 3]), String> {
+    /// `interface` (node indices along the beam), the frame's reference
+    /// conditions `frame`, `n_normal` fixed-interface modes and the damping
+    /// ratio `damping_ratio`; also the frame's initial pose `(x, y, phi)` [m, m,
+    /// rad]: the first interface node's position, the angle of the chord or of its section.
+    pub fn from_beam(beam: &BeamBody, interface: &[usize], frame: FrameReference, n_normal: usize, damping_ratio: f64) -> Result<(Self, [f64; 3]), String> {
         let reference = beam.reference_coordinates();
-        let first = *interface.first().ok_or("a modal body needs at least one interface node (the first carries its frame)")?;
-        if first >= beam.n_nodes() {
-            return Err(format!("interface node {first} is not a node of the beam (it has {} nodes)", beam.n_nodes()));
+        if let Some(&node) = interface.iter().find(|&&node| node >= beam.n_nodes()) {
+            return Err(format!("interface node {node} is not a node of the beam (it has {} nodes)", beam.n_nodes()));
         }
-        let pose = [reference[3 * first], reference[3 * first + 1], reference[3 * first + 2]];
+        let positions: Vec<[f64; 2]> = reference.chunks_exact(3).map(|p| [p[0], p[1]]).collect();
+        let angles: Vec<f64> = reference.chunks_exact(3).map(|p| p[2]).collect();
+        let first = *interface.first().ok_or("a modal body needs at least one interface node (the first carries its frame)")?;
+        let pose = [reference[3 * first], reference[3 * first + 1], frame.frame_angle(interface, &positions, &angles)?];
         let (mass, stiffness) = beam.dense_mass_and_stiffness(&reference);
         // (the structure expressed in the frame: every node's translations turned by -phi)
         let (sin, cos) = pose[2].sin_cos();
@@ -146,7 +173,9 @@ impl ModalBody {
         });
         let local = |a: &DMatrix<f64>| rotation.transpose() * a * &rotation;
         let nodes: Vec<Vec2> = reference.chunks_exact(3).map(|p| Vec2::new(cos * (p[0] - pose[0]) + sin * (p[1] - pose[1]), -sin * (p[0] - pose[0]) + cos * (p[1] - pose[1]))).collect();
-        Ok((Self::from_finite_elements(&local(&mass), &local(&stiffness), &nodes, interface, n_normal, damping_ratio)?, pose))
+        let mut body = Self::from_finite_elements(&local(&mass), &local(&stiffness), &nodes, interface, frame, n_normal, damping_ratio)?;
+        body.source = Some(Box::new(SourceBeam { beam: beam.clone(), pose }));
+        Ok((body, pose))
     }
 
     /// Number of modes `m`.
@@ -174,9 +203,33 @@ impl ModalBody {
         &self.invariants
     }
 
-    /// Damping ratio of every mode of the body clamped at its frame node [-].
+    /// Damping ratio of every mode of the body held at its frame's reference conditions [-].
     pub fn damping_ratio(&self) -> f64 {
         self.damping_ratio
+    }
+
+    /// Adds stiffness-proportional damping `D += tau K_ee` with the retardation
+    /// time `tau` [s]: the linear form of a beam's strain-rate (Kelvin-Voigt)
+    /// damping of the same `tau`, so each mode gets the ratio `tau w / 2`.
+    pub fn add_stiffness_proportional_damping(&mut self, tau: f64) -> Result<(), String> {
+        if !(tau.is_finite() && tau >= 0.0) {
+            return Err(format!("the retardation time must be >= 0, got {tau}"));
+        }
+        self.retardation_time += tau;
+        for (d, k) in self.damping.iter_mut().zip(&self.stiffness) {
+            *d += tau * k;
+        }
+        Ok(())
+    }
+
+    /// Retardation time of the stiffness-proportional damping [s].
+    pub fn retardation_time(&self) -> f64 {
+        self.retardation_time
+    }
+
+    /// The frame's reference conditions.
+    pub fn frame_reference(&self) -> FrameReference {
+        self.reference
     }
 
     /// The interface nodes (the first carries the frame).
@@ -189,9 +242,11 @@ impl ModalBody {
         &self.fixed_interface_frequencies
     }
 
-    /// Angular frequencies of the reduced body clamped at its frame node, lowest first [rad/s].
-    pub fn clamped_frequencies(&self) -> &[f64] {
-        &self.clamped_frequencies
+    /// Angular frequencies of the reduced body held at its frame's reference
+    /// conditions (clamped at the first interface node, or simply supported
+    /// at the first two), lowest first [rad/s].
+    pub fn held_frequencies(&self) -> &[f64] {
+        &self.held_frequencies
     }
 
     /// The modal stiffness `K_ee` (m x m, row-major) [N/m per unit^2].
@@ -204,10 +259,11 @@ impl ModalBody {
         self.nodes[a]
     }
 
-    /// The lowest bending frequency [Hz] of the body clamped at its frame node:
-    /// above this spin rate a linear modal body (no geometric stiffening) diverges.
+    /// The lowest bending frequency [Hz] of the body held at its frame's
+    /// reference conditions: spun faster than this about its frame's origin, a
+    /// linear modal body (no geometric stiffening) diverges.
     pub fn first_bending_frequency(&self) -> Option<f64> {
-        self.clamped_frequencies.first().map(|w| w / (2.0 * std::f64::consts::PI))
+        self.held_frequencies.first().map(|w| w / (2.0 * std::f64::consts::PI))
     }
 
     /// Free-free natural frequencies [Hz] of the reduced body at rest (its three rigid modes left out).
@@ -221,6 +277,64 @@ impl ModalBody {
         stiffness.view_mut((3, 3), (m, m)).copy_from(&DMatrix::from_row_slice(m, m, &self.stiffness));
         let modes = vibration_modes(&mass, &stiffness, &[])?;
         Ok(modes.angular_frequencies.iter().skip(3).map(|w| w / (2.0 * std::f64::consts::PI)).collect())
+    }
+
+    /// The section of the reduced beam at node `a`, for strain recovery; `None`
+    /// for a body given by matrices (no elements to recover strains on).
+    pub fn node_section(&self, a: usize) -> Option<SectionSite> {
+        let beam = &self.source.as_ref()?.beam;
+        beam.site_at(beam.length * a as f64 / (beam.n_nodes() - 1) as f64).ok()
+    }
+
+    /// The strains' rows over the modes at `site`: axial [-], shear [-] and
+    /// curvature [1/m] per unit of each amplitude, `3 x m` row-major. They are
+    /// the reduced beam's linear strain-displacement relation at its unstressed
+    /// state (central differences of its element's strain recovery from the
+    /// reduced-rule points) times the element's mode rows: linear, as the
+    /// modes are. `None` for a body given by matrices (no elements).
+    pub fn strain_modes(&self, site: &SectionSite) -> Option<Vec<f64>> {
+        let source = self.source.as_ref()?;
+        let element = &source.beam.elements[site.element as usize];
+        let n = 3 * site.nodes as usize;
+        let m = self.n_modes();
+        let (sin, cos) = source.pose[2].sin_cos();
+        let length_step = 1e-6 * source.beam.length / source.beam.elements.len() as f64;
+        let mut rows = vec![0.0; 3 * m];
+        for c in 0..n {
+            let step = if c % 3 == 2 { 1e-6 } else { length_step };
+            let strains_at = |offset: f64| {
+                let mut q = [0.0; 9];
+                q[..n].copy_from_slice(&element.reference[..n]);
+                q[c] += offset;
+                let (s, _) = element.recovered_strains(&q[..n], None, site.xi);
+                [s.axial, s.shear, s.curvature]
+            };
+            let (plus, minus) = (strains_at(step), strains_at(-step));
+            // the element's coordinate c (inertial directions) per unit of each mode
+            let (rx, ry, rt) = self.rows(site.first as usize / 3 + c / 3);
+            for j in 0..m {
+                let per_mode = match c % 3 {
+                    0 => cos * rx[j] - sin * ry[j],
+                    1 => sin * rx[j] + cos * ry[j],
+                    _ => rt[j],
+                };
+                for k in 0..3 {
+                    rows[k * m + j] += (plus[k] - minus[k]) / (2.0 * step) * per_mode;
+                }
+            }
+        }
+        Some(rows)
+    }
+
+    /// Strains and elastic stress resultants `(N, Q, M)` [N, N, N m] at `site`
+    /// from its `strain_modes` ([`Self::strain_modes`]) and the amplitudes in
+    /// `q`. Modal damping is not a section stress and is left out. `None` for a
+    /// body given by matrices.
+    pub fn section_state(&self, site: &SectionSite, strain_modes: &[f64], q: &[f64]) -> Option<(BeamStrains, [f64; 3])> {
+        let section = &self.source.as_ref()?.beam.elements[site.element as usize].section;
+        let (m, eta) = (self.n_modes(), &q[3..]);
+        let strains = BeamStrains { axial: dot(&strain_modes[..m], eta), shear: dot(&strain_modes[m..2 * m], eta), curvature: dot(&strain_modes[2 * m..], eta) };
+        Some((strains, [section.axial_stiffness * strains.axial, section.shear_stiffness * strains.shear, section.bending_stiffness * strains.curvature]))
     }
 
     /// The interface node of a marker (its reference site: the frame's node).
@@ -535,10 +649,10 @@ impl ModalBody {
     }
 }
 
-/// The modes of the reduced body clamped at its frame node: angular
-/// frequencies [rad/s], and the modal damping `D = M V diag(2 zeta w) V^T M`
+/// The modes of the reduced body held at its frame's reference conditions:
+/// angular frequencies [rad/s], and the modal damping `D = M V diag(2 zeta w) V^T M`
 /// that gives each of them the damping ratio `zeta` (`V` mass-normalised).
-fn clamped_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, zeta: f64) -> Result<(Vec<f64>, DMatrix<f64>), String> {
+fn held_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, zeta: f64) -> Result<(Vec<f64>, DMatrix<f64>), String> {
     let m = mass.nrows();
     if m == 0 {
         return Ok((Vec::new(), DMatrix::zeros(0, 0)));

@@ -74,10 +74,13 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
 /// Output `which` of strain gauge `k` at the state `y`.
 fn gauge_value(model: &Model, k: usize, which: u8, y: &[f64]) -> f64 {
     let gauge = &model.gauges[k];
-    let BodyKind::Beam(beam) = &model.bodies[gauge.body.0 - 1].kind else { unreachable!("a strain gauge sits on a beam") };
     let address = &model.layout.bodies[gauge.body.0 - 1];
     let (q, v, _) = model.layout.split(y);
-    let (strains, resultants) = beam.section_state(&gauge.site, &q[address.q_range()], &v[address.v_range()]);
+    let (strains, resultants) = match &model.bodies[gauge.body.0 - 1].kind {
+        BodyKind::Beam(beam) => beam.section_state(&gauge.site, &q[address.q_range()], &v[address.v_range()]),
+        BodyKind::Modal(modal) => modal.section_state(&gauge.site, &gauge.strain_modes, &q[address.q_range()]).expect("a gauge on a modal body is compiled only when it was reduced from a beam"),
+        _ => unreachable!("a strain gauge sits on a beam or a modal body"),
+    };
     match which {
         0..=2 => resultants[which as usize],
         3 => strains.axial - gauge.fibre * strains.curvature,

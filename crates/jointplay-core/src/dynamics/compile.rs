@@ -147,7 +147,7 @@ impl<'s> Compiler<'s> {
         }
     }
 
-    /// A modal body: its body, coordinates, interface points and channels.
+    /// A modal body: its body, coordinates, interface nodes and points, and channels.
     fn modal_body(&mut self, loc: &str, b: &'s ModalBodySpec) {
         self.claim_name(&b.name, &format!("{loc}.name"));
         let Some(built) = build_modal_body(b, loc, &mut self.errors) else { return };
@@ -159,7 +159,7 @@ impl<'s> Compiler<'s> {
         let kind = BodyKind::Modal(Box::new(built.body));
         self.model.layout.push_body(&kind);
         self.model.bodies.push(Body { name: b.name.clone(), kind });
-        for (name, node, location) in built.interface {
+        for (name, node, location) in built.interface.into_iter().chain(built.points) {
             let marker = self.section_marker(index, Site::ModalNode(ModalNodeSite { node: node as u32 }), Vec2::zeros());
             self.name_point(&b.name, &name, marker, location);
         }
@@ -532,19 +532,29 @@ impl<'s> Compiler<'s> {
         }
     }
 
-    /// A strain gauge at a beam's point, with its channels.
+    /// A strain gauge at a point of a beam or modal body, with its channels.
     fn strain_gauge(&mut self, loc: &str, name: &str, point: &str, fibre: f64) {
         self.claim_name(name, &format!("{loc}.name"));
         let Some(marker) = self.point(point, format!("{loc}.point")) else { return };
         if !fibre.is_finite() {
             self.errors.push(format!("{loc}.fibre"), format!("must be finite, got {fibre}"));
         }
-        let Site::Section(site) = marker.site else {
-            self.errors.push(format!("{loc}.point"), format!("must be a point of a beam, got {point:?} on the rigid body {:?}", self.model.body_name(marker.body)));
-            return;
+        let (site, strain_modes) = match (marker.site, &self.model.bodies[marker.body.0 - 1].kind) {
+            (Site::Section(site), _) => (site, Vec::new()),
+            (Site::ModalNode(node), BodyKind::Modal(modal)) => match modal.node_section(node.node as usize).and_then(|site| Some((site, modal.strain_modes(&site)?))) {
+                Some(found) => found,
+                None => {
+                    self.errors.push(format!("{loc}.point"), format!("the modal body {:?} was given by matrices, without elements to recover strains on", self.model.body_name(marker.body)));
+                    return;
+                }
+            },
+            _ => {
+                self.errors.push(format!("{loc}.point"), format!("must be a point of a beam or of a modal body, got {point:?} on the rigid body {:?}", self.model.body_name(marker.body)));
+                return;
+            }
         };
         let index = self.model.gauges.len();
-        self.model.gauges.push(StrainGauge { name: name.to_string(), body: marker.body, site, fibre });
+        self.model.gauges.push(StrainGauge { name: name.to_string(), body: marker.body, site, fibre, strain_modes });
         for (q, (quantity, unit, description)) in StrainGauge::CHANNELS.iter().enumerate() {
             self.channel(name, quantity, unit, description.to_string(), Source::Gauge(index, q as u8));
         }

@@ -9,7 +9,7 @@
 
 use super::beam_tests::{model, run_slider_crank, spin_up_beam};
 use super::*;
-use crate::body::{ModalNodeSite, Site};
+use crate::body::{BodyKind, ModalNodeSite, Site};
 use crate::dynamics::frame::{Frame, Vec2};
 use crate::integrate::{IntegratorOptions, Method};
 
@@ -25,7 +25,7 @@ fn section_json(s: [f64; 5]) -> serde_json::Value {
 fn arm_json(length: f64, section: [f64; 5], elements: usize, interface: serde_json::Value, normal_modes: usize, damping_ratio: f64, angular_velocity: f64) -> serde_json::Value {
     serde_json::json!({"name": "arm", "start": [0.0, 0.0], "end": [length, 0.0], "section": section_json(section),
                        "mesh": {"order": "quadratic", "elements": elements, "element_length": null},
-                       "interface": interface, "normal_modes": normal_modes, "damping_ratio": damping_ratio,
+                       "interface": interface, "normal_modes": normal_modes, "damping_ratio": damping_ratio, "damping_time": 0.0, "points": [],
                        "velocity": [0.3, 0.0], "angular_velocity": angular_velocity})
 }
 
@@ -117,11 +117,14 @@ fn an_undamped_modal_pendulum_under_gravity_keeps_its_energy() {
 #[test]
 fn a_modal_cantilever_under_a_tip_load_settles_at_the_timoshenko_deflection() {
     // clamped at its frame node by a fixed joint, 10 N down at the free end, every mode
-    // critically damped: the rest deflection is P L^3 / (3 EI) + P L / (k G A) = 33.346 mm
+    // critically damped: the rest deflection is P L^3 / (3 EI) + P L / (k G A) = 33.346 mm;
+    // the frame clamped at the clamp, as a link clamped at one end wants
     let interface = serde_json::json!([{"name": "start", "arclength": 0.0}, {"name": "end", "arclength": 1.0}]);
+    let mut arm = arm_json(1.0, SECTION, 6, interface, 2, 1.0, 0.0);
+    arm["frame"] = serde_json::json!("clamped");
     let m = model(serde_json::json!({
         "name": "modal cantilever", "gravity": [0, 0], "ground_points": [{"name": "O", "position": [0, 0]}], "bodies": [], "beams": [],
-        "modal_bodies": [arm_json(1.0, SECTION, 6, interface, 2, 1.0, 0.0)],
+        "modal_bodies": [arm],
         "joints": [{"type": "fixed", "name": "clamp", "first": "ground.O", "second": "arm.start"}],
         "drivers": [],
         "forces": [{"type": "point_force", "name": "load", "point": "arm.end", "fx": {"kind": "constant", "value": 0.0}, "fy": {"kind": "constant", "value": -10.0}}],
@@ -245,7 +248,7 @@ fn slider_crank(modal_rod: bool, clearance: bool) -> Model {
                                        "velocity": [0, 3.75], "angular_velocity": -62.5, "points": [{"name": "start", "position": [-0.06, 0]}, {"name": "end", "position": [0.06, 0]}]});
     let modal = serde_json::json!({"name": "rod", "start": [0.05, 0.0], "end": [0.17, 0.0],
         "section": section_json([4.7e9, 1.6e9, 8.9e4, rho_a, rho_i]), "mesh": {"order": "quadratic", "elements": 4, "element_length": null},
-        "interface": [{"name": "start", "arclength": 0.0}, {"name": "end", "arclength": l}], "normal_modes": 2, "damping_ratio": 0.2,
+        "interface": [{"name": "start", "arclength": 0.0}, {"name": "end", "arclength": l}], "normal_modes": 2, "damping_ratio": 0.2, "damping_time": 0.0, "points": [],
         "velocity": [0.0, 7.5], "angular_velocity": -62.5});
     let crank = serde_json::json!({"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
         "points": [{"name": "O", "position": [-0.025, 0]}, {"name": "A", "position": [0.025, 0]}]});
@@ -303,4 +306,58 @@ fn a_stiff_modal_rod_reproduces_the_rigid_slider_crank_and_carries_a_clearance_j
     let contact = modal.channel("B.contact").unwrap();
     assert!(contact.iter().filter(|c| **c != 0.0).count() > 5, "the journal on the modal rod touches its bearing");
     assert!(worst_x < 0.0005, "slider x differs by {worst_x} m, more than the clearance");
+}
+
+/// The end slope [rad] at rest of a 1 m modal link (SECTION, 6 elements, both ends interface
+/// nodes, frame `frame`) pinned to the ground at its start, its end on a light slider along x
+/// pushed toward the start by `thrust` [N], bending under its own weight.
+fn end_slope_of_a_pinned_link_under_thrust(frame: &str, thrust: f64) -> f64 {
+    let interface = serde_json::json!([{"name": "start", "arclength": 0.0}, {"name": "end", "arclength": 1.0}]);
+    let mut arm = arm_json(1.0, SECTION, 6, interface, 4, 1.0, 0.0);
+    arm["frame"] = serde_json::json!(frame);
+    arm["velocity"] = serde_json::json!([0.0, 0.0]);
+    let m = model(serde_json::json!({
+        "name": "pinned link under thrust", "gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}, {"name": "line", "position": [0, 0]}],
+        "bodies": [{"name": "slider", "mass": 0.01, "inertia": 1e-6, "position": [1.0, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0, "points": [{"name": "B", "position": [0, 0]}]}],
+        "beams": [], "modal_bodies": [arm],
+        "joints": [{"type": "revolute", "name": "O", "first": "ground.O", "second": "arm.start"},
+                   {"type": "revolute", "name": "B", "first": "arm.end", "second": "slider.B"},
+                   {"type": "translational", "name": "guide", "first": "ground.line", "second": "slider.B", "axis": [1, 0]}],
+        "drivers": [],
+        "forces": [{"type": "point_force", "name": "thrust", "point": "slider.B", "fx": {"kind": "constant", "value": -thrust}, "fy": {"kind": "constant", "value": 0.0}}],
+        "sensors": []
+    }));
+    let mut ws = Workspace::new(&m);
+    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+    let options = SimulationOptions {
+        integrator: IntegratorOptions { method: Method::NumericalDifferentiation, max_order: 2, rtol: 1e-9, atol: 1e-12, output_step: Some(0.1), ..IntegratorOptions::default() },
+        ..SimulationOptions::default()
+    };
+    let outcome = simulate(&m, &mut state, 3.0, &options, None);
+    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    let body = m.bodies.iter().position(|b| matches!(b.kind, BodyKind::Modal(_))).unwrap();
+    let address = &m.layout.bodies[body];
+    let zeros = vec![0.0; address.nv];
+    let end = Site::ModalNode(ModalNodeSite { node: 12 });
+    m.bodies[body].kind.site_frame(&end, &state.coordinates()[address.q_range()], &zeros, &Frame::GROUND).angle
+}
+
+#[test]
+fn a_pinned_link_under_thrust_bends_as_linear_theory_says_in_the_chord_frame_not_in_the_clamped_one() {
+    // simply supported under its weight q = rho A g: the end section turns by q L^3 / (24 EI)
+    // (shear tilts the axis, not the section). A linear modal body has no geometric stiffening, so a thrust
+    // along the pins must leave that slope alone; the geometrically exact beam-column would
+    // steepen it by 3 (tan u - u) / u^3 = 1.43 at 300 N (u = L/2 sqrt(P/EI); Timoshenko and Gere).
+    let q = SECTION[3] * 9.81;
+    let linear = q / (24.0 * SECTION[2]);
+    let chord_free = end_slope_of_a_pinned_link_under_thrust("chord", 0.0);
+    let chord = end_slope_of_a_pinned_link_under_thrust("chord", 300.0);
+    // (seen: 7e-12 and 2e-11: the thrust stays along the chord frame's axis)
+    assert!((chord_free / linear - 1.0).abs() < 1e-8, "without thrust: {chord_free} rad vs {linear} rad");
+    assert!((chord / linear - 1.0).abs() < 1e-8, "under 300 N: {chord} rad vs {linear} rad");
+    // in a frame clamped at the first pin the thrust crosses the frame's axis in proportion to the
+    // deflection: a false geometric stiffness, neither linear nor the beam-column
+    // (seen: 0.75 of the linear slope)
+    let clamped = end_slope_of_a_pinned_link_under_thrust("clamped", 300.0);
+    assert!((clamped / linear - 1.0).abs() > 0.1, "clamped frame: {clamped} rad vs {linear} rad");
 }

@@ -161,12 +161,15 @@ pub struct Section {
 pub struct StrainGauge {
     /// Name (its channels are `<name>.<quantity>`).
     pub name: String,
-    /// The beam.
+    /// The beam or modal body.
     pub body: BodyIndex,
-    /// The section.
+    /// The section (of the beam a modal body was reduced from).
     pub site: SectionSite,
     /// Distance of the fibre from the axis along the section's direction `t_2` [m].
     pub fibre: f64,
+    /// On a modal body, the strains' rows over its modes
+    /// ([`crate::body::ModalBody::strain_modes`]); empty on a beam.
+    pub strain_modes: Vec<f64>,
 }
 
 impl StrainGauge {

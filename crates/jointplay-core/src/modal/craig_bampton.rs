@@ -1,29 +1,28 @@
 //! Craig-Bampton modes of a finite-element structure for a floating frame
-//! attached to its first interface node (Craig and Bampton, "Coupling of
+//! attached at its interface nodes (Craig and Bampton, "Coupling of
 //! substructures for dynamic analyses", AIAA J. 6(7), 1968, 1313-1319).
 //!
 //! Coordinates are the structure's nodal `(u_x, u_y, theta)`, node after node,
-//! in the body frame. The interface nodes' coordinates are the boundary set;
-//! those of the **first** interface node are held: the floating frame is
-//! attached there (its position and section angle are the frame's, the
-//! "tangent frame" of Shabana, *Dynamics of Multibody Systems*, its reference conditions),
-//! so the rigid-body motion is carried by the frame and the modes hold none.
-//! The mode set is
+//! in the body frame. The interface nodes' coordinates are the boundary set,
+//! less the three the frame's reference conditions hold
+//! ([`FrameReference`]): the rigid-body motion is carried by the frame and the
+//! modes hold none. The mode set is
 //!
-//! - **constraint modes** (static): a unit value of one coordinate of another
-//!   interface node, the other boundary coordinates and the first node held,
+//! - **constraint modes** (static): a unit value of one boundary coordinate,
+//!   the other boundary coordinates and the frame's three held,
 //!   the interior in static equilibrium, `u_I = -K_II^-1 K_IB`;
 //! - **fixed-interface normal modes**: `K_II x = w^2 M_II x` with every
-//!   interface node held, the lowest `n_normal`.
+//!   interface coordinate held, the lowest `n_normal`.
 //!
-//! With only the first node as interface the set is the structure's
-//! cantilever modes about that node. Constraint modes have unit amplitude
+//! With only the first node as interface (clamped frame) the set is the
+//! structure's cantilever modes about that node. Constraint modes have unit amplitude
 //! (their coordinate is the interface displacement [m] or rotation [rad]);
 //! normal modes are scaled to a largest nodal displacement of 1, so their
 //! amplitudes are in metres too.
 
 use nalgebra::DMatrix;
 
+use super::FrameReference;
 use crate::beam::vibration_modes;
 
 /// A Craig-Bampton mode set.
@@ -32,30 +31,34 @@ pub struct CraigBamptonModes {
     /// Mode shapes as columns over all nodal coordinates (constraint modes
     /// first, then normal modes) [m/unit, rad/unit].
     pub shapes: DMatrix<f64>,
-    /// Number of constraint modes (3 per interface node after the first).
+    /// Number of constraint modes (3 per interface node, less the frame's 3).
     pub n_constraint: usize,
+    /// The boundary coordinate of each constraint mode (nodal numbering).
+    pub boundary: Vec<usize>,
     /// Angular frequencies of the fixed-interface normal modes kept [rad/s].
     pub fixed_interface_frequencies: Vec<f64>,
 }
 
 /// The Craig-Bampton modes of the structure of mass `mass` and stiffness
-/// `stiffness` (dense, symmetric, `3 n_nodes` square) with the interface nodes
-/// `interface` (the first one carries the floating frame) and `n_normal`
-/// fixed-interface normal modes.
-pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize], n_normal: usize) -> Result<CraigBamptonModes, String> {
+/// `stiffness` (dense, symmetric, `3 n_nodes` square, in the body frame) with
+/// the interface nodes `interface` (the first one carries the floating
+/// frame's origin), the frame's reference conditions `reference` and
+/// `n_normal` fixed-interface normal modes.
+pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize], reference: FrameReference, n_normal: usize) -> Result<CraigBamptonModes, String> {
     let n = mass.nrows();
     check_sizes(mass, stiffness, interface)?;
+    let frame = reference.held_coordinates(interface)?;
     let held: Vec<usize> = interface.iter().flat_map(|&k| 3 * k..3 * k + 3).collect();
-    let boundary = &held[3..];
+    let boundary: Vec<usize> = held.iter().copied().filter(|i| !frame.contains(i)).collect();
     let interior: Vec<usize> = (0..n).filter(|i| !held.contains(i)).collect();
     if n_normal > interior.len() {
         return Err(format!("asked for {n_normal} normal modes, but the structure has only {} interior coordinates", interior.len()));
     }
-    let constraint = constraint_modes(stiffness, boundary, &interior)?;
+    let constraint = constraint_modes(stiffness, &boundary, &interior)?;
     let mut shapes = DMatrix::zeros(n, boundary.len() + n_normal);
     shapes.columns_mut(0, boundary.len()).copy_from(&constraint);
     if n_normal == 0 {
-        return Ok(CraigBamptonModes { shapes, n_constraint: boundary.len(), fixed_interface_frequencies: Vec::new() });
+        return Ok(CraigBamptonModes { shapes, n_constraint: boundary.len(), boundary, fixed_interface_frequencies: Vec::new() });
     }
     let normal = vibration_modes(mass, stiffness, &held)?;
     for j in 0..n_normal {
@@ -64,7 +67,8 @@ pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interf
         let scale = if largest > 0.0 { 1.0 / largest } else { 1.0 };
         shapes.column_mut(boundary.len() + j).copy_from(&(column * scale));
     }
-    Ok(CraigBamptonModes { shapes, n_constraint: boundary.len(), fixed_interface_frequencies: normal.angular_frequencies[..n_normal].to_vec() })
+    let n_constraint = boundary.len();
+    Ok(CraigBamptonModes { shapes, n_constraint, boundary, fixed_interface_frequencies: normal.angular_frequencies[..n_normal].to_vec() })
 }
 
 /// Square matrices of `3 n_nodes`, distinct interface nodes within the structure.
@@ -97,7 +101,7 @@ fn check_sizes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize
 }
 
 /// The static constraint modes of the boundary coordinates `boundary` (the
-/// first interface node and the other boundary coordinates held): columns over all coordinates.
+/// frame's held coordinates and the other boundary coordinates held): columns over all coordinates.
 fn constraint_modes(stiffness: &DMatrix<f64>, boundary: &[usize], interior: &[usize]) -> Result<DMatrix<f64>, String> {
     let n = stiffness.nrows();
     let mut modes = DMatrix::zeros(n, boundary.len());
