@@ -29,11 +29,31 @@ fn arm_json(length: f64, section: [f64; 5], elements: usize, interface: serde_js
                        "velocity": [0.3, 0.0], "angular_velocity": angular_velocity})
 }
 
-/// The tip (last node) of the modal body `body` at the positions `q` of the whole model [m].
-fn tip(m: &Model, body: usize, q: &[f64], last: u32) -> Vec2 {
+/// The frame of node `node` of the modal body `body` at the positions `q` of the whole model (at rest).
+fn node_frame(m: &Model, body: usize, q: &[f64], node: u32) -> Frame {
     let address = &m.layout.bodies[body];
     let zeros = vec![0.0; address.nv];
-    m.bodies[body].kind.site_frame(&Site::ModalNode(ModalNodeSite { node: last }), &q[address.q_range()], &zeros, &Frame::GROUND).position
+    m.bodies[body].kind.site_frame(&Site::ModalNode(ModalNodeSite { node }), &q[address.q_range()], &zeros, &Frame::GROUND)
+}
+
+/// The tip (node `last`) of the modal body `body` at the positions `q` of the whole model [m].
+fn tip(m: &Model, body: usize, q: &[f64], last: u32) -> Vec2 {
+    node_frame(m, body, q, last).position
+}
+
+/// `m` from its assembled start to `t_end` [s] by NDF of order 2 at `tolerances` (rtol, atol), sampled
+/// every `output_step` [s]: the final state and the trajectory (the run must not fail).
+fn settle(m: &Model, t_end: f64, tolerances: (f64, f64), output_step: f64) -> (State, Trajectory) {
+    let mut ws = Workspace::new(m);
+    let mut state = assemble(m, 0.0, &mut ws).unwrap();
+    let (rtol, atol) = tolerances;
+    let options = SimulationOptions {
+        integrator: IntegratorOptions { method: Method::NumericalDifferentiation, max_order: 2, rtol, atol, output_step: Some(output_step), ..IntegratorOptions::default() },
+        ..SimulationOptions::default()
+    };
+    let outcome = simulate(m, &mut state, t_end, &options, None);
+    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    (state, outcome.trajectory)
 }
 
 #[test]
@@ -130,21 +150,13 @@ fn a_modal_cantilever_under_a_tip_load_settles_at_the_timoshenko_deflection() {
         "forces": [{"type": "point_force", "name": "load", "point": "arm.end", "fx": {"kind": "constant", "value": 0.0}, "fy": {"kind": "constant", "value": -10.0}}],
         "sensors": []
     }));
-    let mut ws = Workspace::new(&m);
-    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
-    let options = SimulationOptions {
-        integrator: IntegratorOptions { method: Method::NumericalDifferentiation, max_order: 2, rtol: 1e-8, atol: 1e-11, output_step: Some(0.05), ..IntegratorOptions::default() },
-        ..SimulationOptions::default()
-    };
-    let outcome = simulate(&m, &mut state, 2.0, &options, None);
-    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    let (state, tr) = settle(&m, 2.0, (1e-8, 1e-11), 0.05);
     let (p, length, ei, ga) = (10.0, 1.0, SECTION[2], SECTION[1]);
     let expected = p * length * length * length / (3.0 * ei) + p * length / ga;
     let deflection = tip(&m, 0, state.coordinates(), 12);
     assert!((deflection.y + expected).abs() < 1e-5 * expected, "tip at {deflection:?} m, expected -{expected} m");
     assert!((deflection.x - length).abs() < 1e-9, "a linear modal body does not shorten under bending: {}", deflection.x);
     // the clamp carries the load and its moment P L
-    let tr = &outcome.trajectory;
     let (fy, moment) = (tr.channel("clamp.fy").unwrap(), tr.channel("clamp.moment").unwrap());
     assert!((fy.last().unwrap() - p).abs() < 1e-6 * p && (moment.last().unwrap() - p * length).abs() < 1e-6 * p * length, "reaction {fy:?} N, {moment:?} N m", fy = fy.last(), moment = moment.last());
 }
@@ -327,19 +339,9 @@ fn end_slope_of_a_pinned_link_under_thrust(frame: &str, thrust: f64) -> f64 {
         "forces": [{"type": "point_force", "name": "thrust", "point": "slider.B", "fx": {"kind": "constant", "value": -thrust}, "fy": {"kind": "constant", "value": 0.0}}],
         "sensors": []
     }));
-    let mut ws = Workspace::new(&m);
-    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
-    let options = SimulationOptions {
-        integrator: IntegratorOptions { method: Method::NumericalDifferentiation, max_order: 2, rtol: 1e-9, atol: 1e-12, output_step: Some(0.1), ..IntegratorOptions::default() },
-        ..SimulationOptions::default()
-    };
-    let outcome = simulate(&m, &mut state, 3.0, &options, None);
-    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    let (state, _) = settle(&m, 3.0, (1e-9, 1e-12), 0.1);
     let body = m.bodies.iter().position(|b| matches!(b.kind, BodyKind::Modal(_))).unwrap();
-    let address = &m.layout.bodies[body];
-    let zeros = vec![0.0; address.nv];
-    let end = Site::ModalNode(ModalNodeSite { node: 12 });
-    m.bodies[body].kind.site_frame(&end, &state.coordinates()[address.q_range()], &zeros, &Frame::GROUND).angle
+    node_frame(&m, body, state.coordinates(), 12).angle
 }
 
 #[test]
