@@ -31,7 +31,7 @@ mod modal;
 mod planar_rigid;
 
 pub use beam::{BeamBody, BeamMesh};
-pub use modal::{ModalBody, ModalNodeSite, MAX_MODES};
+pub use modal::{ModalBody, ModalNodeSite, Structure, MAX_MODES, MAX_STRUCTURE_NODES};
 pub use planar_rigid::PlanarRigidBody;
 
 use std::ops::Range;

@@ -31,10 +31,15 @@ use super::{channel, BeamBody, CoordinateChannels, SectionSite, Site};
 use crate::beam::{vibration_modes, BeamStrains};
 use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
 use crate::linalg::{cholesky_factor, cholesky_solve};
-use crate::modal::{craig_bampton_modes, FrameReference, InertiaInvariants};
+use crate::modal::{check_free_structure, craig_bampton_modes, FrameReference, InertiaInvariants};
 
 /// Most modes of one body: the hot loop keeps its vectors on the stack.
 pub const MAX_MODES: usize = 40;
+
+/// Most nodes of a structure given by matrices: its reduction is dense
+/// (factorisations and a symmetric eigenproblem of the interior, cubic in the
+/// size), 2.5 s at 400 nodes on one core of the development machine, 90 s at 1000.
+pub const MAX_STRUCTURE_NODES: usize = 400;
 
 /// Most coordinates of one body.
 const MAX_COORDINATES: usize = 3 + MAX_MODES;
@@ -44,6 +49,22 @@ const MAX_COORDINATES: usize = 3 + MAX_MODES;
 pub struct ModalNodeSite {
     /// The node (counted in the structure's order).
     pub node: u32,
+}
+
+/// A free planar finite-element structure in its own axes: mass and
+/// stiffness (dense, symmetric, over the nodal `(u_x, u_y, theta)` node after
+/// node), node positions [m] and section angles [rad] (zero for a structure
+/// whose rotations are counted from its rest state).
+#[derive(Clone, Copy, Debug)]
+pub struct Structure<'a> {
+    /// Mass matrix [kg, kg m, kg m^2].
+    pub mass: &'a DMatrix<f64>,
+    /// Stiffness matrix [N/m, N/rad, N m/rad].
+    pub stiffness: &'a DMatrix<f64>,
+    /// Node positions [m].
+    pub positions: &'a [[f64; 2]],
+    /// Section angles of the nodes [rad].
+    pub angles: &'a [f64],
 }
 
 /// The beam a modal body was reduced from, with its frame's pose then
@@ -153,14 +174,30 @@ impl ModalBody {
     /// rad]: the first interface node's position, the angle of the chord or of its section.
     pub fn from_beam(beam: &BeamBody, interface: &[usize], frame: FrameReference, n_normal: usize, damping_ratio: f64) -> Result<(Self, [f64; 3]), String> {
         let reference = beam.reference_coordinates();
-        if let Some(&node) = interface.iter().find(|&&node| node >= beam.n_nodes()) {
-            return Err(format!("interface node {node} is not a node of the beam (it has {} nodes)", beam.n_nodes()));
-        }
         let positions: Vec<[f64; 2]> = reference.chunks_exact(3).map(|p| [p[0], p[1]]).collect();
         let angles: Vec<f64> = reference.chunks_exact(3).map(|p| p[2]).collect();
-        let first = *interface.first().ok_or("a modal body needs at least one interface node (the first carries its frame)")?;
-        let pose = [reference[3 * first], reference[3 * first + 1], frame.frame_angle(interface, &positions, &angles)?];
         let (mass, stiffness) = beam.dense_mass_and_stiffness(&reference);
+        let structure = Structure { mass: &mass, stiffness: &stiffness, positions: &positions, angles: &angles };
+        let (mut body, pose) = Self::from_structure(&structure, interface, frame, n_normal, damping_ratio)?;
+        body.source = Some(Box::new(SourceBeam { beam: beam.clone(), pose }));
+        Ok((body, pose))
+    }
+
+    /// The modal body of a free structure `structure` with the interface nodes
+    /// `interface`, the frame's reference conditions `frame`, `n_normal`
+    /// fixed-interface modes and the damping ratio `damping_ratio`; also the
+    /// frame's pose `(x, y, phi)` [m, m, rad] in the structure's axes.
+    pub fn from_structure(structure: &Structure, interface: &[usize], frame: FrameReference, n_normal: usize, damping_ratio: f64) -> Result<(Self, [f64; 3]), String> {
+        let Structure { mass, stiffness, positions, angles } = *structure;
+        if positions.len() != angles.len() || 3 * positions.len() != mass.nrows() {
+            return Err(format!("{} node positions and {} section angles for matrices of size {}", positions.len(), angles.len(), mass.nrows()));
+        }
+        if let Some(&node) = interface.iter().find(|&&node| node >= positions.len()) {
+            return Err(format!("interface node {node} is not a node of the structure (it has {} nodes, from 0)", positions.len()));
+        }
+        check_free_structure(stiffness, positions)?;
+        let first = *interface.first().ok_or("a modal body needs at least one interface node (the first carries its frame)")?;
+        let pose = [positions[first][0], positions[first][1], frame.frame_angle(interface, positions, angles)?];
         // (the structure expressed in the frame: every node's translations turned by -phi)
         let (sin, cos) = pose[2].sin_cos();
         let n = mass.nrows();
@@ -172,9 +209,8 @@ impl ModalBody {
             _ => 0.0,
         });
         let local = |a: &DMatrix<f64>| rotation.transpose() * a * &rotation;
-        let nodes: Vec<Vec2> = reference.chunks_exact(3).map(|p| Vec2::new(cos * (p[0] - pose[0]) + sin * (p[1] - pose[1]), -sin * (p[0] - pose[0]) + cos * (p[1] - pose[1]))).collect();
-        let mut body = Self::from_finite_elements(&local(&mass), &local(&stiffness), &nodes, interface, frame, n_normal, damping_ratio)?;
-        body.source = Some(Box::new(SourceBeam { beam: beam.clone(), pose }));
+        let nodes: Vec<Vec2> = positions.iter().map(|p| Vec2::new(cos * (p[0] - pose[0]) + sin * (p[1] - pose[1]), -sin * (p[0] - pose[0]) + cos * (p[1] - pose[1]))).collect();
+        let body = Self::from_finite_elements(&local(mass), &local(stiffness), &nodes, interface, frame, n_normal, damping_ratio)?;
         Ok((body, pose))
     }
 

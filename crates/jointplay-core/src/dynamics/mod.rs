@@ -56,4 +56,6 @@ mod beam_tests;
 #[cfg(test)]
 mod modal_tests;
 #[cfg(test)]
+mod modal_matrices_tests;
+#[cfg(test)]
 mod jacobian_tests;

@@ -23,8 +23,8 @@ fn section_json(s: [f64; 5]) -> serde_json::Value {
 
 /// A modal body `arm` from (0, 0) to (`length`, 0) of `elements` quadratic elements.
 fn arm_json(length: f64, section: [f64; 5], elements: usize, interface: serde_json::Value, normal_modes: usize, damping_ratio: f64, angular_velocity: f64) -> serde_json::Value {
-    serde_json::json!({"name": "arm", "start": [0.0, 0.0], "end": [length, 0.0], "section": section_json(section),
-                       "mesh": {"order": "quadratic", "elements": elements, "element_length": null},
+    serde_json::json!({"name": "arm", "structure": {"from": "beam", "start": [0.0, 0.0], "end": [length, 0.0], "section": section_json(section),
+                       "mesh": {"order": "quadratic", "elements": elements, "element_length": null}},
                        "interface": interface, "normal_modes": normal_modes, "damping_ratio": damping_ratio, "damping_time": 0.0, "points": [],
                        "velocity": [0.3, 0.0], "angular_velocity": angular_velocity})
 }
@@ -258,8 +258,8 @@ fn slider_crank(modal_rod: bool, clearance: bool) -> Model {
     let (l, rho_a, rho_i) = (0.12, 1.75, 3.3e-5);
     let rigid_rod = serde_json::json!({"name": "rod", "mass": rho_a * l, "inertia": rho_a * l * l * l / 12.0 + rho_i * l, "position": [0.11, 0], "angle": 0,
                                        "velocity": [0, 3.75], "angular_velocity": -62.5, "points": [{"name": "start", "position": [-0.06, 0]}, {"name": "end", "position": [0.06, 0]}]});
-    let modal = serde_json::json!({"name": "rod", "start": [0.05, 0.0], "end": [0.17, 0.0],
-        "section": section_json([4.7e9, 1.6e9, 8.9e4, rho_a, rho_i]), "mesh": {"order": "quadratic", "elements": 4, "element_length": null},
+    let modal = serde_json::json!({"name": "rod", "structure": {"from": "beam", "start": [0.05, 0.0], "end": [0.17, 0.0],
+        "section": section_json([4.7e9, 1.6e9, 8.9e4, rho_a, rho_i]), "mesh": {"order": "quadratic", "elements": 4, "element_length": null}},
         "interface": [{"name": "start", "arclength": 0.0}, {"name": "end", "arclength": l}], "normal_modes": 2, "damping_ratio": 0.2, "damping_time": 0.0, "points": [],
         "velocity": [0.0, 7.5], "angular_velocity": -62.5});
     let crank = serde_json::json!({"name": "crank", "mass": 0.3, "inertia": 1e-4, "position": [0.025, 0.0], "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
