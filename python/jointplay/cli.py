@@ -205,14 +205,17 @@ def _beam_table(spec: dict, described: dict, frequencies: dict) -> Table:
 
 
 def _modal_table(spec: dict, described: dict) -> Table:
-    """Each modal body's reduction and its first bending frequency (held at its frame's reference conditions), the
-    spin above which a linear modal body diverges."""
-    t = Table("modal body", "mass", "nodes", "interface", "frame", "modes", "damping ratio", "first bending (Hz)",
-              title="modal bodies: Craig-Bampton reduction and first bending frequency")
+    """Each modal body's reduction and the lowest frequencies of the reduced body held at its frame's reference
+    conditions; the first is the spin above which a linear modal body diverges."""
+    t = Table("modal body", "from", "mass", "nodes", "interface", "frame", "modes", "damping", "held (Hz)",
+              title="modal bodies: Craig-Bampton reduction; lowest frequencies held at the frame's reference "
+                    "conditions (the first: the spin limit)")
     for b in spec["modal_bodies"]:
         d = described[b["name"]]
-        t.add_row(b["name"], _fmt(d["mass"], "kg"), str(d["nodes"]), ", ".join(node["name"] for node in b["interface"]),
-                  d["frame"], str(d["modes"]), f"{d['damping_ratio']:g}", _fmt(d["first_bending_frequency"], ""))
+        lowest = ", ".join(f"{f:.4g}" for f in d["held_frequencies"][:3])
+        t.add_row(b["name"], b["structure"]["from"], _fmt(d["mass"], "kg"), str(d["nodes"]),
+                  ", ".join(node["name"] for node in b["interface"]), d["frame"], str(d["modes"]),
+                  f"{d['damping_ratio']:g}", lowest)
     return t
 
 

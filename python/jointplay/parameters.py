@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import operator
 from dataclasses import dataclass
+from dataclasses import replace as _replace
 from typing import Any
 
 from ._core import MAX_REYNOLDS_GRID_NODES as _MAX_GRID_NODES
@@ -50,10 +51,12 @@ REQUIRED: Any = _Required()
 #: ``points`` (named points), ``grid`` (cells of the Reynolds solver), ``size`` (bytes), ``list`` (a list of
 #: quantities; ``of`` is their kind, or ``"powers"`` for polynomial coefficients), ``variant`` (a nested table
 #: of the family ``of`` of :data:`VARIANTS`, chosen by its tag: a beam's section), ``arclengths`` (named points
-#: of a beam by their arclength). Inside a function of time, ``value`` and ``rate`` stand for the kind the
+#: of a beam by their arclength), ``nodes`` (named nodes of a modal body: arclengths on a beam, node numbers
+#: with matrices), ``matrix`` (a matrix or a list of node positions from a file or given
+#: inline, read by :mod:`jointplay.modelfile.matrices`). Inside a function of time, ``value`` and ``rate`` stand for the kind the
 #: function prescribes and its rate per second.
 STRUCTURED = ("vector", "point", "body", "joint", "text", "flag", "count", "choice", "function", "law", "table",
-              "points", "grid", "size", "list", "value", "rate", "variant", "arclengths")
+              "points", "grid", "size", "list", "value", "rate", "variant", "arclengths", "nodes", "matrix")
 
 
 @dataclass(frozen=True, eq=False)
@@ -670,18 +673,51 @@ BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reiss
           in_spec=False),
 ))
 
-MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating frame plus Craig-Bampton modes of a "
-                   "straight beam of jointplay's elements (section, material and mesh as a beam's), with linear modes "
-                   "and no geometric stiffening; its named points are its interface nodes "
+_FROM_BEAM = "none (a body given by `matrices`)"
+
+MODAL_MATRICES = Table("matrices", "A planar structure from another finite-element code: its mass and stiffness "
+                       "matrices over the coordinates (u_x, u_y, theta) of node 0, then node 1, ..., in the "
+                       "structure's own axes, and its nodes' positions there, in one consistent set of units with "
+                       "time in seconds (the force unit is the mass unit times the length unit per s^2: t, mm, s "
+                       "give N). Each is a file, by its path from the model file's folder, or the values themselves "
+                       "(as `Model.to_toml` writes them).", (
+    Param("mass", "matrix", "mass matrix: a Matrix Market file (`.mtx`, coordinate or array, general or symmetric), "
+          "a NumPy array (`.npy`) or a SciPy sparse matrix (`.npz`); or `{ size, rows, columns, values }`, the "
+          "entries from 0, repeated ones added", example='a file, e.g. "link.mass.mtx"'),
+    Param("stiffness", "matrix", "stiffness matrix of the free (unsupported) structure, as `mass`",
+          example='a file, e.g. "link.stiffness.mtx"'),
+    Param("nodes", "matrix", "node positions, one row `x y` per node: a `.npy`, `.mtx`, or a text file (`.csv`, "
+          "`.txt`: numbers apart by commas or spaces, `#` comments); or a list of pairs",
+          example='a file, e.g. "link.nodes.csv"'),
+    Param("length_unit", "text", "unit of lengths in the files (node positions; the matrices' rotational "
+          "coordinates follow)", "m", of="a unit of length", why="SI"),
+    Param("mass_unit", "text", "unit of mass in the files (`t` with `mm`)", "kg", of="a unit of mass", why="SI"),
+))
+
+MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating frame plus Craig-Bampton modes, "
+                   "with linear modes and no geometric stiffening, of a straight beam of jointplay's elements "
+                   "(section, material and mesh as a beam's) or of a structure given by `matrices` from another "
+                   "finite-element code; its named points are its interface nodes and `points` "
                    "(docs/theory/modal-body.md).", (
-    *(BEAM[key] for key in ("start", "end", "section", "material", "order", "elements", "element_length")),
-    Param("interface", "arclengths", "interface nodes by arclength from the first end, each at a node of the mesh: "
-          '`interface = { start = "0 mm", end = "300 mm" }`; the first carries the body\'s frame, the others get '
-          "static constraint modes; joints attach to `\"<body>.<node>\"`", {},
-          default_text="the two ends, named `start` and `end`"),
-    Param("points", "arclengths", "other named points by arclength from the first end, each at a node of the mesh: "
-          '`points = { mid = "150 mm" }`; forces and strain gauges attach there (joints belong at interface nodes)',
-          {}),
+    *(_replace(BEAM[key], default=None, default_text=_FROM_BEAM) for key in ("start", "end", "section")),
+    BEAM["material"], BEAM["order"],
+    *(_replace(BEAM[key], default_text=BEAM[key].default_text.removesuffix(")") + ", or `matrices`)")
+      for key in ("elements", "element_length")),
+    Param("matrices", "table", "the structure's mass and stiffness matrices and nodes from another finite-element "
+          'code, instead of a beam: `matrices = { mass = "link.mass.mtx", stiffness = "link.stiffness.mtx", '
+          'nodes = "link.nodes.csv", length_unit = "mm", mass_unit = "t" }`', None, of=MODAL_MATRICES, apart=True,
+          default_text="none (a beam: give `start`, `end`, `section`)"),
+    Param("position", "vector", "with `matrices`: where the origin of the structure's axes is in the model at the "
+          "start", (0.0, 0.0), of="length"),
+    Param("angle", "angle", "with `matrices`: angle of the structure's axes in the model at the start", 0.0),
+    Param("interface", "nodes", "interface nodes, named: by arclength from the first end on a beam, each at a "
+          'node of the mesh (`interface = { start = "0 mm", end = "300 mm" }`), by node number from 0 with '
+          "`matrices` (`interface = { A = 0, B = 12 }`); the first carries the body's frame, the others get static "
+          "constraint modes; joints attach to `\"<body>.<node>\"`", {},
+          default_text="on a beam, the two ends, named `start` and `end`; with `matrices`, required"),
+    Param("points", "nodes", "other named nodes, as `interface` gives them (`points = { mid = \"150 mm\" }` "
+          "on a beam, `points = { C = 6 }` with `matrices`); forces and strain gauges attach there (joints belong "
+          "at interface nodes; strain gauges need a beam)", {}),
     Param("frame", "choice", "reference conditions of the body's frame: `chord` (origin at the first interface "
           "node, x axis through the second: simply supported modes, for a link pinned at two points) or `clamped` "
           "(origin and axes on the first interface node's section: cantilever modes, for a link clamped at one end)",
@@ -841,5 +877,5 @@ def all_tables() -> list[Table]:
     """Every table defined here, each variant once (the tests check each against the schema, the builder
     and the writer)."""
     laws = [t for tables in LAWS.values() for t in variants(tables)]
-    return [MODEL, GROUND, BODY, BEAM, MODAL_BODY, BEAM_MATERIAL, *variants(BEAM_SECTIONS), *variants(JOINTS), MATERIAL,
+    return [MODEL, GROUND, BODY, BEAM, MODAL_BODY, MODAL_MATRICES, BEAM_MATERIAL, *variants(BEAM_SECTIONS), *variants(JOINTS), MATERIAL,
             LUBRICATION, *laws, DRIVER, *variants(FUNCTIONS), *variants(FORCES), *variants(SENSORS), SIMULATION]

@@ -232,6 +232,8 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
                 e.set_item("damping_ratio", modal.damping_ratio())?;
                 e.set_item("damping_time", modal.retardation_time())?;
                 e.set_item("first_bending_frequency", modal.first_bending_frequency())?;
+                let held: Vec<f64> = modal.held_frequencies().iter().map(|w| w / std::f64::consts::TAU).collect();
+                e.set_item("held_frequencies", held)?;
             }
         }
         bodies.append(e)?;

@@ -246,6 +246,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bearing::reynolds_solve, m)?)?;
     m.add_function(wrap_pyfunction!(bearing::steady_bearing, m)?)?;
     bearing::add_constants(m)?;
+    m.add("MAX_STRUCTURE_NODES", jointplay_core::body::MAX_STRUCTURE_NODES)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -71,7 +71,7 @@ def load(path: str | Path, overrides: list[str] | dict[str, Any] | None = None, 
     or ``{"joints.B.clearance": "0.1 mm"}``) applied first. With ``check`` the initial configuration is
     assembled too, so an impossible geometry is reported here. Raises ModelError."""
     doc = read_document(path)
-    model = from_document(doc, overrides, name=Path(path).stem, check=check)
+    model = from_document(doc, overrides, name=Path(path).stem, check=check, base=Path(path).parent)
     model.source_file = str(path)  # for the results file's model_file attribute
     return model
 
@@ -82,13 +82,15 @@ def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, nam
     return from_document(parse_text(text), overrides, name=name, check=check)
 
 
-def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check: bool = True):
-    """A Model from an already parsed document."""
+def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check: bool = True,
+                  base: Path | None = None):
+    """A Model from an already parsed document; files it names (a modal body's matrices) are found from
+    ``base`` (default: the working folder)."""
     from ..model import Model
 
     if overrides:
         doc = apply_overrides(doc, overrides)
-    builder = Builder(doc, default_name=name).run()
+    builder = Builder(doc, default_name=name, base=base).run()
     spec, simulation = builder.result()
     model = Model.from_spec(spec)
     model.simulation = simulation

@@ -139,7 +139,7 @@ def modal_body(table, name: str, values: dict[str, Any], where: str, hint: str =
 
     raw = {key: value for key, value in values.items() if value is not None}
     builder = Builder({}, check_references=False)
-    named = (builder.interface_nodes(raw, where), builder.arclengths(raw.get("points", {}), join(where, "points")))
+    named = builder.modal_nodes(raw, where)
     t = builder.validate(ModalBodyTable, raw, where)
     spec = None if t is None else builder.modal_body(name, where, t, raw, named)
     if builder.problems or spec is None:

@@ -10,13 +10,14 @@ nothing refers to). The core compiles and assembles afterwards
 from __future__ import annotations
 
 import math
+from pathlib import Path
 from typing import Any
 
 from pydantic import ValidationError
 from pydantic_core import PydanticCustomError
 
 from .. import parameters as p
-from .._core import MAX_REYNOLDS_GRID_NODES
+from .._core import MAX_REYNOLDS_GRID_NODES, MAX_STRUCTURE_NODES
 from ..errors import ModelError, Problem
 from ..units import DECLARABLE, UnitError, declare_unit, model_file_units
 from . import schema as s
@@ -30,8 +31,10 @@ _FAILED = object()  # a value that could not be read (its problems are reported)
 class Builder:
     """Validates one document; ``spec`` and ``simulation`` hold the result, ``problems`` what is wrong."""
 
-    def __init__(self, doc: dict, default_name: str = p.DEFAULT_NAME, check_references: bool = True):
+    def __init__(self, doc: dict, default_name: str = p.DEFAULT_NAME, check_references: bool = True,
+                 base: Path | None = None):
         self.doc = doc
+        self.base = Path.cwd() if base is None else base  # where files named in the model are found
         self.check_references = check_references  # False for the Python builder: the core checks them
         self.default_name = default_name
         self.problems: list[Problem] = []
@@ -491,8 +494,7 @@ class Builder:
         for name, where, raw in self.entries("modal_bodies"):
             self.claim(name, where)
             table = self.validate(s.ModalBodyTable, raw, where)
-            stations = self.interface_nodes(raw, where)
-            points = self.arclengths(raw.get("points", {}), join(where, "points"))
+            stations, points = self.modal_nodes(raw, where)
             self.points.setdefault(name, [station["name"] for station in (*stations, *points)])
             self.flexible_names.add(name)
             if table is None:
@@ -503,8 +505,30 @@ class Builder:
             if body is not None:
                 self.spec.setdefault("modal_bodies", []).append(body)
 
+    def modal_nodes(self, raw: dict, where: str) -> tuple[list[dict], list[dict]]:
+        """A modal body's interface nodes and other points as the core's lists: by arclength on a beam
+        (interface ``start`` and ``end`` by default), by node number with ``matrices``."""
+        if raw.get("matrices") is None:
+            return self.interface_nodes(raw, where), self.arclengths(raw.get("points", {}), join(where, "points"))
+        if not raw.get("interface"):
+            self.problem(join(where, "interface"), "missing required value: a body given by matrices names its "
+                                                   "interface nodes by number, e.g. { A = 0, B = 12 }")
+        return (self.node_numbers(raw.get("interface") or {}, join(where, "interface")),
+                self.node_numbers(raw.get("points", {}), join(where, "points")))
+
+    def node_numbers(self, raw: Any, where: str) -> list[dict]:
+        """Named nodes of a structure given by matrices, ``{ A = 0, B = 12 }``, as the core's list."""
+        out = []
+        for name, location, value in self.named_points(raw, where, "node numbers, e.g. { A = 0, B = 12 }"):
+            if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+                self.problem(location, f"must be a node number (a whole number from 0: the row of the node in "
+                                       f"`nodes`), got {value!r}")
+                continue
+            out.append({"name": name, "node": value})
+        return out
+
     def interface_nodes(self, raw: dict, where: str) -> list[dict]:
-        """A modal body's interface nodes by arclength (``start`` and ``end`` by default), as the core's list;
+        """A modal beam's interface nodes by arclength (``start`` and ``end`` by default), as the core's list;
         ``end``'s default arclength is filled in by :meth:`modal_body` once the length is known."""
         given = raw.get("interface") or {"start": 0.0, "end": None}
         out = []
@@ -523,6 +547,31 @@ class Builder:
         """The core's dict of a validated modal body table with its interface nodes and points ``named``; None
         after adding problems."""
         stations, points = named
+        if t.matrices is None:
+            structure = self.modal_beam(where, t, raw, named)
+        else:
+            structure = self.modal_matrices(where, t, raw)
+        if structure is None:
+            return None
+        return {"name": name, "structure": structure, "interface": stations, "points": points, "frame": t.frame,
+                "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
+                "damping_time": float(t.damping_time),
+                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity)}
+
+    def modal_beam(self, where: str, t: Strict, raw: dict, named: tuple[list[dict], list[dict]]) -> dict | None:
+        """The core's structure of a modal body reduced from a beam; None after adding problems."""
+        missing = [key for key in ("start", "end", "section") if getattr(t, key) is None]
+        for key in missing:
+            self.problem(join(where, key), f"missing required value: {p.MODAL_BODY[key].example} (or give "
+                                           "`matrices` for a structure from another finite-element code)")
+        if t.position != (0.0, 0.0) or t.angle != 0.0:
+            key = "position" if t.position != (0.0, 0.0) else "angle"
+            self.problem(join(where, key), "places a structure given by `matrices`; a beam is placed by `start` "
+                                           "and `end`: remove it")
+            return None
+        if missing:
+            return None
+        stations, points = named
         length = math.dist(t.start, t.end)
         for station in stations:
             if station["arclength"] is None:
@@ -531,12 +580,72 @@ class Builder:
         if geometry is None:
             return None
         section, mesh = geometry
-        return {"name": name, "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
-                "section": section, "mesh": mesh,
-                "interface": [{"name": station["name"], "arclength": station["arclength"]} for station in stations],
-                "points": points, "frame": t.frame, "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
-                "damping_time": float(t.damping_time),
-                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity)}
+        return {"from": "beam", "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
+                "section": section, "mesh": mesh}
+
+    def modal_matrices(self, where: str, t: Strict, raw: dict) -> dict | None:
+        """The core's structure of a modal body given by matrices (read from files or given), in SI units;
+        None after adding problems."""
+        from . import matrices as mx
+
+        for key in ("start", "end", "section", "material", "elements", "element_length"):
+            if getattr(t, key) is not None:
+                self.problem(join(where, key), "is not used by a body given by `matrices` (its nodes, `position` "
+                                               "and `angle` place it); remove it")
+        at = join(where, "matrices")
+        given = t.matrices
+        if not isinstance(given, dict):
+            self.problem(at, f"must be a table such as {p.MODAL_BODY['matrices'].doc.split(': ', 1)[1]}, "
+                             f"got {given!r}")
+            return None
+        table = p.MODAL_MATRICES
+        for key in given:
+            if key not in table.keys():
+                self.problem(join(at, key), f"unknown key{did_you_mean(key, table.keys())}; keys: "
+                                            f"{', '.join(table.keys())}")
+        for key in ("mass", "stiffness", "nodes"):
+            if given.get(key) is None:
+                self.problem(join(at, key), f"missing required value: {table[key].example}")
+        read = {}
+        readers = {"mass": mx.read_matrix, "stiffness": mx.read_matrix, "nodes": mx.read_nodes}
+        units = {"length_unit": "length", "mass_unit": "mass"}
+        for key, reader in readers.items():
+            try:
+                read[key] = None if given.get(key) is None else reader(given[key], self.base)
+            except mx.MatrixError as exc:
+                self.problem(join(at, key), str(exc))
+        for key, kind in units.items():
+            try:
+                read[key] = mx.unit_factor(given.get(key, table.default(key)), kind)
+            except mx.MatrixError as exc:
+                self.problem(join(at, key), str(exc))
+        fits = read.get("nodes") is not None and self.structure_fits(read, at)
+        if not fits or len(read) < len(readers) + len(units) or any(v is None for v in read.values()):
+            return None
+        length, mass = read["length_unit"], read["mass_unit"]
+        return {"from": "matrices", "mass": mx.core_entries(mx.in_si(read["mass"], length, mass)),
+                "stiffness": mx.core_entries(mx.in_si(read["stiffness"], length, mass)),
+                "nodes": (read["nodes"] * length).tolist(),
+                "position": [float(v) for v in t.position], "angle": float(t.angle)}
+
+    def structure_fits(self, read: dict, at: str) -> bool:
+        """The matrices are three coordinates per node, within the core's size for a structure."""
+        n = read["nodes"].shape[0]
+        if n > MAX_STRUCTURE_NODES:
+            self.problem(join(at, "nodes"), f"{n} nodes: a structure given by matrices has at most "
+                                            f"{MAX_STRUCTURE_NODES} (its reduction is dense); reduce it in its own "
+                                            "code first")
+            return False
+        fits = True
+        for key in ("mass", "stiffness"):
+            if read.get(key) is None:
+                continue
+            size = read[key].shape[0]
+            if size != 3 * n:
+                self.problem(join(at, key), f"must be {3 * n} x {3 * n}: three coordinates (u_x, u_y, theta) for "
+                                            f"each of the {n} nodes, got {size} x {size}")
+                fits = False
+        return fits
 
     def beam_material(self, t: Strict, section: dict | None, where: str) -> dict | None | bool:
         """The core's material of a beam: None for a section given by its resultants, False after problems."""

@@ -45,6 +45,8 @@ def kind_text(param: p.Param) -> str:
         "table": lambda: f"table: {of.name.replace('_', ' ')} (below)",
         "variant": lambda: f"table: a {of.replace('_', ' ')} (below)",
         "arclengths": lambda: "table of named lengths [m]",
+        "nodes": lambda: "table of named lengths [m] (a beam) or node numbers (`matrices`)",
+        "matrix": lambda: "file name, or the values",
         "function": lambda: ("function of time: an angle [rad] or a length [m]" if of == "coordinate"
                              else f"function of time: {_quantity(of)}"),
         "value": lambda: "value", "rate": lambda: "value per second",
@@ -118,6 +120,8 @@ def text() -> str:
               *_family(p.BEAM_SECTIONS, "####"),
               table_text(p.BEAM_MATERIAL, "### Beam materials\n\n`material = { ... }` of a beam."),
               table_text(p.MODAL_BODY, "## `[modal_bodies.NAME]`\n\n`section` and `material` as a beam's."),
+              table_text(p.MODAL_MATRICES, "### Structures given by matrices\n\n`matrices = { ... }` of a modal "
+                                           "body (docs/theory/modal-body.md)."),
               "## `[joints.NAME]`\n\nEvery joint has a `type`.",
               *_family(p.JOINTS, "###"),
               "## Tables inside an element",

@@ -88,7 +88,7 @@ def field_default(param: p.Param, sparse: bool, value: Kind | None = None) -> An
         return _q(param.default, kind)
     if param.kind == "table" and not param.apart:
         return table_class(param.of).model_validate(param.default)
-    if param.kind in ("points", "arclengths"):
+    if param.kind in ("points", "arclengths", "nodes"):
         return Field(default_factory=dict)
     return param.default
 

@@ -141,6 +141,8 @@ def _value_of(param: p.Param, value: Any) -> Any:
         return _points(value)
     if param.kind == "arclengths":
         return {name: quantity(arclength, "length") for name, arclength in value.items()}
+    if param.kind == "nodes":  # by arclength on a beam, by node number (a whole number) with matrices
+        return {name: v if isinstance(v, int) else quantity(v, "length") for name, v in value.items()}
     if param.kind == "flag":
         return bool(value)
     return value
@@ -156,9 +158,21 @@ def _beam(beam: dict) -> dict:
 
 
 def _modal_body(body: dict) -> dict:
-    """A modal body's table: section, material and mesh as a beam's, its interface nodes a table of arclengths."""
-    values = {**_beam_geometry(body), "interface": {node["name"]: node["arclength"] for node in body["interface"]},
-              "points": {point["name"]: point["arclength"] for point in body.get("points", [])},
+    """A modal body's table: a beam's section, material and mesh, its points a table of arclengths; or the
+    matrices of a structure written out in SI units (a model file that needs no other file), its points a
+    table of node numbers."""
+    structure = body["structure"]
+    if structure["from"] == "beam":
+        geometry = _beam_geometry(structure)
+        where = "arclength"
+    else:
+        matrices = {"mass": structure["mass"], "stiffness": structure["stiffness"], "nodes": structure["nodes"],
+                    "length_unit": "m", "mass_unit": "kg"}
+        geometry = {"matrices": matrices, "position": structure["position"], "angle": structure["angle"],
+                    "order": None}
+        where = "node"
+    values = {**geometry, "interface": {node["name"]: node[where] for node in body["interface"]},
+              "points": {point["name"]: point[where] for point in body.get("points", [])},
               "frame": body.get("frame"), "normal_modes": body["normal_modes"], "damping_ratio": body["damping_ratio"],
               "damping_time": body.get("damping_time", 0.0),
               "velocity": body["velocity"], "angular_velocity": body["angular_velocity"]}
