@@ -159,31 +159,26 @@ free = true
     assert "names its interface nodes by number" in found["modal_bodies.link.interface"]
 
 
-def test_what_the_core_finds_wrong_is_reported_at_the_file_s_keys(tmp_path: Path):
+def compile_problems(stiffness: np.ndarray, interface: dict, gauge: bool = False) -> dict[str, str]:
+    """The problems the core finds in the link of ``stiffness`` with ``interface`` (and a gauge at node 2)."""
+    m = jp.Model("link")
+    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": stiffness, "nodes": NODES},
+                     interface=interface, points={"C": 2})
+    if gauge:
+        m.add_strain_gauge("gauge", "link.C")
+    with pytest.raises(ModelError) as caught:
+        m.compile()
+    return {p.location: p.message for p in caught.value.problems}
+
+
+def test_what_the_core_finds_wrong_is_reported_at_the_file_s_keys():
     supported = STIFFNESS.copy()
     supported[1, 1] += 1e4  # a spring from node 0 to the ground
-    m = jp.Model("link")
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": supported, "nodes": NODES},
-                     interface={"A": 0, "B": 7})
-    with pytest.raises(ModelError) as caught:
-        m.compile()
-    found = {p.location: p.message for p in caught.value.problems}
+    found = compile_problems(supported, {"A": 0, "B": 7})
     assert "must be a node of the structure, from 0 to 4, got 7" in found["modal_bodies.link.interface.B.node"]
-    m = jp.Model("link")
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": supported, "nodes": NODES},
-                     interface={"A": 0, "B": 4}, points={"C": 2})
-    m.add_strain_gauge("gauge", "link.C")
-    with pytest.raises(ModelError) as caught:
-        m.compile()
-    found = {p.location: p.message for p in caught.value.problems}
+    found = compile_problems(supported, {"A": 0, "B": 4})
     assert "resists a translation along y" in found["modal_bodies.link.matrices"]
-    m = jp.Model("link")
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES},
-                     interface={"A": 0, "B": 4}, points={"C": 2})
-    m.add_strain_gauge("gauge", "link.C")
-    with pytest.raises(ModelError) as caught:
-        m.compile()
-    found = {p.location: p.message for p in caught.value.problems}
+    found = compile_problems(STIFFNESS, {"A": 0, "B": 4}, gauge=True)
     assert "without elements to recover strains on" in found["sensors.gauge.point"]
 
 
