@@ -146,15 +146,17 @@ def test_a_body_given_by_matrices_refuses_beam_keys_and_points_by_length(tmp_pat
 [modal_bodies.link]
 matrices = {{ {files} }}
 start = ["0 m", "0 m"]
+order = "linear"
 interface = {{ A = 0, B = "150 mm" }}
 points = {{ C = -1 }}
 free = true
 """
     found = problems(text, tmp_path)
     assert "is not used by a body given by `matrices`" in found["modal_bodies.link.start"]
+    assert "is not used by a body given by `matrices`" in found["modal_bodies.link.order"]
     assert "must be a node number" in found["modal_bodies.link.interface.B"]
     assert "must be a node number" in found["modal_bodies.link.points.C"]
-    found = problems(text.replace('start = ["0 m", "0 m"]\n', "").replace('interface = { A = 0, B = "150 mm" }\n', "")
+    found = problems(text.replace('start = ["0 m", "0 m"]\norder = "linear"\n', "").replace('interface = { A = 0, B = "150 mm" }\n', "")
                      .replace("C = -1", "C = 2"), tmp_path)
     assert "names its interface nodes by number" in found["modal_bodies.link.interface"]
 

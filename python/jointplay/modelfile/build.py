@@ -588,8 +588,8 @@ class Builder:
         None after adding problems."""
         from . import matrices as mx
 
-        for key in ("start", "end", "section", "material", "elements", "element_length"):
-            if getattr(t, key) is not None:
+        for key in ("start", "end", "section", "material", "elements", "element_length", "order"):
+            if getattr(t, key) is not None and not (key == "order" and t.order == p.MODAL_BODY.default("order")):
                 self.problem(join(where, key), "is not used by a body given by `matrices` (its nodes, `position` "
                                                "and `angle` place it); remove it")
         at = join(where, "matrices")
