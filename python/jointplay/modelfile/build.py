@@ -553,7 +553,11 @@ class Builder:
             structure = self.modal_matrices(where, t, raw)
         if structure is None:
             return None
-        return {"name": name, "structure": structure, "interface": stations, "points": points, "frame": t.frame,
+        def point(station: dict) -> dict:  # the core reads both keys; one is None
+            return {"name": station["name"], "arclength": station.get("arclength"), "node": station.get("node")}
+
+        return {"name": name, "structure": structure, "interface": [point(station) for station in stations],
+                "points": [point(station) for station in points], "frame": t.frame,
                 "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
                 "damping_time": float(t.damping_time),
                 "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity)}
