@@ -25,6 +25,13 @@ fn modal(elements: usize, normal: usize) -> ModalBody {
     ModalBody::from_beam(&b, &[0, last], FrameReference::Clamped, normal, 0.0).unwrap().0
 }
 
+/// The 3-element, 4-mode modal body as a body kind, at the positions and velocities of [`state`].
+fn moving_body() -> (BodyKind, Vec<f64>, Vec<f64>) {
+    let body = modal(3, 4);
+    let (q, v) = state(&body);
+    (BodyKind::Modal(Box::new(body)), q, v)
+}
+
 /// A state of the modal body away from every special value.
 fn state(body: &ModalBody) -> (Vec<f64>, Vec<f64>) {
     let n = body.n_coordinates();
@@ -155,9 +162,7 @@ fn mass_from_energy(kind: &BodyKind, q: &[f64]) -> DMatrix<f64> {
 
 #[test]
 fn the_mass_solve_inverts_the_mass_of_the_kinetic_energy() {
-    let body = modal(3, 4);
-    let kind = BodyKind::Modal(Box::new(body.clone()));
-    let (q, v) = state(&body);
+    let (kind, q, v) = moving_body();
     let mass = mass_from_energy(&kind, &q);
     let f = &mass * nalgebra::DVector::from_column_slice(&v);
     let mut solved = vec![0.0; v.len()];
@@ -172,9 +177,7 @@ fn the_mass_solve_inverts_the_mass_of_the_kinetic_energy() {
 fn the_body_forces_are_lagranges_velocity_terms_minus_the_elastic_force() {
     // Q_v = dT/dq - (dM/dq . q_dot) q_dot by central differences of the kinetic energy
     // (Lagrange's equations M q_ddot = Q_v + Q), and K eta the gradient of the strain energy
-    let body = modal(3, 4);
-    let kind = BodyKind::Modal(Box::new(body.clone()));
-    let (q, v) = state(&body);
+    let (kind, q, v) = moving_body();
     let n = q.len();
     let h = 1e-6;
     let shifted = |k: usize, d: f64| {
@@ -196,9 +199,7 @@ fn the_body_forces_are_lagranges_velocity_terms_minus_the_elastic_force() {
 
 #[test]
 fn gravity_is_minus_the_gradient_of_its_potential() {
-    let body = modal(3, 4);
-    let kind = BodyKind::Modal(Box::new(body.clone()));
-    let (q, _) = state(&body);
+    let (kind, q, _) = moving_body();
     let g = Vec2::new(0.5, -9.81);
     let mut weight = vec![0.0; q.len()];
     kind.add_gravity(g, &q, &mut weight);
@@ -217,9 +218,7 @@ fn gravity_is_minus_the_gradient_of_its_potential() {
 
 #[test]
 fn a_node_marker_moves_as_its_jacobian_says_and_a_point_force_does_its_virtual_work() {
-    let body = modal(3, 4);
-    let kind = BodyKind::Modal(Box::new(body.clone()));
-    let (q, v) = state(&body);
+    let (kind, q, v) = moving_body();
     let n = q.len();
     let marker = Marker { body: BodyIndex(1), frame: 2, site: Site::ModalNode(ModalNodeSite { node: 4 }), local: Vec2::new(0.02, -0.03) };
     let frames = |q: &[f64], v: &[f64]| (kind.frame(q, v, &Frame::GROUND), kind.site_frame(&marker.site, q, v, &Frame::GROUND));
@@ -262,9 +261,7 @@ fn a_node_marker_moves_as_its_jacobian_says_and_a_point_force_does_its_virtual_w
 #[test]
 fn a_node_markers_acceleration_is_the_derivative_of_its_velocity_along_a_motion() {
     // constant coordinate accelerations a from (q, v): the point's velocity at t = +-h by the body's own kinematics
-    let body = modal(3, 4);
-    let kind = BodyKind::Modal(Box::new(body.clone()));
-    let (q, v) = state(&body);
+    let (kind, q, v) = moving_body();
     let n = q.len();
     let a: Vec<f64> = (0..n).map(|k| if k < 3 { [3.0, -1.5, 4.0][k] } else { 0.5 * (0.9 * k as f64).cos() }).collect();
     let marker = Marker { body: BodyIndex(1), frame: 2, site: Site::ModalNode(ModalNodeSite { node: 6 }), local: Vec2::new(-0.01, 0.04) };
