@@ -19,6 +19,7 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
             "dopri5" => Method::DormandPrince45,
             "adams" => Method::AdamsPredictorCorrector,
             "bdf" => Method::NumericalDifferentiation,
+            "generalized_alpha" => Method::GeneralizedAlpha,
             other => return Err(PyValueError::new_err(format!("unknown method {other:?}"))),
         };
     }
@@ -36,6 +37,10 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
     }
     o.integrator.initial_step = get("initial_step")?;
     o.integrator.output_step = get("output_step")?;
+    o.integrator.step = get("step")?;
+    if let Some(v) = get("spectral_radius")? {
+        o.integrator.spectral_radius = v;
+    }
     if let Some(v) = d.get_item("max_steps")?.filter(|v| !v.is_none()) {
         o.integrator.max_steps = v.extract()?;
     }

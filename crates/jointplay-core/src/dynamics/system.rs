@@ -268,6 +268,14 @@ impl OdeSystem for MechanismSystem<'_> {
         Ok(())
     }
 
+    fn second_order_positions(&self) -> usize {
+        match self.tree {
+            Some(tree) => tree.n_dofs,
+            None if self.model.layout.identity_position_rates => self.model.layout.nq,
+            None => 0,
+        }
+    }
+
     fn system_jacobian(&self) -> SystemJacobian {
         // (the joint-coordinate formulation keeps forward differences)
         if self.tree.is_some() || !self.model.layout.identity_position_rates {

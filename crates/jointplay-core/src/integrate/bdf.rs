@@ -23,9 +23,9 @@
 //! 18 (1997) 1-22, Sections 2.1-2.3 (`docs/theory/integrator-ndf.md`).
 
 use super::control::{error_norm, Tolerances, eval, eval_start, starting_step, StartScratch};
+use super::newton_matrix::IterationMatrix;
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
-use crate::linalg::{lu_factor, lu_solve};
 
 /// Highest order (the NDFs beyond order 5 are not zero-stable).
 pub(crate) const MAX_ORDER: usize = 5;
@@ -39,9 +39,6 @@ const SHRINK_LIMIT: f64 = 0.2;
 const GROW_LIMIT: f64 = 10.0;
 /// Step ratio after the Newton iterations failed with a fresh Jacobian.
 const NEWTON_FAILURE_SHRINK: f64 = 0.5;
-/// Relative change of `c = h / alpha_k` beyond which `I - c J` is factored
-/// again (the threshold of CVODE's linear-solver setup, 0.3).
-const REFACTOR_CHANGE: f64 = 0.3;
 /// The NDF coefficients kappa_k of Shampine & Reichelt (1997), Table 1
 /// (index = order; order 5 is BDF).
 const KAPPA: [f64; MAX_ORDER + 1] = [0.0, -0.1850, -1.0 / 9.0, -0.0823, -0.0415, 0.0];
@@ -93,18 +90,8 @@ pub(crate) struct Ndf {
     h: f64,
     /// Steps taken with the current h and order.
     equal_steps: usize,
-    /// df/dy, row-major, and whether it exists.
-    jacobian: Vec<f64>,
-    jacobian_valid: bool,
-    /// Whether the system forms the Jacobian ([`OdeSystem::jacobian`]) instead of forward differences.
-    pub(crate) use_system_jacobian: bool,
-    /// `atol_j / rtol` (at least the smallest positive number): below this
-    /// magnitude a finite-difference increment of component j stops shrinking with |y_j|.
-    floors: Vec<f64>,
-    /// LU factors of `I - c J`, their pivots, and the c they were built for.
-    iteration_matrix: Vec<f64>,
-    pivots: Vec<usize>,
-    factored_c: Option<f64>,
+    /// The Jacobian and the factors of `I - c J`, c = h / alpha_k.
+    pub(crate) matrix: IterationMatrix,
     y_predict: Vec<f64>,
     psi: Vec<f64>,
     y_new: Vec<f64>,
@@ -126,9 +113,9 @@ impl Ndf {
     /// Allocates every buffer for a state of `n` components.
     pub(crate) fn new(n: usize, opts: &IntegratorOptions, tol: Tolerances) -> Self {
         let v = || vec![0.0; n];
-        let floors = tol.atol.iter().map(|atol| (atol / tol.rtol).max(f64::MIN_POSITIVE)).collect();
         Self {
             opts: opts.clone(),
+            matrix: IterationMatrix::new(n, &tol),
             tol,
             n,
             coefficients: Coefficients::new(),
@@ -136,13 +123,6 @@ impl Ndf {
             order: 1,
             h: 0.0,
             equal_steps: 0,
-            jacobian: vec![0.0; n * n],
-            jacobian_valid: false,
-            use_system_jacobian: false,
-            floors,
-            iteration_matrix: vec![0.0; n * n],
-            pivots: vec![0; n],
-            factored_c: None,
             y_predict: v(),
             psi: v(),
             y_new: v(),
@@ -202,63 +182,6 @@ impl Ndf {
         }
     }
 
-    /// Jacobian at (t, y) into `self.jacobian`: the system's own when it forms
-    /// one and was chosen to, else forward differences (n + 1 evaluations).
-    fn update_jacobian<S: OdeSystem>(&mut self, system: &mut S, stats: &mut Statistics, t: f64, y: &[f64]) -> Result<(), SimulationError> {
-        let n = self.n;
-        eval(system, stats, t, y, &mut self.f)?;
-        stats.jacobian_rhs_evaluations += 1;
-        if self.use_system_jacobian {
-            if let Some(cost) = system.jacobian(t, y, &self.floors, &mut self.jacobian)? {
-                stats.rhs_evaluations += cost.rhs_evaluations;
-                stats.jacobian_rhs_evaluations += cost.rhs_evaluations;
-                stats.jacobian_force_evaluations += cost.force_evaluations;
-                stats.jacobian_evaluations += 1;
-                self.jacobian_valid = true;
-                self.factored_c = None;
-                return Ok(());
-            }
-        }
-        // increments of sqrt(eps) relative to |y_j|, floored at the scale where atol takes over from rtol
-        self.delta.copy_from_slice(y);
-        for j in 0..n {
-            let step = f64::EPSILON.sqrt() * y[j].abs().max(self.floors[j]);
-            self.delta[j] = y[j] + step;
-            let step = self.delta[j] - y[j];
-            eval(system, stats, t, &self.delta, &mut self.correction)?;
-            stats.jacobian_rhs_evaluations += 1;
-            for i in 0..n {
-                self.jacobian[i * n + j] = (self.correction[i] - self.f[i]) / step;
-            }
-            self.delta[j] = y[j];
-        }
-        stats.jacobian_evaluations += 1;
-        self.jacobian_valid = true;
-        self.factored_c = None;
-        Ok(())
-    }
-
-    /// Factors `I - c J` unless the present factors were built for a c within
-    /// [`REFACTOR_CHANGE`]; false when the matrix is singular.
-    fn factor_iteration_matrix(&mut self, stats: &mut Statistics, c: f64) -> bool {
-        if let Some(built) = self.factored_c {
-            if (c / built - 1.0).abs() <= REFACTOR_CHANGE {
-                return true;
-            }
-        }
-        let n = self.n;
-        for (a, j) in self.iteration_matrix.iter_mut().zip(&self.jacobian) {
-            *a = -c * j;
-        }
-        for i in 0..n {
-            self.iteration_matrix[i * n + i] += 1.0;
-        }
-        stats.factorizations += 1;
-        let ok = lu_factor(&mut self.iteration_matrix, n, &mut self.pivots).is_ok();
-        self.factored_c = ok.then_some(c);
-        ok
-    }
-
     /// Simplified Newton on `y - y_pred = c f(t, y) - psi` from y_pred; the
     /// result in `y_new`, the sum of corrections in `correction`.
     fn solve_step<S: OdeSystem>(&mut self, system: &mut S, stats: &mut Statistics, t: f64, c: f64) -> Result<Newton, SimulationError> {
@@ -274,7 +197,7 @@ impl Ndf {
             for i in 0..n {
                 self.delta[i] = c * self.f[i] - self.psi[i] - self.correction[i];
             }
-            lu_solve(&self.iteration_matrix, n, &self.pivots, &mut self.delta);
+            self.matrix.solve(&mut self.delta);
             let norm = error_norm(1.0, &self.delta, &self.y_predict, &self.y_predict, &self.tol);
             if !norm.is_finite() {
                 return Ok(Newton::Failed);
@@ -303,14 +226,11 @@ impl Ndf {
     fn converge<S: OdeSystem>(&mut self, system: &mut S, stats: &mut Statistics, t_new: f64, c: f64) -> Result<Newton, SimulationError> {
         let mut fresh = false;
         loop {
-            if !self.jacobian_valid {
-                let y_predict = std::mem::take(&mut self.y_predict);
-                let updated = self.update_jacobian(system, stats, t_new, &y_predict);
-                self.y_predict = y_predict;
-                updated?;
+            if !self.matrix.is_valid() {
+                self.matrix.update(system, stats, t_new, &self.y_predict)?;
                 fresh = true;
             }
-            if self.factor_iteration_matrix(stats, c) {
+            if self.matrix.factor(stats, c) {
                 if let Newton::Converged(iterations) = self.solve_step(system, stats, t_new, c)? {
                     return Ok(Newton::Converged(iterations));
                 }
@@ -318,7 +238,7 @@ impl Ndf {
             if fresh {
                 return Ok(Newton::Failed);
             }
-            self.jacobian_valid = false;
+            self.matrix.invalidate();
         }
     }
 

@@ -1,7 +1,7 @@
 //! Time integrators with dense output and event location.
 //!
 //! [`integrate`] advances a first-order system [`OdeSystem`] from `t0` to
-//! `t_end` with one of two [`Method`]s:
+//! `t_end` with one of four [`Method`]s:
 //!
 //! - [`Method::DormandPrince45`]: explicit Runge-Kutta 5(4), FSAL, PI step
 //!   control, 4th-order dense output (`docs/theory/integrator-dormand-prince.md`);
@@ -10,7 +10,10 @@
 //!   paper 001 (`docs/theory/integrator-adams.md`);
 //! - [`Method::NumericalDifferentiation`]: implicit variable-order NDF/BDF
 //!   with simplified Newton iterations, for stiff problems such as
-//!   lubricated joints (`docs/theory/integrator-ndf.md`).
+//!   lubricated joints (`docs/theory/integrator-ndf.md`);
+//! - [`Method::GeneralizedAlpha`]: implicit generalized-alpha for first-order
+//!   systems with a fixed nominal step and numerical damping of unresolved
+//!   vibrations, for flexible bodies (`docs/theory/integrator-generalized-alpha.md`).
 //!
 //! All share one driver: after each accepted step the event functions are
 //! checked for a rise through zero, the earliest root is located on the
@@ -27,6 +30,8 @@ mod control;
 mod dormand_prince;
 mod driver;
 mod events;
+mod generalized_alpha;
+mod newton_matrix;
 mod options;
 mod polynomial;
 mod statistics;
@@ -72,6 +77,13 @@ pub trait OdeSystem {
     /// system whose components have different units (metres and pascals) scales
     /// each by its kind, so that one atol means the same for all (default: all 1).
     fn absolute_tolerance_scales(&self, _scales: &mut [f64]) {}
+
+    /// Number m of leading components that are positions whose rates are the
+    /// next m components exactly (`y = [q, v, ...]`, `dq/dt = v`): generalized-alpha
+    /// then updates q from v as a second-order method does. 0 (the default): no such split.
+    fn second_order_positions(&self) -> usize {
+        0
+    }
 
     /// Whether [`Self::jacobian`] forms the Jacobian, and whether it pays
     /// (default: [`SystemJacobian::Unavailable`]).
@@ -242,15 +254,25 @@ pub fn integrate<S: OdeSystem>(
         }
         Method::NumericalDifferentiation => {
             let mut stepper = bdf::Ndf::new(n, options, control::Tolerances::new(system, options));
-            stepper.use_system_jacobian = match (options.jacobian, system.system_jacobian()) {
-                (JacobianMethod::FiniteDifference, _) | (_, SystemJacobian::Unavailable) => false,
-                (JacobianMethod::Structured, _) | (JacobianMethod::Auto, SystemJacobian::Preferred) => true,
-                (JacobianMethod::Auto, SystemJacobian::Available) => false,
-            };
+            stepper.matrix.use_system_jacobian = use_system_jacobian(options, system);
+            driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
+        }
+        Method::GeneralizedAlpha => {
+            let mut stepper = generalized_alpha::GeneralizedAlpha::new(n, system.second_order_positions(), options, control::Tolerances::new(system, options));
+            stepper.matrix.use_system_jacobian = use_system_jacobian(options, system);
             driver::run(system, &mut stepper, t0, t_end, y, options, &mut stats)
         }
     };
     (stats, result)
+}
+
+/// Whether an implicit method takes the system's own Jacobian (else forward differences).
+fn use_system_jacobian<S: OdeSystem>(options: &IntegratorOptions, system: &S) -> bool {
+    match (options.jacobian, system.system_jacobian()) {
+        (JacobianMethod::FiniteDifference, _) | (_, SystemJacobian::Unavailable) => false,
+        (JacobianMethod::Structured, _) | (JacobianMethod::Auto, SystemJacobian::Preferred) => true,
+        (JacobianMethod::Auto, SystemJacobian::Available) => false,
+    }
 }
 
 /// Problems with the arguments of [`integrate`], if any.

@@ -14,6 +14,11 @@ pub enum Method {
     /// Shampine & Reichelt (1997), implicit, with simplified Newton
     /// iterations on a finite-difference or the system's own Jacobian: for stiff problems.
     NumericalDifferentiation,
+    /// Generalized-alpha for first-order systems (Jansen, Whiting & Hulbert
+    /// 2000), implicit, second order, with a fixed nominal step
+    /// ([`IntegratorOptions::step`]) and the numerical damping of unresolved
+    /// vibrations set by [`IntegratorOptions::spectral_radius`]: for flexible bodies.
+    GeneralizedAlpha,
 }
 
 /// How the implicit method forms the Jacobian `df/dy` of its Newton iterations.
@@ -58,8 +63,15 @@ pub struct IntegratorOptions {
     /// vibrations of a flexible body put their eigenvalues (Shampine and
     /// Reichelt, "The MATLAB ODE suite", SIAM J. Sci. Comput. 18 (1997) 1-22, §2.2).
     pub max_order: usize,
-    /// How the implicit method forms its Jacobian (ignored by the other methods).
+    /// How the implicit methods form their Jacobian (ignored by the explicit methods).
     pub jacobian: JacobianMethod,
+    /// Nominal step of generalized-alpha [s], required by it (ignored by the
+    /// error-controlled methods); halved where the Newton iterations fail.
+    pub step: Option<f64>,
+    /// Spectral radius at infinity rho_inf of generalized-alpha, 0 to 1: the
+    /// factor by which a step multiplies a vibration it does not resolve
+    /// (1: no numerical damping; 0: removed in one step). Ignored by the other methods.
+    pub spectral_radius: f64,
 }
 
 /// Smallest relative tolerance accepted: 100 machine epsilons, below which
@@ -71,7 +83,10 @@ impl Default for IntegratorOptions {
     /// atol 1e-9 (nanometre-scale for positions in metres), no step limit,
     /// automatic first step, min_step 1e-14 s (far below any contact time
     /// scale, above rounding of t), 10 million steps, a sample per step,
-    /// the Jacobian chosen automatically (`docs/theory/integrator-jacobian.md`).
+    /// the Jacobian chosen automatically (`docs/theory/integrator-jacobian.md`),
+    /// no generalized-alpha step (that method requires one) and its spectral
+    /// radius 0.9 (Exudyn's default; the damping of a vibration at 10 steps per
+    /// period stays below 1 % a period, `docs/theory/integrator-generalized-alpha.md`).
     fn default() -> Self {
         Self {
             method: Method::DormandPrince45,
@@ -84,6 +99,8 @@ impl Default for IntegratorOptions {
             output_step: None,
             max_order: 5,
             jacobian: JacobianMethod::Auto,
+            step: None,
+            spectral_radius: 0.9,
         }
     }
 }
@@ -108,6 +125,14 @@ impl IntegratorOptions {
             check(h >= self.min_step, "initial_step", ">= min_step", fmt(h));
         }
         check((1..=5).contains(&self.max_order), "max_order", "1 to 5", self.max_order.to_string());
+        check((0.0..=1.0).contains(&self.spectral_radius), "spectral_radius", "0 to 1", fmt(self.spectral_radius));
+        match self.step {
+            Some(h) => {
+                check(h.is_finite() && h > 0.0, "step", "> 0 s and finite", fmt(h));
+                check(h >= self.min_step, "step", ">= min_step", fmt(h));
+            }
+            None => check(self.method != Method::GeneralizedAlpha, "step", "given with generalized_alpha (its fixed nominal step)", "none".into()),
+        }
         if let Some(dt) = self.output_step {
             check(dt.is_finite() && dt > 0.0, "output_step", "> 0 s and finite", fmt(dt));
         }

@@ -8,10 +8,10 @@ const G: f64 = 9.81;
 /// Ball (height [m], velocity [m/s]) under gravity; event k fires when the
 /// height falls below `levels[k]`; on the ground event (level 0) the
 /// velocity is reversed and scaled by `restitution` when that is set.
-struct Ball {
+pub(super) struct Ball {
     levels: Vec<f64>,
     restitution: Option<f64>,
-    events: Vec<(f64, usize)>,
+    pub(super) events: Vec<(f64, usize)>,
     samples: Vec<(f64, Vec<f64>)>,
     calls: usize,
     /// Whether the ball reports the rates dg/dt of its event functions.
@@ -23,7 +23,7 @@ struct Ball {
 }
 
 impl Ball {
-    fn new(levels: Vec<f64>, restitution: Option<f64>) -> Self {
+    pub(super) fn new(levels: Vec<f64>, restitution: Option<f64>) -> Self {
         Self { levels, restitution, events: Vec::new(), samples: Vec::new(), calls: 0, rates: false, event_calls: 0, gravity: G }
     }
 
@@ -36,6 +36,9 @@ impl Ball {
 impl OdeSystem for Ball {
     fn len(&self) -> usize {
         2
+    }
+    fn second_order_positions(&self) -> usize {
+        1
     }
     fn rhs(&mut self, _t: f64, y: &[f64], dydt: &mut [f64]) -> Result<(), SimulationError> {
         self.calls += 1;
@@ -90,7 +93,7 @@ fn falling_ball_impact_time_is_sqrt_2h_over_g() {
 
 /// Time of the n-th bounce (n >= 1) of a ball dropped from `height` with restitution `e`:
 /// t_n = t_1 (1 + 2 (e - e^n) / (1 - e)), t_1 = sqrt(2 h / g).
-fn bounce_time(height: f64, e: f64, n: i32) -> f64 {
+pub(super) fn bounce_time(height: f64, e: f64, n: i32) -> f64 {
     let t1 = (2.0 * height / G).sqrt();
     t1 * (1.0 + 2.0 * (e - e.powi(n)) / (1.0 - e))
 }
@@ -230,7 +233,7 @@ fn rhs_evaluations_with_events_follow_the_restart_rule() {
         let expected = match method {
             Method::DormandPrince45 => 6 * (stats.accepted_steps + stats.rejected_steps) + 2 + stats.restarts,
             Method::AdamsPredictorCorrector => 2 * stats.accepted_steps + stats.rejected_steps + 2 + stats.restarts,
-            Method::NumericalDifferentiation => unreachable!("implicit: counted in tests/stiff.rs"),
+            Method::NumericalDifferentiation | Method::GeneralizedAlpha => unreachable!("implicit: counted in tests/stiff.rs and tests/generalized_alpha.rs"),
         };
         assert_eq!(stats.rhs_evaluations, expected, "{method:?}: {stats:?}");
         assert_eq!(stats.rhs_evaluations, ball.calls, "{method:?}");

@@ -4,6 +4,7 @@
 mod accuracy;
 mod errors;
 mod events;
+mod generalized_alpha;
 mod observe;
 mod outputs;
 mod projection;
@@ -91,6 +92,7 @@ pub(super) fn tolerance_bound(method: Method, tol: f64, stats: &Statistics) -> f
     match method {
         Method::DormandPrince45 => 20.0 * tol,
         Method::AdamsPredictorCorrector | Method::NumericalDifferentiation => 2.0 * tol * stats.accepted_steps as f64,
+        Method::GeneralizedAlpha => unreachable!("no error control: its accuracy is its step's"),
     }
 }
 

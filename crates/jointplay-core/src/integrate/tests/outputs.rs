@@ -76,7 +76,7 @@ fn rhs_evaluations_are_counted_exactly_with_rejections() {
             let expected = match method {
                 Method::DormandPrince45 => 6 * attempted + 1 + probe,
                 Method::AdamsPredictorCorrector => 2 * stats.accepted_steps + stats.rejected_steps + 1 + probe,
-                Method::NumericalDifferentiation => unreachable!("implicit: counted in tests/stiff.rs"),
+                Method::NumericalDifferentiation | Method::GeneralizedAlpha => unreachable!("implicit: counted in tests/stiff.rs and tests/generalized_alpha.rs"),
             };
             assert_eq!(stats.rhs_evaluations, expected, "{method:?} {initial_step:?}: {stats:?}");
             assert_eq!(stats.rhs_evaluations, sys.calls);

@@ -82,7 +82,7 @@ fn restart_requested_by_accept_is_counted_and_keeps_accuracy() {
         let expected = match method {
             Method::DormandPrince45 => 6 * (stats.accepted_steps + stats.rejected_steps) + 2 + stats.restarts,
             Method::AdamsPredictorCorrector => 2 * stats.accepted_steps + stats.rejected_steps + 2 + stats.restarts,
-            Method::NumericalDifferentiation => unreachable!("implicit: counted in tests/stiff.rs"),
+            Method::NumericalDifferentiation | Method::GeneralizedAlpha => unreachable!("implicit: counted in tests/stiff.rs and tests/generalized_alpha.rs"),
         };
         assert_eq!(stats.rhs_evaluations, expected, "{method:?}: {stats:?}");
         assert_eq!(stats.rhs_evaluations, sys.calls);
