@@ -42,7 +42,7 @@ def test_bad_simulation_options_are_model_errors_naming_the_option():
         pendulum().simulate(-1.0, method="euler", rtol=0.0)
     locations = {p.location for p in info.value.problems}
     assert locations == {"simulation.t_end", "simulation.method", "simulation.rtol"}
-    assert "must be one of ['adams', 'bdf', 'dopri5'], got 'euler'" in str(info.value)
+    assert "must be one of ['adams', 'bdf', 'dopri5', 'generalized_alpha'], got 'euler'" in str(info.value)
 
 
 def test_every_method_swings_the_pendulum_alike():

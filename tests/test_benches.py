@@ -72,16 +72,17 @@ def test_spin_up_beam_benchmark_quick_mode_reports_jointplay_and_exudyn_rows(cap
     report = bench.main(["--quick", "--markdown"])
     with_exudyn = importlib.util.find_spec("exudyn") is not None
     names = [r["name"] for r in report["rows"]]
-    assert names == ["jointplay, 2 linear elements", *(["Exudyn, 2 linear elements"] if with_exudyn else [])]
+    assert names == ["jointplay generalized-alpha, 2 linear elements", "jointplay NDF, 2 linear elements",
+                     *(["Exudyn, 2 linear elements"] if with_exudyn else [])]
     for r in report["rows"]:
         assert r["cpu"].n == 1 and r["wall"].n == 1
         assert 0 <= r["error"] < 1e-3  # both codes near the reference over the first second
     out = capsys.readouterr().out
-    assert "| jointplay, 2 linear elements |" in out
+    assert "| jointplay generalized-alpha, 2 linear elements |" in out
     if with_exudyn:
         assert "| Exudyn, 2 linear elements |" in out
         assert [(n, clock) for n, clock, _ in report["verdicts"]] == [(2, "cpu"), (2, "wall")]
-        assert "goal, faster than Exudyn, 2 elements, CPU time" in out
+        assert "goal, generalized-alpha faster than Exudyn, 2 elements, CPU time" in out
     else:
         assert "Exudyn rows: skipped, exudyn is not installed" in out
 
@@ -91,5 +92,7 @@ def test_spin_up_beam_benchmark_runs_without_exudyn(capsys, monkeypatch):
     bench = load("bench_spin_up_beam")
     assert bench.exudyn is None
     report = bench.main(["--quick"])
-    assert [r["name"] for r in report["rows"]] == ["jointplay, 2 linear elements"] and report["verdicts"] == []
+    assert [r["name"] for r in report["rows"]] == ["jointplay generalized-alpha, 2 linear elements",
+                                                   "jointplay NDF, 2 linear elements"]
+    assert report["verdicts"] == []
     assert "Exudyn rows: skipped, exudyn is not installed" in capsys.readouterr().out

@@ -324,7 +324,9 @@ class Model:
                  rtol: float = _SIMULATION.default("rtol"), atol: float = _SIMULATION.default("atol"),
                  max_step: float | None = None, output_step: float | None = None,
                  initial_step: float | None = None, min_step: float | None = None, max_steps: int | None = None,
-                 max_order: int | None = None, jacobian: str = _SIMULATION.default("jacobian"),
+                 max_order: int | None = None, step: float | None = None,
+                 spectral_radius: float = _SIMULATION.default("spectral_radius"),
+                 jacobian: str = _SIMULATION.default("jacobian"),
                  stabilization: str = _SIMULATION.default("stabilization"),
                  formulation: str = _SIMULATION.default("formulation"), t0: float = _SIMULATION.default("t0"),
                  progress: Callable[[float], None] | None = None, output_file: str | os.PathLike | None = None,
@@ -332,15 +334,19 @@ class Model:
         """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
 
         ``method``: ``"dopri5"`` (adaptive Dormand-Prince 5(4), contact onsets located by dense
-        output), ``"adams"`` (variable-step Adams predictor-corrector) or ``"bdf"`` (implicit
-        variable-order NDF/BDF with Newton iterations, for stiff models such as lubricated joints). ``rtol``/``atol``: error
-        tolerances; ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
+        output), ``"adams"`` (variable-step Adams predictor-corrector), ``"bdf"`` (implicit
+        variable-order NDF/BDF with Newton iterations, for stiff models such as lubricated joints) or
+        ``"generalized_alpha"`` (implicit, second order, a fixed nominal ``step`` [s] halved only where
+        Newton fails, and the vibrations that step does not resolve damped by the factor
+        ``spectral_radius`` per step, 0 to 1, default 0.9: for flexible links;
+        docs/theory/integrator-generalized-alpha.md). ``rtol``/``atol``: error
+        tolerances (of ``"generalized_alpha"``: of its Newton iterations only, its accuracy is the step's); ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
         accepted step; the peaks and extrema of :attr:`Results.extrema` come from every accepted step
         whatever it is); ``max_steps``: most attempted (accepted + rejected) steps, default 10 000 000,
         beyond which the run stops with a :class:`~jointplay.errors.SimulationError` naming the option.
         ``max_order``: highest order of ``"bdf"``, 1 to 5 (default 5); 2 for undamped flexible links, whose
         vibrations the orders above 2 (not A-stable) would amplify. ``jacobian``: the Newton Jacobian of
-        ``"bdf"``, ``"auto"``, ``"finite_difference"`` or ``"structured"`` (docs/theory/integrator-jacobian.md).
+        ``"bdf"`` and ``"generalized_alpha"``, ``"auto"``, ``"finite_difference"`` or ``"structured"`` (docs/theory/integrator-jacobian.md).
         ``progress`` is called with the simulated time about ten times a second.
 
         Values that are legal but almost certainly mistakes (a clearance of 20 % of the radius, a mass
@@ -364,7 +370,7 @@ class Model:
         spec_snapshot, findings = self._spec_and_findings()
         emit(findings)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
-                           max_steps, stabilization, formulation, max_order, jacobian)
+                           max_steps, stabilization, formulation, max_order, jacobian, step, spectral_radius)
         emit(_flexible_advice(spec_snapshot, options))
         emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
@@ -431,12 +437,13 @@ def _flexible_advice(spec: dict, options: dict) -> list:
     if not spec.get("beams"):
         return []
     advice = []
-    if options["method"] != "bdf":
+    if options["method"] not in ("bdf", "generalized_alpha"):
         advice.append(Problem("simulation.method", f"{options['method']} with a beam must resolve its highest "
                                                    "vibration frequencies and takes millions of steps: use "
-                                                   "method=\"bdf\" with max_order=2"))
+                                                   "method=\"generalized_alpha\" with a step, or method=\"bdf\" "
+                                                   "with max_order=2"))
     else:
-        if options.get("max_order") is None or options["max_order"] > 2:
+        if options["method"] == "bdf" and (options.get("max_order") is None or options["max_order"] > 2):
             advice.append(Problem("simulation.max_order", "orders above 2 are not A-stable: an undamped beam's "
                                                           "vibrations make their steps collapse; use max_order=2"))
         if options["stabilization"] == "projection":
@@ -476,7 +483,8 @@ def _function(raw: Any, kind: str, where: str) -> dict:
 
 def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step, max_steps,
              stabilization, formulation=_SIMULATION.default("formulation"), max_order=None,
-             jacobian=_SIMULATION.default("jacobian")) -> dict:
+             jacobian=_SIMULATION.default("jacobian"), step=None,
+             spectral_radius=_SIMULATION.default("spectral_radius")) -> dict:
     problems = []
 
     def positive(key, value, allow_none=True):
@@ -515,6 +523,15 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
             problems.append(("simulation.max_order", f"must be a whole number from 1 to {most:g}, got {max_order!r}"))
         else:
             options["max_order"] = max_order
+    options["step"] = positive("step", step)
+    if options["method"] == "generalized_alpha" and step is None:
+        problems.append(("simulation.step", "generalized_alpha integrates with a fixed nominal step and needs one, "
+                                            "for example step=1e-3 (s); its accuracy is that step's"))
+    if (isinstance(spectral_radius, bool) or not isinstance(spectral_radius, (int, float))
+            or not 0 <= spectral_radius <= 1):
+        problems.append(("simulation.spectral_radius", f"must be from 0 to 1, got {spectral_radius!r}"))
+    else:
+        options["spectral_radius"] = float(spectral_radius)
     if max_steps is not None:
         if not (isinstance(max_steps, int) and max_steps > 0):
             problems.append(("simulation.max_steps", f"must be a positive integer, got {max_steps!r}"))

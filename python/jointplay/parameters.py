@@ -753,8 +753,9 @@ SENSORS = family(STRAIN_GAUGE)
 
 # simulation -----------------------------------------------------------------
 
-METHODS = ("dopri5", "adams", "bdf")
-METHOD_ALIASES = (("rk45", "dopri5"), ("dormand_prince", "dopri5"), ("adams_pc", "adams"), ("ndf", "bdf"))
+METHODS = ("dopri5", "adams", "bdf", "generalized_alpha")
+METHOD_ALIASES = (("rk45", "dopri5"), ("dormand_prince", "dopri5"), ("adams_pc", "adams"), ("ndf", "bdf"),
+                  ("generalised_alpha", "generalized_alpha"))
 STABILIZATIONS = ("projection", "baumgarte", "none")
 JACOBIANS = ("auto", "finite_difference", "structured")
 FORMULATIONS = ("auto", "absolute", "joint_coordinates")
@@ -764,7 +765,9 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
     Param("t_end", "time", "end time", None, gt=0, default_text="none (`jointplay run` then needs `--t-end`)"),
     Param("t0", "time", "start time", 0.0),
     Param("method", "choice", "Dormand-Prince 5(4) with located contact onsets; Adams predictor-corrector; implicit "
-          "NDF/BDF for stiff models such as lubricated joints", "dopri5", of=METHODS, aliases=METHOD_ALIASES),
+          "NDF/BDF for stiff models such as lubricated joints; implicit generalized-alpha with a fixed `step` and "
+          "numerical damping of the vibrations that step does not resolve, for flexible links "
+          "(docs/theory/integrator-generalized-alpha.md)", "dopri5", of=METHODS, aliases=METHOD_ALIASES),
     Param("rtol", "dimensionless", "relative error tolerance", 1e-6, gt=0),
     Param("atol", "dimensionless", "absolute error tolerance", 1e-9, ge=0),
     Param("max_step", "time", "largest step", None, gt=0, default_text="none"),
@@ -778,7 +781,13 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
     Param("max_order", "count", "highest order of the implicit method (`bdf`), 1 to 5: orders 1 and 2 are A-stable, "
           "which undamped flexible links need (docs/theory/integrator-ndf.md)", None, le=5, interval="1 to 5",
           default_text="5"),
-    Param("jacobian", "choice", "Newton Jacobian of the implicit method (`bdf`): `finite_difference` (one "
+    Param("step", "time", "nominal step of `generalized_alpha` (required by it; halved where its Newton iterations "
+          "fail; the error-controlled methods ignore it): its accuracy is this step's, `rtol` and `atol` set only "
+          "when its Newton iterations stop", None, gt=0, default_text="none"),
+    Param("spectral_radius", "dimensionless", "spectral radius at infinity of `generalized_alpha`, 0 to 1: the "
+          "factor by which each step multiplies a vibration it does not resolve (1: none damped, the implicit "
+          "midpoint rule; 0: removed in one step)", 0.9, ge=0, le=1, interval="0 to 1"),
+    Param("jacobian", "choice", "Newton Jacobian of the implicit methods (`bdf`, `generalized_alpha`): `finite_difference` (one "
           "right-hand side per state), `structured` (coloured differences of each element's forces through the "
           "constrained accelerations; absolute coordinates only, docs/theory/integrator-jacobian.md), `auto` "
           "(structured with a beam)", "auto", of=JACOBIANS),

@@ -349,7 +349,8 @@ def _with_simulation(spec: dict, simulation: dict) -> str:
     from .modelfile.writer import to_toml
 
     keep = ("t_end", "t0", "method", "rtol", "atol", "max_step", "output_step", "initial_step", "min_step",
-            "max_steps", "max_order", "jacobian", "stabilization", "formulation", "max_output_bytes")
+            "max_steps", "max_order", "step", "spectral_radius", "jacobian", "stabilization", "formulation",
+            "max_output_bytes")
     return to_toml(spec, {k: simulation[k] for k in keep if k in simulation})
 
 
