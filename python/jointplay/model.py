@@ -372,6 +372,7 @@ class Model:
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian, step, spectral_radius)
         emit(_flexible_advice(spec_snapshot, options))
+        emit(_alpha_output_advice(options))
         emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
@@ -451,6 +452,24 @@ def _flexible_advice(spec: dict, options: dict) -> list:
                                                               "upsets the implicit method's history; use "
                                                               "stabilization=\"baumgarte\""))
     return advice
+
+
+def _alpha_output_advice(options: dict) -> list:
+    """A warning when generalized-alpha's output step is not a whole number of its steps: its samples are step
+    ends (docs/theory/integrator-generalized-alpha.md), so the steps that cross an output time are shortened,
+    which changes the solution within the method's error."""
+    from .errors import Problem
+
+    step, spacing = options.get("step"), options.get("output_step")
+    if options["method"] != "generalized_alpha" or step is None or spacing is None:
+        return []
+    ratio = spacing / step
+    if ratio >= 1.0 - 1e-9 and abs(ratio - round(ratio)) <= 1e-9 * ratio:
+        return []
+    return [Problem("simulation.output_step", f"generalized_alpha records its step ends, so {spacing:g} s, not a "
+                                              f"whole number of steps of {step:g} s, shortens the steps that cross "
+                                              "an output time (the results then depend on it within the method's "
+                                              "error); use a multiple of the step")]
 
 
 def _modal_spin_advice(spec: dict, bending: dict[str, float]) -> list:

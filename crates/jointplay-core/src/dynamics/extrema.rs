@@ -108,6 +108,10 @@ pub(crate) struct PeakGroup {
     points: StepPoints,
     /// Evaluations inside steps (probes and searches) over the run.
     pub inner_evaluations: usize,
+    /// Whether the peaks come from the step ends alone, with no probe or search
+    /// inside a step (a method whose states inside a step are an interpolant that
+    /// stiff forces would amplify: generalized-alpha).
+    pub step_ends_only: bool,
 }
 
 /// The times and values of the evaluations made in one step.
@@ -173,6 +177,7 @@ impl PeakGroup {
             improved: vec![false; n],
             points: StepPoints::new(n),
             inner_evaluations: 0,
+            step_ends_only: false,
         }
     }
 
@@ -215,7 +220,7 @@ impl PeakGroup {
             any_improved |= improved;
             any_search |= self.search[i];
         }
-        if t_new <= t_old {
+        if t_new <= t_old || self.step_ends_only {
             return Ok(());
         }
         if any_improved {

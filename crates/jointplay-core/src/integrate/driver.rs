@@ -7,6 +7,9 @@ use crate::error::SimulationError;
 
 /// Fraction of a step the last step may stretch to land on t_end (Hairer's 1.01).
 const LAST_STEP_STRETCH: f64 = 1.01;
+/// A step is not cut to end on a sample closer than this fraction of it (an event
+/// just before a sample time): that sample comes from the continuous extension.
+const SAMPLE_CUT_FLOOR: f64 = 1e-3;
 /// Grid samples closer than this fraction of the spacing to t_end merge into the t_end sample.
 const OUTPUT_MERGE: f64 = 1e-6;
 
@@ -31,10 +34,13 @@ pub(crate) fn run<S: OdeSystem, P: Stepper>(
     let mut h = stepper.start(system, stats, t0, y, opts.initial_step)?;
     let mut t = t0;
     while t < t_end {
-        // limit the step, stretch or clip the last one onto t_end
+        // limit the step, stretch or clip the last one onto t_end (and, for a method
+        // whose samples are its step ends, the step onto the next output time)
         h = h.min(opts.max_step);
         let last = t + LAST_STEP_STRETCH * h >= t_end;
-        let h_try = if last { t_end - t } else { h };
+        let to_sample = !last && stepper.steps_end_on_samples() && t + LAST_STEP_STRETCH * h >= grid.next
+            && grid.next - t > SAMPLE_CUT_FLOOR * h;
+        let h_try = if last { t_end - t } else if to_sample { grid.next - t } else { h };
         if (!last && h_try < opts.min_step) || t + h_try == t {
             return Err(SimulationError::StepSizeUnderflow { time: t, step: h_try, element: None });
         }
@@ -48,7 +54,7 @@ pub(crate) fn run<S: OdeSystem, P: Stepper>(
             continue;
         }
         stats.count_accepted(h_try);
-        let t_new = if last { t_end } else { t + h_try };
+        let t_new = if last { t_end } else if to_sample { grid.next } else { t + h_try };
         let (t_stop, restart) = finish_step(system, stepper, stats, &mut events, &mut grid, t, t_new, y)?;
         t = t_stop;
         // restart after an event or a discontinuity reported by accept()

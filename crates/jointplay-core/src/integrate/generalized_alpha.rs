@@ -78,6 +78,8 @@ pub(crate) struct GeneralizedAlpha {
     parameters: Parameters,
     /// Nominal step [s].
     nominal: f64,
+    /// The step asked for next [s]: the nominal one, or less after a Newton failure.
+    ceiling: f64,
     /// Converged steps since the last Newton failure.
     converged_run: usize,
     /// Convergence rate of the Newton iterations, kept from step to step (1 after a fresh Jacobian).
@@ -115,6 +117,7 @@ impl GeneralizedAlpha {
             m,
             parameters: Parameters::from_spectral_radius(opts.spectral_radius),
             nominal: opts.step.unwrap_or(f64::INFINITY).min(opts.max_step),
+            ceiling: f64::INFINITY,
             converged_run: 0,
             rate: 1.0,
             f_old: v(),
@@ -255,7 +258,8 @@ impl Stepper for GeneralizedAlpha {
         eval_start(system, stats, t, y, &mut self.f_old)?;
         self.w.copy_from_slice(&self.f_old);
         self.converged_run = 0;
-        Ok(h_hint.map_or(self.nominal, |h| h.min(self.nominal)))
+        self.ceiling = h_hint.map_or(self.nominal, |h| h.min(self.nominal));
+        Ok(self.ceiling)
     }
 
     fn attempt<S: OdeSystem>(
@@ -268,7 +272,8 @@ impl Stepper for GeneralizedAlpha {
     ) -> Result<Attempt, SimulationError> {
         if !self.converge(system, stats, t, y, h)? {
             self.converged_run = 0;
-            return Ok(Attempt { accepted: false, h_next: h * NEWTON_FAILURE_SHRINK });
+            self.ceiling = h * NEWTON_FAILURE_SHRINK;
+            return Ok(Attempt { accepted: false, h_next: self.ceiling });
         }
         // the derivative at the converged end, which the next step's equation and the dense output use
         eval(system, stats, t + h, &self.y_new, &mut self.f_new)?;
@@ -276,21 +281,24 @@ impl Stepper for GeneralizedAlpha {
         self.dense_h = h;
         self.dense_y.copy_from_slice(y);
         self.dense_f.copy_from_slice(&self.f_old);
+        // back towards the nominal step after a Newton failure cut it (a step the
+        // driver shortened to land on a sample or on t_end leaves the ceiling as it was)
         self.converged_run += 1;
-        // back towards the nominal step after a Newton failure cut it
-        let h_next = if h >= self.nominal {
-            self.nominal
-        } else if self.converged_run >= GROW_AFTER {
+        if self.ceiling < self.nominal && self.converged_run >= GROW_AFTER {
             self.converged_run = 0;
-            (2.0 * h).min(self.nominal)
-        } else {
-            h
-        };
-        Ok(Attempt { accepted: true, h_next })
+            self.ceiling = (2.0 * self.ceiling).min(self.nominal);
+        }
+        Ok(Attempt { accepted: true, h_next: self.ceiling })
     }
 
     fn y_new(&self) -> &[f64] {
         &self.y_new
+    }
+
+    fn steps_end_on_samples(&self) -> bool {
+        // inside a step the state is the Hermite interpolant of its ends: the forces of a stiff
+        // element at it amplify the interpolation error by its stiffness (docs/theory/integrator-generalized-alpha.md)
+        true
     }
 
     fn dense(&self, t: f64, out: &mut [f64]) {

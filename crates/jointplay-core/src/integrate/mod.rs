@@ -195,6 +195,12 @@ pub(crate) trait Stepper {
     /// State at the end of the last accepted attempt.
     fn y_new(&self) -> &[f64];
 
+    /// Whether the driver cuts the steps to end on the output times, so that no sample
+    /// comes from the continuous extension (default: no, samples are interpolated).
+    fn steps_end_on_samples(&self) -> bool {
+        false
+    }
+
     /// Makes the continuous extension of the last accepted step ready for [`Stepper::dense`];
     /// the driver calls it before the first `dense` of a step (a method may form its
     /// extension only then, since most steps never use it).

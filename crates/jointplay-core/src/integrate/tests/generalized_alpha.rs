@@ -158,3 +158,22 @@ fn generalized_alpha_needs_a_step_and_a_spectral_radius_from_0_to_1() {
     let (_, result, _) = run(&mut system, 0.0, 1.0, &[1.0, 0.0], &alpha(0.1, 1.5));
     assert!(matches!(&result, Err(SimulationError::InvalidInput { message, .. }) if message.contains("spectral_radius")), "{result:?}");
 }
+
+#[test]
+fn steps_are_cut_to_end_on_the_output_times() {
+    // samples every 15 ms with 10 ms steps: each sample is a step end (a step of 10 ms, then one of
+    // 5 ms), never the continuous extension, whose forces a stiff element would spoil
+    let mut system = Oscillator::linear(2.0 * std::f64::consts::PI);
+    let opts = IntegratorOptions { output_step: Some(0.015), ..alpha(0.01, 0.9) };
+    let (stats, result, _) = run(&mut system, 0.0, 0.3, &[1.0, 0.0], &opts);
+    result.unwrap();
+    assert_eq!(system.samples.len(), 21);
+    assert_eq!(stats.accepted_steps, 40, "{stats:?}");
+    assert!((stats.smallest_step - 0.005).abs() < 1e-12 && (stats.largest_step - 0.01).abs() < 1e-12, "{stats:?}");
+    // the next step after a cut one is the nominal step again
+    let mut system = Oscillator::linear(2.0 * std::f64::consts::PI);
+    let opts = IntegratorOptions { output_step: Some(0.025), ..alpha(0.01, 0.9) };
+    let (stats, result, _) = run(&mut system, 0.0, 0.1, &[1.0, 0.0], &opts);
+    result.unwrap();
+    assert_eq!(stats.accepted_steps, 12, "{stats:?}"); // 10 + 10 + 5 ms per 25 ms
+}
