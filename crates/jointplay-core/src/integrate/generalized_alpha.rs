@@ -48,6 +48,9 @@ const RATE_DECAY: f64 = 0.3;
 const NEWTON_FAILURE_SHRINK: f64 = 0.5;
 /// Converged steps after which a step cut by a Newton failure doubles again.
 const GROW_AFTER: usize = 3;
+/// Relative difference below which two steps share the Newton matrix's factors: a step cut to
+/// end on an output time differs from the nominal one by rounding only.
+const SAME_STEP: f64 = 1e-9;
 
 /// The method's parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -148,12 +151,12 @@ impl GeneralizedAlpha {
     }
 
     /// The Newton matrix `d residual / d w_(n+1)` for the step h from the kept Jacobian,
-    /// factored unless it was for this very h; false when singular.
+    /// factored unless it was for this h (to [`SAME_STEP`]); false when singular.
     fn factor(&mut self, stats: &mut Statistics, h: f64) -> bool {
         let Parameters { alpha_m, alpha_f, gamma, beta } = self.parameters;
         let (n, m) = (self.n, self.m);
         let p = n - m;
-        self.matrix.factor_with(stats, h, 0.0, p, |jacobian, matrix| {
+        self.matrix.factor_with(stats, h, SAME_STEP, p, |jacobian, matrix| {
             for i in 0..p {
                 let row = &jacobian[(m + i) * n..(m + i + 1) * n];
                 for j in 0..p {
