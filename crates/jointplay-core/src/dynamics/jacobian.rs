@@ -90,6 +90,14 @@ pub(crate) struct StructuredJacobian {
     response: Vec<f64>,
     /// Constraint-row scratch of that operator.
     multipliers: Vec<f64>,
+    /// Columns of `y` whose mass is configuration dependent (a modal body's positions and
+    /// velocities): the neglected `dA/dq Q` is not small there, so they are replaced by
+    /// forward differences of the whole right-hand side ([`Self::difference_whole_columns`]).
+    whole_columns: Vec<usize>,
+    /// f at the Jacobian's state, f at a perturbed one and that state, for those columns.
+    f_base: Vec<f64>,
+    f_perturbed: Vec<f64>,
+    y_perturbed: Vec<f64>,
 }
 
 /// Buffers of one contribution's evaluation.
@@ -185,6 +193,10 @@ impl StructuredJacobian {
             }
         }
         let n = layout.len();
+        let whole_columns: Vec<usize> = model.bodies.iter().zip(&layout.bodies)
+            .filter(|(body, _)| matches!(body.kind, BodyKind::Modal(_)))
+            .flat_map(|(_, address)| address.q_range().chain(address.v_range().map(|c| nq + c)))
+            .collect();
         let (colours, n_colours) = colour(n, &reads, &read_offsets);
         let mut structure = Self {
             contributions,
@@ -213,12 +225,41 @@ impl StructuredJacobian {
             solved: vec![0.0; nv],
             response: vec![0.0; nv],
             multipliers: vec![0.0; model.n_dynamic_equations()],
+            f_base: vec![0.0; if whole_columns.is_empty() { 0 } else { n }],
+            f_perturbed: vec![0.0; if whole_columns.is_empty() { 0 } else { n }],
+            y_perturbed: vec![0.0; if whole_columns.is_empty() { 0 } else { n }],
+            whole_columns,
         };
         structure.index_colours(n_colours);
         structure.base = vec![0.0; structure.writes.len()];
         let widest = structure.write_offsets.windows(2).map(|w| w[1] - w[0]).max().unwrap_or(0);
         structure.scratch.local = vec![0.0; widest];
         structure
+    }
+
+    /// Replaces the columns of the coordinates whose mass depends on the configuration
+    /// ([`Self::whole_columns`]) in `jacobian` (row-major, `y.len()` square) by forward
+    /// differences of the whole right-hand side `rhs(y, f)` at the integrator's increments
+    /// `sqrt(eps) max(|y_j|, floors[j])`; returns the right-hand sides evaluated at perturbed
+    /// states (the one at `y` is the evaluation the integrator made there, which the system holds).
+    pub(crate) fn difference_whole_columns(&mut self, y: &[f64], floors: &[f64], jacobian: &mut [f64],
+                                           mut rhs: impl FnMut(&[f64], &mut [f64]) -> Result<(), SimulationError>) -> Result<usize, SimulationError> {
+        if self.whole_columns.is_empty() {
+            return Ok(0);
+        }
+        let n = y.len();
+        rhs(y, &mut self.f_base)?;
+        self.y_perturbed.copy_from_slice(y);
+        for &j in &self.whole_columns {
+            self.y_perturbed[j] = y[j] + f64::EPSILON.sqrt() * y[j].abs().max(floors[j]);
+            let step = self.y_perturbed[j] - y[j];
+            rhs(&self.y_perturbed, &mut self.f_perturbed)?;
+            for i in 0..n {
+                jacobian[i * n + j] = (self.f_perturbed[i] - self.f_base[i]) / step;
+            }
+            self.y_perturbed[j] = y[j];
+        }
+        Ok(self.whole_columns.len())
     }
 
     /// The columns and the hits of every colour.

@@ -443,3 +443,59 @@ fn spin_up_beam_wall_time() {
         println!("{name}: median {:.3} s over {runs} runs, range {:.3} to {:.3} s", times[k][runs / 2], times[k][0], times[k][runs - 1]);
     }
 }
+
+#[test]
+fn a_modal_bodys_columns_are_differenced_whole_because_its_mass_moves_with_it() {
+    // a free modal body spinning at 3 rad/s with every mode vibrating, deformed: no constraints, so
+    // A = M(q)^-1, and what the structured columns leave out is d(M^-1)/dq Q alone, which is not
+    // small for a body whose mass matrix turns with its frame and changes with its modes
+    let interface = serde_json::json!([{"name": "start", "arclength": 0.0}, {"name": "end", "arclength": 1.0}]);
+    let m = model(serde_json::json!({
+        "name": "free modal body", "gravity": [0, 0], "ground_points": [], "bodies": [], "beams": [],
+        "modal_bodies": [super::modal_tests::arm_json(1.0, super::modal_tests::SECTION, 4, interface, 3, 0.0, 3.0)],
+        "joints": [], "drivers": [], "forces": [], "sensors": []
+    }));
+    let mut ws = Workspace::new(&m);
+    let state = assemble(&m, 0.0, &mut ws).unwrap();
+    let (n, nq) = (state.y.len(), m.layout.nq);
+    let mut y = state.y.clone();
+    for j in 3..nq {
+        y[j] = 1e-3 * (1.0 + j as f64).recip(); // modal amplitudes
+        y[nq + j] = 0.5 * (1.0 + j as f64).recip();
+    }
+    y[2] = 0.4;
+    let memory = m.initial_memory();
+    let stabilization = Stabilization::None;
+    let (mut s, mut jacobian) = structured(&m, &memory, 0.0, &y, stabilization, &mut ws);
+    let mut scratch = Workspace::new(&m);
+    let full = differences(&y, &floors(n), n, |y, f| rhs(&m, &memory, 0.0, y, stabilization, &mut scratch, f));
+    // (a column that moves no acceleration, x and y of a free body, is compared absolutely)
+    let gap = |a: &[f64], c: usize| {
+        let off = (nq..n).map(|r| (a[r * n + c] - full[r * n + c]).abs()).fold(0.0, f64::max);
+        let largest = column_max(&full, n, c, nq..n);
+        if largest > 0.0 { off / largest } else { off }
+    };
+    let before = (0..n).map(|c| gap(&jacobian, c)).fold(0.0, f64::max);
+    let evaluations = s.difference_whole_columns(&y, &floors(n), &mut jacobian, |y, f| {
+        rhs(&m, &memory, 0.0, y, stabilization, &mut scratch, f);
+        Ok(())
+    }).unwrap();
+    assert_eq!(evaluations, n, "every column of the only body is differenced whole");
+    let after = (0..n).map(|c| gap(&jacobian, c)).fold(0.0, f64::max);
+    println!("structured columns off by {before:e} of their largest entry, differenced whole {after:e}");
+    assert!(before > 1e-3, "the structured columns should miss d(M^-1)/dq Q: {before:e}");
+    assert!(after < 1e-12, "{after:e}");
+}
+
+#[test]
+fn auto_takes_forward_differences_on_a_modal_mechanism_without_a_beam() {
+    // a modal rod in a slider-crank (no beam): the structured Jacobian neglects the constraints'
+    // geometric stiffness, which a modal mechanism's Newton iterations need (docs/theory/
+    // integrator-jacobian.md); Auto takes forward differences, n + 1 evaluations each
+    let modal = super::modal_tests::slider_crank(true, false);
+    let n = modal.layout.len();
+    let integrator = IntegratorOptions { method: Method::NumericalDifferentiation, max_order: 2, rtol: 1e-6, atol: 1e-9, ..IntegratorOptions::default() };
+    let (_, stats) = run(&modal, 0.002, integrator, Stabilization::Baumgarte { alpha: 50.0, beta: 50.0 }, &[]);
+    assert!(stats.jacobian_evaluations > 0);
+    assert_eq!((stats.jacobian_rhs_evaluations, stats.jacobian_force_evaluations), (stats.jacobian_evaluations * (n + 1), 0));
+}

@@ -14,7 +14,7 @@ use crate::dynamics::frame::{Frame, Vec2};
 use crate::integrate::{IntegratorOptions, Method};
 
 /// The section of the free-flight and cantilever tests: EA, GA, EI, rho A, rho I.
-const SECTION: [f64; 5] = [2.0e6, 8.0e5, 100.0, 2.0, 1.0e-4];
+pub(super) const SECTION: [f64; 5] = [2.0e6, 8.0e5, 100.0, 2.0, 1.0e-4];
 
 fn section_json(s: [f64; 5]) -> serde_json::Value {
     serde_json::json!({"type": "resultants", "axial_stiffness": s[0], "shear_stiffness": s[1], "bending_stiffness": s[2],
@@ -22,7 +22,7 @@ fn section_json(s: [f64; 5]) -> serde_json::Value {
 }
 
 /// A modal body `arm` from (0, 0) to (`length`, 0) of `elements` quadratic elements.
-fn arm_json(length: f64, section: [f64; 5], elements: usize, interface: serde_json::Value, normal_modes: usize, damping_ratio: f64, angular_velocity: f64) -> serde_json::Value {
+pub(super) fn arm_json(length: f64, section: [f64; 5], elements: usize, interface: serde_json::Value, normal_modes: usize, damping_ratio: f64, angular_velocity: f64) -> serde_json::Value {
     serde_json::json!({"name": "arm", "structure": {"from": "beam", "start": [0.0, 0.0], "end": [length, 0.0], "section": section_json(section),
                        "mesh": {"order": "quadratic", "elements": elements, "element_length": null}},
                        "interface": interface, "normal_modes": normal_modes, "damping_ratio": damping_ratio, "damping_time": 0.0, "points": [],
@@ -254,7 +254,7 @@ fn a_modal_body_is_refused_with_its_location_when_an_interface_point_misses_the_
 
 /// The slider-crank of `beam_tests::slider_crank` with its rod a stiff modal body (interface
 /// nodes at both ends: the pins), or rigid, and the rod-slider pin ideal or with clearance.
-fn slider_crank(modal_rod: bool, clearance: bool) -> Model {
+pub(super) fn slider_crank(modal_rod: bool, clearance: bool) -> Model {
     let (l, rho_a, rho_i) = (0.12, 1.75, 3.3e-5);
     let rigid_rod = serde_json::json!({"name": "rod", "mass": rho_a * l, "inertia": rho_a * l * l * l / 12.0 + rho_i * l, "position": [0.11, 0], "angle": 0,
                                        "velocity": [0, 3.75], "angular_velocity": -62.5, "points": [{"name": "start", "position": [-0.06, 0]}, {"name": "end", "position": [0.06, 0]}]});

@@ -280,7 +280,10 @@ impl OdeSystem for MechanismSystem<'_> {
         // (the joint-coordinate formulation keeps forward differences)
         if self.tree.is_some() || !self.model.layout.identity_position_rates {
             SystemJacobian::Unavailable
-        } else if self.model.bodies.iter().any(|b| matches!(b.kind, BodyKind::Beam(_) | BodyKind::Modal(_))) {
+        } else if self.model.bodies.iter().any(|b| matches!(b.kind, BodyKind::Beam(_))) {
+            // (a beam's many coordinates make it pay; without one the model is small, and
+            // forward differences keep the constraints' geometric stiffness the structured
+            // Jacobian neglects, which the Newton iterations of a modal mechanism need)
             SystemJacobian::Preferred
         } else {
             SystemJacobian::Available
@@ -300,9 +303,12 @@ impl OdeSystem for MechanismSystem<'_> {
             cost.rhs_evaluations += 1;
         }
         let mut structured = self.ws.structured_jacobian.take().unwrap_or_else(|| Box::new(StructuredJacobian::new(self.model)));
-        let filled = structured.fill(self.model, self.memory, t, y, floors, self.ws, jacobian);
+        let filled = structured.fill(self.model, self.memory, t, y, floors, self.ws, jacobian).and_then(|passes| {
+            cost.force_evaluations = passes;
+            structured.difference_whole_columns(y, floors, jacobian, |y, f| self.rhs(t, y, f))
+        });
         self.ws.structured_jacobian = Some(structured);
-        cost.force_evaluations = filled?;
+        cost.rhs_evaluations += filled?;
         Ok(Some(cost))
     }
 
