@@ -372,7 +372,7 @@ class Model:
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian, step, spectral_radius)
         emit(_flexible_advice(spec_snapshot, options))
-        emit(_alpha_output_advice(options))
+        emit(_alpha_advice(options))
         emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
         kind = resultsfile.output_kind(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
@@ -454,13 +454,17 @@ def _flexible_advice(spec: dict, options: dict) -> list:
     return advice
 
 
-def _alpha_output_advice(options: dict) -> list:
-    """A warning when generalized-alpha's output step is not a whole number of its steps: its samples are step
-    ends (docs/theory/integrator-generalized-alpha.md), so the steps that cross an output time are shortened,
-    which changes the solution within the method's error."""
+def _alpha_advice(options: dict) -> list:
+    """A warning when ``step`` is given to a method that controls its own step, and when generalized-alpha's
+    output step is not a whole number of its steps: its samples are step ends
+    (docs/theory/integrator-generalized-alpha.md), so the steps that cross an output time are shortened, which
+    changes the solution within the method's error."""
     from .errors import Problem
 
     step, spacing = options.get("step"), options.get("output_step")
+    if options["method"] != "generalized_alpha" and step is not None:
+        return [Problem("simulation.step", f"only generalized_alpha takes a fixed step; {options['method']} sets its "
+                                           "own from rtol and atol (max_step caps it), so the step is ignored")]
     if options["method"] != "generalized_alpha" or step is None or spacing is None:
         return []
     ratio = spacing / step

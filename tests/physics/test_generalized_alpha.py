@@ -183,6 +183,9 @@ def test_peaks_come_from_the_step_ends_and_samples_are_step_ends():
         cut = model.simulate(0.3, method="generalized_alpha", step=0.01, stabilization="baumgarte",
                              output_step=0.015)
     assert cut.statistics["accepted_steps"] == 40
+    # a step given to a method that sets its own is ignored, and said so
+    with pytest.warns(jp.JointplayWarning, match="simulation.step: only generalized_alpha takes a fixed step"):
+        model.simulate(0.01, method="bdf", max_order=2, step=0.01, stabilization="baumgarte")
 
 
 @pytest.mark.parametrize("formulation", ["joint_coordinates", "absolute"])
