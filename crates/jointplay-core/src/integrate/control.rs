@@ -1,4 +1,4 @@
-//! Step-size control shared by both methods: the weighted error norm, the
+//! Step-size control shared by the methods: the weighted error norm, the
 //! starting-step heuristic and the PI step-size controller
 //! (Hairer, Nørsett & Wanner, Solving ODEs I, 2nd ed., Sections II.4 and IV.2).
 

@@ -1,4 +1,4 @@
-//! The step loop shared by both methods: step limits, output sampling,
+//! The step loop shared by every method: step limits, output sampling,
 //! event handling, `accept()` and restarts.
 
 use super::events::{find_first_event, step_needs_scan, EventBuffers};

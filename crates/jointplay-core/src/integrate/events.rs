@@ -1,6 +1,6 @@
 //! Event location on the dense output: the earliest rise of an event
 //! function through zero inside an accepted step, found with the Illinois
-//! variant of regula falsi (Dowell & Jarratt 1971), shared by both methods.
+//! variant of regula falsi (Dowell & Jarratt 1971), shared by every method.
 //!
 //! The event functions are sampled at the step end and at
 //! [`EVENT_SUBDIVISIONS`] - 1 interior points of the dense output, so that an
