@@ -28,7 +28,7 @@
 //! again, up to the nominal step. Dense output: the cubic Hermite interpolant
 //! of y and dy/dt = f(y) at both ends of the step.
 //! Sources: J. Chung, G. M. Hulbert, J. Appl. Mech. 60 (1993) 371-375;
-//! M. Arnold, O. Brüls, Multibody Syst. Dyn. 18 (2007) 185-202, Section 3
+//! M. Arnold, O. Brüls, Multibody Syst. Dyn. 18 (2007) 185-202
 //! (`docs/theory/integrator-generalized-alpha.md`).
 
 use super::control::{error_norm, eval, eval_start, Tolerances};
@@ -42,7 +42,7 @@ const NEWTON_ITERATIONS: usize = 6;
 /// of rtol and atol, is below this (the NDF's criterion).
 const NEWTON_TOLERANCE: f64 = 0.03;
 /// Factor by which the kept convergence-rate estimate may fall per iteration
-/// (CVODE's CRDOWN; Hindmarsh et al., ACM TOMS 31 (2005) 363-396, Section 2.1).
+/// (CVODE's CRDOWN; Hindmarsh et al., ACM TOMS 31 (2005) 363-396).
 const RATE_DECAY: f64 = 0.3;
 /// Step ratio after the Newton iterations failed with a fresh Jacobian.
 const NEWTON_FAILURE_SHRINK: f64 = 0.5;
@@ -62,8 +62,8 @@ pub(crate) struct Parameters {
 }
 
 impl Parameters {
-    /// Chung & Hulbert (1993), eq. (25)-(26) and (17)-(18): second order, and the
-    /// spectral radius of a vibration with omega h -> infinity equal to rho_inf.
+    /// Chung & Hulbert (1993): second order, and the spectral radius of a vibration
+    /// with omega h -> infinity equal to rho_inf.
     pub(crate) fn from_spectral_radius(rho_inf: f64) -> Self {
         let alpha_m = (2.0 * rho_inf - 1.0) / (rho_inf + 1.0);
         let alpha_f = rho_inf / (rho_inf + 1.0);
