@@ -676,7 +676,8 @@ BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reiss
 _FROM_BEAM = "none (a body given by `matrices`)"
 
 MODAL_MATRICES = Table("matrices", "A planar structure from another finite-element code: its mass and stiffness "
-                       "matrices over the coordinates (u_x, u_y, theta) of node 0, then node 1, ..., in the "
+                       "matrices over the coordinates (u_x, u_y, theta) of node 0, then node 1, ... (frame elements), "
+                       "or (u_x, u_y) of each node (plane solids: the matrices' size tells which), in the "
                        "structure's own axes, and its nodes' positions there, in one consistent set of units with "
                        "time in seconds (the force unit is the mass unit times the length unit per s^2: t, mm, s "
                        "give N). Each is a file, by its path from the model file's folder, or the values themselves "

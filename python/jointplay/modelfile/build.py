@@ -627,13 +627,15 @@ class Builder:
         if not fits or len(read) < len(readers) + len(units) or any(v is None for v in read.values()):
             return None
         length, mass = read["length_unit"], read["mass_unit"]
-        return {"from": "matrices", "mass": mx.core_entries(mx.in_si(read["mass"], length, mass)),
-                "stiffness": mx.core_entries(mx.in_si(read["stiffness"], length, mass)),
+        per_node = read["mass"].shape[0] // read["nodes"].shape[0]
+        return {"from": "matrices", "mass": mx.core_entries(mx.in_si(read["mass"], length, mass, per_node)),
+                "stiffness": mx.core_entries(mx.in_si(read["stiffness"], length, mass, per_node)),
                 "nodes": (read["nodes"] * length).tolist(),
                 "position": [float(v) for v in t.position], "angle": float(t.angle)}
 
     def structure_fits(self, read: dict, at: str) -> bool:
-        """The matrices are three coordinates per node, within the core's size for a structure."""
+        """The matrices have three coordinates per node (frame elements) or two (plane solids), both the same,
+        within the core's size for a structure."""
         n = read["nodes"].shape[0]
         if n > MAX_STRUCTURE_NODES:
             self.problem(join(at, "nodes"), f"{n} nodes: a structure given by matrices has at most "
@@ -645,10 +647,17 @@ class Builder:
             if read.get(key) is None:
                 continue
             size = read[key].shape[0]
-            if size != 3 * n:
+            if size not in (3 * n, 2 * n):
                 self.problem(join(at, key), f"must be {3 * n} x {3 * n}: three coordinates (u_x, u_y, theta) for "
-                                            f"each of the {n} nodes, got {size} x {size}")
+                                            f"each of the {n} nodes of a frame, or {2 * n} x {2 * n}: two (u_x, u_y) "
+                                            f"for each node of a plane solid, got {size} x {size}")
                 fits = False
+        if fits and read.get("mass") is not None and read.get("stiffness") is not None \
+                and read["mass"].shape != read["stiffness"].shape:
+            size = read["mass"].shape[0]
+            self.problem(join(at, "stiffness"), f"must be {size} x {size} as the mass matrix is, got "
+                                                f"{read['stiffness'].shape[0]} x {read['stiffness'].shape[0]}")
+            fits = False
         return fits
 
     def beam_material(self, t: Strict, section: dict | None, where: str) -> dict | None | bool:

@@ -6,7 +6,8 @@ The files hold numbers only: Matrix Market text (:func:`scipy.io.mmread`), NumPy
 plain text tables (:func:`numpy.loadtxt`). Nothing in them is executed. Units: the files share one consistent
 set, time in seconds; with a length unit ``L`` and a mass unit ``m`` (to SI by ``l`` and ``f``), every entry of
 coordinate ``i`` and ``j`` scales by ``f`` times ``l`` for each of ``i`` and ``j`` that is a rotation, and node
-positions by ``l`` (docs/theory/modal-body.md).
+positions by ``l`` (docs/theory/modal-body.md). Each node has three coordinates ``(u_x, u_y, theta)`` (frame
+elements) or two ``(u_x, u_y)`` (plane solids); the matrices' size tells which.
 """
 
 from __future__ import annotations
@@ -148,10 +149,14 @@ def read_nodes(source: Any, base: Path) -> np.ndarray:
     return nodes
 
 
-def in_si(matrix: scipy.sparse.coo_array, length: float, mass: float) -> scipy.sparse.coo_array:
-    """``matrix`` over nodal (u_x, u_y, theta) in SI units, from units whose length and mass are ``length`` m
-    and ``mass`` kg (time in seconds): entry (i, j) times ``mass`` and ``length`` per rotation among i, j."""
-    rotations = (matrix.row % 3 == 2).astype(int) + (matrix.col % 3 == 2).astype(int)
+def in_si(matrix: scipy.sparse.coo_array, length: float, mass: float, per_node: int = 3) -> scipy.sparse.coo_array:
+    """``matrix`` over nodal (u_x, u_y, theta) (``per_node`` 3) or (u_x, u_y) (2) in SI units, from units whose
+    length and mass are ``length`` m and ``mass`` kg (time in seconds): entry (i, j) times ``mass`` and
+    ``length`` per rotation among i, j."""
+    if per_node == 3:
+        rotations = (matrix.row % 3 == 2).astype(int) + (matrix.col % 3 == 2).astype(int)
+    else:
+        rotations = np.zeros(matrix.data.shape, dtype=int)
     return scipy.sparse.coo_array((matrix.data * mass * length ** rotations, (matrix.row, matrix.col)),
                                   shape=matrix.shape)
 

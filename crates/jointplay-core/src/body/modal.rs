@@ -31,7 +31,7 @@ use super::{channel, BeamBody, CoordinateChannels, SectionSite, Site};
 use crate::beam::{vibration_modes, BeamStrains};
 use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
 use crate::linalg::{cholesky_factor, cholesky_solve};
-use crate::modal::{check_free_structure, craig_bampton_modes, FrameReference, InertiaInvariants};
+use crate::modal::{check_free_structure, craig_bampton_modes, FrameReference, InertiaInvariants, NodalCoordinates};
 
 /// Most modes of one body: the hot loop keeps its vectors on the stack.
 pub const MAX_MODES: usize = 40;
@@ -57,13 +57,14 @@ pub struct ModalNodeSite {
 /// whose rotations are counted from its rest state).
 #[derive(Clone, Copy, Debug)]
 pub struct Structure<'a> {
-    /// Mass matrix [kg, kg m, kg m^2].
+    /// Mass matrix [kg, kg m, kg m^2], three coordinates `(u_x, u_y, theta)` per
+    /// node (frame elements) or two `(u_x, u_y)` (plane solid elements).
     pub mass: &'a DMatrix<f64>,
-    /// Stiffness matrix [N/m, N/rad, N m/rad].
+    /// Stiffness matrix [N/m, N/rad, N m/rad], the coordinates of `mass`.
     pub stiffness: &'a DMatrix<f64>,
     /// Node positions [m].
     pub positions: &'a [[f64; 2]],
-    /// Section angles of the nodes [rad].
+    /// Section angles of the nodes [rad] (ignored with two coordinates per node).
     pub angles: &'a [f64],
 }
 
@@ -110,24 +111,26 @@ pub struct ModalBody {
 
 impl ModalBody {
     /// The body of a structure of mass `mass` and stiffness `stiffness` (dense,
-    /// symmetric, `3 n_nodes` square, nodal `(u_x, u_y, theta)` in the body
+    /// symmetric, `d n_nodes` square, the nodal coordinates `coordinates` in the body
     /// frame's directions), nodes at `nodes` [m] (the frame's origin is moved to the
     /// first interface node; with a chord frame the second must lie on its x
     /// axis), Craig-Bampton modes for the interface nodes `interface` and the
     /// reference conditions `reference` with `n_normal` fixed-interface modes,
     /// and the damping ratio `damping_ratio` [-] of every mode.
-    pub fn from_finite_elements(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, nodes: &[Vec2], interface: &[usize], reference: FrameReference, n_normal: usize, damping_ratio: f64) -> Result<Self, String> {
+    #[allow(clippy::too_many_arguments)]
+    pub fn from_finite_elements(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, coordinates: NodalCoordinates, nodes: &[Vec2], interface: &[usize], reference: FrameReference, n_normal: usize, damping_ratio: f64) -> Result<Self, String> {
         if !(damping_ratio.is_finite() && damping_ratio >= 0.0) {
             return Err(format!("the damping ratio must be >= 0, got {damping_ratio}"));
         }
-        let modes = craig_bampton_modes(mass, stiffness, interface, reference, n_normal)?;
+        let d = coordinates.per_node();
+        let modes = craig_bampton_modes(mass, stiffness, coordinates, interface, reference, n_normal)?;
         let shapes = &modes.shapes;
         let m = shapes.ncols();
         if m > MAX_MODES {
             return Err(format!("a modal body has at most {MAX_MODES} modes, got {m}"));
         }
-        if nodes.len() * 3 != mass.nrows() || nodes.iter().any(|p| !(p.x.is_finite() && p.y.is_finite())) {
-            return Err(format!("give one finite position per node: {} positions for {} nodes", nodes.len(), mass.nrows() / 3));
+        if nodes.len() * d != mass.nrows() || nodes.iter().any(|p| !(p.x.is_finite() && p.y.is_finite())) {
+            return Err(format!("give one finite position per node: {} positions for {} nodes", nodes.len(), mass.nrows() / d));
         }
         let origin = nodes[interface[0]];
         let nodes: Vec<Vec2> = nodes.iter().map(|p| p - origin).collect();
@@ -137,17 +140,22 @@ impl ModalBody {
                 return Err(format!("with a chord frame the second interface node must lie on the frame's x axis; it is at ({}, {}) m from the first", chord.x, chord.y));
             }
         }
-        let invariants = InertiaInvariants::new(mass, &nodes, shapes)?;
+        let invariants = InertiaInvariants::new(mass, coordinates, &nodes, shapes)?;
         let modal_stiffness = shapes.transpose() * stiffness * shapes;
         let modal_mass = DMatrix::from_row_slice(m, m, &invariants.modal_mass);
         let (held_frequencies, damping) = held_modes(&modal_mass, &modal_stiffness, damping_ratio)?;
+        // (three rows per node, x, y and the section's angle; a node without an angle turns with the frame: zeros)
         let mut node_rows = Vec::with_capacity(3 * m * nodes.len());
         for a in 0..nodes.len() {
             for i in 0..3 {
-                node_rows.extend(shapes.row(3 * a + i).iter());
+                if i < d {
+                    node_rows.extend(shapes.row(d * a + i).iter());
+                } else {
+                    node_rows.extend(std::iter::repeat_n(0.0, m));
+                }
             }
         }
-        let rotational = (0..m).map(|j| j < modes.n_constraint && modes.boundary[j] % 3 == 2).collect();
+        let rotational = (0..m).map(|j| j < modes.n_constraint && coordinates.is_rotation(modes.boundary[j])).collect();
         Ok(Self {
             invariants,
             stiffness: modal_stiffness.transpose().iter().copied().collect(),
@@ -189,19 +197,19 @@ impl ModalBody {
     /// frame's pose `(x, y, phi)` [m, m, rad] in the structure's axes.
     pub fn from_structure(structure: &Structure, interface: &[usize], frame: FrameReference, n_normal: usize, damping_ratio: f64) -> Result<(Self, [f64; 3]), String> {
         let Structure { mass, stiffness, positions, angles } = *structure;
-        if positions.len() != angles.len() || 3 * positions.len() != mass.nrows() {
-            return Err(format!("{} node positions and {} section angles for matrices of size {}", positions.len(), angles.len(), mass.nrows()));
-        }
+        let coordinates = NodalCoordinates::of_size(mass.nrows(), positions.len()).filter(|_| positions.len() == angles.len())
+            .ok_or_else(|| format!("{} node positions and {} section angles for matrices of size {} (3 or 2 coordinates per node)", positions.len(), angles.len(), mass.nrows()))?;
+        let d = coordinates.per_node();
         if let Some(&node) = interface.iter().find(|&&node| node >= positions.len()) {
             return Err(format!("interface node {node} is not a node of the structure (it has {} nodes, from 0)", positions.len()));
         }
-        check_free_structure(stiffness, positions)?;
+        check_free_structure(stiffness, positions, coordinates)?;
         let first = *interface.first().ok_or("a modal body needs at least one interface node (the first carries its frame)")?;
-        let pose = [positions[first][0], positions[first][1], frame.frame_angle(interface, positions, angles)?];
+        let pose = [positions[first][0], positions[first][1], frame.frame_angle(interface, positions, angles, coordinates)?];
         // (the structure expressed in the frame: every node's translations turned by -phi)
         let (sin, cos) = pose[2].sin_cos();
         let n = mass.nrows();
-        let rotation = DMatrix::from_fn(n, n, |i, j| match (i / 3 == j / 3, i % 3, j % 3) {
+        let rotation = DMatrix::from_fn(n, n, |i, j| match (i / d == j / d, i % d, j % d) {
             (true, 0, 0) | (true, 1, 1) => cos,
             (true, 0, 1) => -sin,
             (true, 1, 0) => sin,
@@ -210,7 +218,7 @@ impl ModalBody {
         });
         let local = |a: &DMatrix<f64>| rotation.transpose() * a * &rotation;
         let nodes: Vec<Vec2> = positions.iter().map(|p| Vec2::new(cos * (p[0] - pose[0]) + sin * (p[1] - pose[1]), -sin * (p[0] - pose[0]) + cos * (p[1] - pose[1]))).collect();
-        let body = Self::from_finite_elements(&local(mass), &local(stiffness), &nodes, interface, frame, n_normal, damping_ratio)?;
+        let body = Self::from_finite_elements(&local(mass), &local(stiffness), coordinates, &nodes, interface, frame, n_normal, damping_ratio)?;
         Ok((body, pose))
     }
 

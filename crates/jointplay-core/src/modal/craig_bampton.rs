@@ -22,7 +22,7 @@
 
 use nalgebra::DMatrix;
 
-use super::FrameReference;
+use super::{FrameReference, NodalCoordinates};
 use crate::beam::vibration_modes;
 
 /// A Craig-Bampton mode set.
@@ -40,15 +40,16 @@ pub struct CraigBamptonModes {
 }
 
 /// The Craig-Bampton modes of the structure of mass `mass` and stiffness
-/// `stiffness` (dense, symmetric, `3 n_nodes` square, in the body frame) with
-/// the interface nodes `interface` (the first one carries the floating
-/// frame's origin), the frame's reference conditions `reference` and
-/// `n_normal` fixed-interface normal modes.
-pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize], reference: FrameReference, n_normal: usize) -> Result<CraigBamptonModes, String> {
+/// `stiffness` (dense, symmetric, `d n_nodes` square with the `d` coordinates
+/// `coordinates` per node, in the body frame) with the interface nodes
+/// `interface` (the first one carries the floating frame's origin), the
+/// frame's reference conditions `reference` and `n_normal` fixed-interface normal modes.
+pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, coordinates: NodalCoordinates, interface: &[usize], reference: FrameReference, n_normal: usize) -> Result<CraigBamptonModes, String> {
     let n = mass.nrows();
-    check_sizes(mass, stiffness, interface)?;
-    let frame = reference.held_coordinates(interface)?;
-    let held: Vec<usize> = interface.iter().flat_map(|&k| 3 * k..3 * k + 3).collect();
+    let d = coordinates.per_node();
+    check_sizes(mass, stiffness, d, interface)?;
+    let frame = reference.held_coordinates(interface, coordinates)?;
+    let held: Vec<usize> = interface.iter().flat_map(|&k| d * k..d * k + d).collect();
     let boundary: Vec<usize> = held.iter().copied().filter(|i| !frame.contains(i)).collect();
     let interior: Vec<usize> = (0..n).filter(|i| !held.contains(i)).collect();
     if n_normal > interior.len() {
@@ -63,7 +64,7 @@ pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interf
     let normal = vibration_modes(mass, stiffness, &held)?;
     for j in 0..n_normal {
         let column = normal.shapes.column(j);
-        let largest = (0..n).filter(|i| i % 3 != 2).map(|i| column[i].abs()).fold(0.0, f64::max);
+        let largest = (0..n).filter(|&i| !coordinates.is_rotation(i)).map(|i| column[i].abs()).fold(0.0, f64::max);
         let scale = if largest > 0.0 { 1.0 / largest } else { 1.0 };
         shapes.column_mut(boundary.len() + j).copy_from(&(column * scale));
     }
@@ -71,11 +72,11 @@ pub fn craig_bampton_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interf
     Ok(CraigBamptonModes { shapes, n_constraint, boundary, fixed_interface_frequencies: normal.angular_frequencies[..n_normal].to_vec() })
 }
 
-/// Square matrices of `3 n_nodes`, distinct interface nodes within the structure.
-fn check_sizes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize]) -> Result<(), String> {
+/// Square matrices of `d n_nodes`, distinct interface nodes within the structure.
+fn check_sizes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, d: usize, interface: &[usize]) -> Result<(), String> {
     let n = mass.nrows();
-    if n == 0 || !n.is_multiple_of(3) || mass.ncols() != n || stiffness.shape() != (n, n) {
-        return Err(format!("the mass and stiffness matrices must be square, of the same size, three coordinates per node; got {:?} and {:?}", mass.shape(), stiffness.shape()));
+    if n == 0 || !n.is_multiple_of(d) || mass.ncols() != n || stiffness.shape() != (n, n) {
+        return Err(format!("the mass and stiffness matrices must be square, of the same size, {d} coordinates per node; got {:?} and {:?}", mass.shape(), stiffness.shape()));
     }
     if mass.iter().chain(stiffness.iter()).any(|v| !v.is_finite()) {
         return Err("the mass and stiffness matrices must be finite".to_string());
@@ -90,8 +91,8 @@ fn check_sizes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, interface: &[usize
         return Err("a modal body needs at least one interface node (the first carries its frame)".to_string());
     }
     for (k, &node) in interface.iter().enumerate() {
-        if node >= n / 3 {
-            return Err(format!("interface node {node} is not a node of the structure (it has {} nodes)", n / 3));
+        if node >= n / d {
+            return Err(format!("interface node {node} is not a node of the structure (it has {} nodes)", n / d));
         }
         if interface[..k].contains(&node) {
             return Err(format!("interface node {node} is listed twice"));

@@ -27,6 +27,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use super::NodalCoordinates;
 use crate::dynamics::frame::Vec2;
 
 /// The invariants of one body, matrices row-major.
@@ -64,19 +65,20 @@ fn row_major(a: &DMatrix<f64>) -> Vec<f64> {
 }
 
 impl InertiaInvariants {
-    /// The invariants of the structure of mass `mass` (`3 n_nodes` square, nodal
-    /// `(u_x, u_y, theta)`), nodes at `nodes` in the body frame [m], modes
+    /// The invariants of the structure of mass `mass` (`d n_nodes` square, the
+    /// nodal coordinates `coordinates`), nodes at `nodes` in the body frame [m], modes
     /// `shapes` (columns over the nodal coordinates). The translational mass must
     /// be isotropic (`T^T M T = m I`), as a consistent or lumped mass whose `x`
     /// and `y` share their interpolation is.
-    pub fn new(mass: &DMatrix<f64>, nodes: &[Vec2], shapes: &DMatrix<f64>) -> Result<Self, String> {
+    pub fn new(mass: &DMatrix<f64>, coordinates: NodalCoordinates, nodes: &[Vec2], shapes: &DMatrix<f64>) -> Result<Self, String> {
         let n = mass.nrows();
-        if nodes.len() * 3 != n || shapes.nrows() != n {
+        let d = coordinates.per_node();
+        if nodes.len() * d != n || shapes.nrows() != n {
             return Err(format!("{} node positions and {} mode rows for a mass matrix of size {n}", nodes.len(), shapes.nrows()));
         }
-        let (x0, theta, tx, ty) = reference_vectors(nodes);
-        let c0: DVector<f64> = turn(&DMatrix::from_column_slice(n, 1, x0.as_slice())).column(0).into_owned() + &theta;
-        let c1 = turn(shapes);
+        let (x0, theta, tx, ty) = reference_vectors(nodes, d);
+        let c0: DVector<f64> = turn(&DMatrix::from_column_slice(n, 1, x0.as_slice()), d).column(0).into_owned() + &theta;
+        let c1 = turn(shapes, d);
         let translations = DMatrix::from_columns(&[tx, ty]);
         let mt = translations.transpose() * mass;
         let m_tt = &mt * &translations;
@@ -106,27 +108,30 @@ impl InertiaInvariants {
     }
 }
 
-/// `x_0` (the nodes' reference positions), `e_theta`, and the unit translations in x and y.
-fn reference_vectors(nodes: &[Vec2]) -> (DVector<f64>, DVector<f64>, DVector<f64>, DVector<f64>) {
-    let n = 3 * nodes.len();
+/// `x_0` (the nodes' reference positions), `e_theta` (zero without section angles), and the
+/// unit translations in x and y, for `d` coordinates per node.
+fn reference_vectors(nodes: &[Vec2], d: usize) -> (DVector<f64>, DVector<f64>, DVector<f64>, DVector<f64>) {
+    let n = d * nodes.len();
     let (mut x0, mut theta, mut tx, mut ty) = (DVector::zeros(n), DVector::zeros(n), DVector::zeros(n), DVector::zeros(n));
     for (a, p) in nodes.iter().enumerate() {
-        x0[3 * a] = p.x;
-        x0[3 * a + 1] = p.y;
-        theta[3 * a + 2] = 1.0;
-        tx[3 * a] = 1.0;
-        ty[3 * a + 1] = 1.0;
+        x0[d * a] = p.x;
+        x0[d * a + 1] = p.y;
+        if d == 3 {
+            theta[d * a + 2] = 1.0;
+        }
+        tx[d * a] = 1.0;
+        ty[d * a + 1] = 1.0;
     }
     (x0, theta, tx, ty)
 }
 
-/// `J a`: every nodal translation of every column turned by +90 degrees, rotations zero.
-fn turn(a: &DMatrix<f64>) -> DMatrix<f64> {
+/// `J a`: every nodal translation of every column turned by +90 degrees, rotations zero (`d` coordinates per node).
+fn turn(a: &DMatrix<f64>, d: usize) -> DMatrix<f64> {
     let mut out = DMatrix::zeros(a.nrows(), a.ncols());
     for c in 0..a.ncols() {
-        for node in 0..a.nrows() / 3 {
-            out[(3 * node, c)] = -a[(3 * node + 1, c)];
-            out[(3 * node + 1, c)] = a[(3 * node, c)];
+        for node in 0..a.nrows() / d {
+            out[(d * node, c)] = -a[(d * node + 1, c)];
+            out[(d * node + 1, c)] = a[(d * node, c)];
         }
     }
     out

@@ -3,17 +3,20 @@
 //! (`craig_bampton.rs`) for the frame's reference conditions
 //! (`reference.rs`), the check that a structure given by matrices is free
 //! (`free_structure.rs`) and the inertia invariants of a body moving with its
-//! frame (`invariants.rs`). The body kind is `body/modal.rs`; theory:
+//! frame (`invariants.rs`), for nodes with a section angle or without one
+//! (`nodal.rs`). The body kind is `body/modal.rs`; theory:
 //! `docs/theory/modal-body.md`.
 
 mod craig_bampton;
 mod free_structure;
 mod invariants;
+mod nodal;
 mod reference;
 
 pub use craig_bampton::{craig_bampton_modes, CraigBamptonModes};
 pub use free_structure::{check_free_structure, rigid_motions, RIGID_MOTION_TOLERANCE};
 pub use invariants::InertiaInvariants;
+pub use nodal::NodalCoordinates;
 pub use reference::FrameReference;
 
 #[cfg(test)]

@@ -10,6 +10,7 @@
 //! while in the tangent frame it has one proportional to the end's deflection,
 //! a spurious geometric stiffness (`docs/theory/modal-body.md`).
 
+use super::NodalCoordinates;
 use serde::{Deserialize, Serialize};
 
 /// Where a modal body's floating frame is attached.
@@ -29,14 +30,20 @@ pub enum FrameReference {
 }
 
 impl FrameReference {
-    /// The three held coordinates (nodal `(u_x, u_y, theta)` numbering) for the
+    /// The three held coordinates (nodal numbering of `coordinates`) for the
     /// interface nodes `interface` (the first carries the frame's origin).
-    pub fn held_coordinates(self, interface: &[usize]) -> Result<[usize; 3], String> {
+    pub fn held_coordinates(self, interface: &[usize], coordinates: NodalCoordinates) -> Result<[usize; 3], String> {
         let first = *interface.first().ok_or("a modal body needs at least one interface node (the first carries its frame)")?;
+        let d = coordinates.per_node();
         match self {
+            Self::Clamped if coordinates == NodalCoordinates::Translations => Err(
+                "a clamped frame holds the first interface node's section angle, which a structure with two coordinates per node \
+                 (a plane solid) does not have: use the chord frame"
+                    .to_string(),
+            ),
             Self::Clamped => Ok([3 * first, 3 * first + 1, 3 * first + 2]),
             Self::Chord => match interface.get(1) {
-                Some(&second) => Ok([3 * first, 3 * first + 1, 3 * second + 1]),
+                Some(&second) => Ok([d * first, d * first + 1, d * second + 1]),
                 None => Err("a chord frame needs a second interface node (its x axis runs from the first to the second); \
                              give one, or clamp the frame at the first"
                     .to_string()),
@@ -46,12 +53,12 @@ impl FrameReference {
 
     /// The frame's angle in the structure's coordinates [rad], the structure's
     /// node positions `nodes` [m] and section angles `angles` [rad] given.
-    pub fn frame_angle(self, interface: &[usize], nodes: &[[f64; 2]], angles: &[f64]) -> Result<f64, String> {
+    pub fn frame_angle(self, interface: &[usize], nodes: &[[f64; 2]], angles: &[f64], coordinates: NodalCoordinates) -> Result<f64, String> {
         let first = interface[0];
+        self.held_coordinates(interface, coordinates)?;
         match self {
             Self::Clamped => Ok(angles[first]),
             Self::Chord => {
-                self.held_coordinates(interface)?;
                 let (a, b) = (nodes[first], nodes[interface[1]]);
                 let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
                 if dx.hypot(dy) == 0.0 {

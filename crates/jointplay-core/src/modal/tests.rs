@@ -10,7 +10,7 @@ use nalgebra::DMatrix;
 use crate::beam::{BeamSection, ElementOrder};
 use crate::body::{BeamBody, BeamMesh, BodyKind, ModalBody, ModalNodeSite, Site};
 use crate::dynamics::frame::{BodyIndex, Frame, Marker, Vec2};
-use crate::modal::FrameReference;
+use crate::modal::{FrameReference, NodalCoordinates};
 
 /// A 1 m beam (EI = 100 N m^2, rho A = 2 kg/m) of `elements` quadratic elements, placed at an angle.
 fn beam(elements: usize) -> BeamBody {
@@ -291,9 +291,23 @@ fn bad_structures_are_refused_with_a_reason() {
     assert!(err(&[0, 4], 100, 0.0).contains("normal modes"));
     let (m, k) = mesh.dense_mass_and_stiffness(&mesh.reference_coordinates());
     let nodes = vec![Vec2::zeros(); 4];
-    assert!(ModalBody::from_finite_elements(&m, &k, &nodes, &[0], FrameReference::Clamped, 1, 0.0).unwrap_err().contains("one finite position per node"));
+    assert!(ModalBody::from_finite_elements(&m, &k, NodalCoordinates::TranslationsAndRotation, &nodes, &[0], FrameReference::Clamped, 1, 0.0).unwrap_err().contains("one finite position per node"));
     let mut skew = k.clone();
     skew[(3, 4)] += 1.0;
     let nodes: Vec<Vec2> = (0..mesh.n_nodes()).map(|a| Vec2::new(0.25 * a as f64, 0.0)).collect();
-    assert!(ModalBody::from_finite_elements(&m, &skew, &nodes, &[0], FrameReference::Clamped, 1, 0.0).unwrap_err().contains("stiffness matrix must be symmetric"));
+    assert!(ModalBody::from_finite_elements(&m, &skew, NodalCoordinates::TranslationsAndRotation, &nodes, &[0], FrameReference::Clamped, 1, 0.0).unwrap_err().contains("stiffness matrix must be symmetric"));
+}
+
+#[test]
+fn a_plane_solids_nodes_have_two_coordinates_and_no_section_angle_to_clamp() {
+    use crate::modal::rigid_motions;
+    assert_eq!(NodalCoordinates::of_size(12, 4), Some(NodalCoordinates::TranslationsAndRotation));
+    assert_eq!(NodalCoordinates::of_size(8, 4), Some(NodalCoordinates::Translations));
+    assert_eq!((NodalCoordinates::of_size(10, 4), NodalCoordinates::of_size(8, 0)), (None, None));
+    // the chord frame holds node 1's two translations and node 3's u_y; a clamped frame has no angle to hold
+    assert_eq!(FrameReference::Chord.held_coordinates(&[1, 3], NodalCoordinates::Translations), Ok([2, 3, 7]));
+    assert!(FrameReference::Clamped.held_coordinates(&[1, 3], NodalCoordinates::Translations).unwrap_err().contains("use the chord frame"));
+    // the rotation about the origin moves each node by (-y, x) and has no angle row
+    let [_, _, (_, rotation)] = rigid_motions(&[[1.0, 0.0], [0.0, 2.0]], NodalCoordinates::Translations);
+    assert_eq!(rotation.as_slice(), &[-0.0, 1.0, -2.0, 0.0]);
 }

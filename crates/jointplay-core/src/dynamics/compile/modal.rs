@@ -7,7 +7,7 @@ use nalgebra::DMatrix;
 use super::beams::build_beam;
 use crate::body::{BeamBody, ModalBody, Structure, MAX_STRUCTURE_NODES};
 use crate::error::ModelErrors;
-use crate::modal::FrameReference;
+use crate::modal::{FrameReference, NodalCoordinates};
 use crate::spec::{BeamMeshSpec, BeamSectionSpec, BeamSpec, ModalBodySpec, ModalPointSpec, ModalStructureSpec, SparseMatrixSpec, StructureMatricesSpec};
 
 /// A built modal body: the body, its frame's initial pose `(x, y, phi)` [m, m, rad],
@@ -176,16 +176,24 @@ fn structure_matrices(matrices: &StructureMatricesSpec, loc: &str, errors: &mut 
         errors.push(at("nodes"), format!("node {k} is not at a finite position: ({}, {}) m", node[0], node[1]));
         return None;
     }
-    let mass = dense(&matrices.mass, 3 * n_nodes).map_err(|message| errors.push(at("mass"), message));
-    let stiffness = dense(&matrices.stiffness, 3 * n_nodes).map_err(|message| errors.push(at("stiffness"), message));
+    // (the mass matrix's size says how many coordinates each node has: 3 for frame elements, 2 for plane solids)
+    let coordinates = NodalCoordinates::of_size(matrices.mass.size, n_nodes).unwrap_or(NodalCoordinates::TranslationsAndRotation);
+    let mass = dense(&matrices.mass, coordinates, n_nodes).map_err(|message| errors.push(at("mass"), message));
+    let stiffness = dense(&matrices.stiffness, coordinates, n_nodes).map_err(|message| errors.push(at("stiffness"), message));
     Some((mass.ok()?, stiffness.ok()?))
 }
 
-/// The dense matrix of `matrix`, which must be of size `size` (three coordinates per node), or why it cannot be.
-fn dense(matrix: &SparseMatrixSpec, size: usize) -> Result<DMatrix<f64>, String> {
+/// The dense matrix of `matrix`, which must have the `coordinates` of each of `n_nodes` nodes, or why it cannot be.
+fn dense(matrix: &SparseMatrixSpec, coordinates: NodalCoordinates, n_nodes: usize) -> Result<DMatrix<f64>, String> {
     let SparseMatrixSpec { size: given, rows, columns, values } = matrix;
+    let size = coordinates.per_node() * n_nodes;
     if *given != size {
-        return Err(format!("must be {size} x {size} (three coordinates u_x, u_y, theta for each of the {} nodes), got {given} x {given}", size / 3));
+        return Err(format!(
+            "must be {0} x {0} (three coordinates u_x, u_y, theta for each of the {n_nodes} nodes of a frame) or {1} x {1} (two, u_x and u_y, \
+             for each node of a plane solid), got {given} x {given}",
+            3 * n_nodes,
+            2 * n_nodes
+        ));
     }
     if rows.len() != values.len() || columns.len() != values.len() {
         return Err(format!("{} rows, {} columns and {} values: one of each per entry", rows.len(), columns.len(), values.len()));
