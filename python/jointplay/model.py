@@ -339,14 +339,16 @@ class Model:
         ``"generalized_alpha"`` (implicit, second order, a fixed nominal ``step`` [s] halved only where
         Newton fails, and the vibrations that step does not resolve damped by the factor
         ``spectral_radius`` per step, 0 to 1, default 0.9: for flexible links;
-        docs/theory/integrator-generalized-alpha.md). ``rtol``/``atol``: error
-        tolerances (of ``"generalized_alpha"``: of its Newton iterations only, its accuracy is the step's); ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
+        docs/theory/integrator-generalized-alpha.md). ``rtol``/``atol``: error tolerances (of
+        ``"generalized_alpha"``: of its Newton iterations only, its accuracy is the step's);
+        ``max_step`` [s]; ``output_step`` [s] samples on a regular grid (default: every
         accepted step; the peaks and extrema of :attr:`Results.extrema` come from every accepted step
         whatever it is); ``max_steps``: most attempted (accepted + rejected) steps, default 10 000 000,
         beyond which the run stops with a :class:`~jointplay.errors.SimulationError` naming the option.
         ``max_order``: highest order of ``"bdf"``, 1 to 5 (default 5); 2 for undamped flexible links, whose
         vibrations the orders above 2 (not A-stable) would amplify. ``jacobian``: the Newton Jacobian of
-        ``"bdf"`` and ``"generalized_alpha"``, ``"auto"``, ``"finite_difference"`` or ``"structured"`` (docs/theory/integrator-jacobian.md).
+        ``"bdf"`` and ``"generalized_alpha"``, ``"auto"``, ``"finite_difference"`` or ``"structured"``
+        (docs/theory/integrator-jacobian.md).
         ``progress`` is called with the simulated time about ten times a second.
 
         Values that are legal but almost certainly mistakes (a clearance of 20 % of the radius, a mass
