@@ -455,6 +455,26 @@ impl MechanismSystem<'_> {
         Ok(())
     }
 
+    /// Tracked channel values, then point acceleration magnitudes [m/s^2], at the
+    /// step end `(t, y)` from the sample recorded there, when there is one and the
+    /// workspace still holds its evaluation (for the points); false otherwise.
+    /// (The driver records a step end before the tracker observes the step, from
+    /// the same state.)
+    fn tracked_values_from_sample(&self, t: f64, y: &[f64], values: &mut [f64]) -> bool {
+        let Some(sample) = self.trajectory.last_sample_at(t) else { return false };
+        if !self.step_end.holds_evaluation(t, y) {
+            return false;
+        }
+        let (channels, points) = values.split_at_mut(self.tracking.channels.len());
+        for (v, &c) in channels.iter_mut().zip(&self.tracking.channels) {
+            *v = sample[c];
+        }
+        for (v, marker) in points.iter_mut().zip(&self.tracking.points) {
+            *v = point_acceleration(self.model, self.ws, marker);
+        }
+        true
+    }
+
     /// Tracked channel values, then point acceleration magnitudes [m/s^2], from
     /// the evaluation the workspace holds at `state`.
     fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
@@ -488,7 +508,11 @@ impl StepProbe for SystemProbe<'_, '_, '_> {
     fn channels_at(&mut self, t: f64, values: &mut [f64]) -> Result<(), SimulationError> {
         let system = &mut *self.system;
         if t == self.t_new {
-            // the step end: reuse its evaluation when the workspace holds it with the needed outputs
+            // the step end: the sample just recorded there holds the channels' values
+            if system.tracked_values_from_sample(t, self.y_new, values) {
+                return Ok(());
+            }
+            // else reuse its evaluation when the workspace holds it with the needed outputs
             if !system.step_end.holds_evaluation(t, self.y_new) {
                 system.evaluate_sample(t, self.y_new)?;
             } else if system.model.has_detailed_outputs() && !system.step_end.evaluated_detailed {

@@ -150,6 +150,16 @@ impl Trajectory {
         self.channels.iter().position(|c| c.name == name).map(|c| self.column(c))
     }
 
+    /// The values of the last sample (one per channel) when it was taken at `t` [s]
+    /// and is still held (not yet handed to a sink).
+    pub(crate) fn last_sample_at(&self, t: f64) -> Option<&[f64]> {
+        if self.time.last() != Some(&t) {
+            return None;
+        }
+        let width = self.channels.len();
+        Some(&self.samples[self.samples.len() - width..])
+    }
+
     /// The held values sample after sample (`len()` rows of `channels.len()` values), row-major.
     pub fn samples(&self) -> &[f64] {
         &self.samples

@@ -7,17 +7,19 @@
 //! here, in caller-owned buffers: `L D L^T` of the symmetric positive
 //! definite `Phi_q M^-1 Phi_q^T` by groups of coupled rows or by a sparse
 //! elimination program (chosen from its pattern, [`PatternLdl`]), a dense
-//! Cholesky for the assembly, and the LU factorisation of the implicit
+//! Cholesky for the assembly, a dense `L D L^T` for the mass matrix of joint coordinates, and the LU factorisation of the implicit
 //! integrator's iteration matrix. nalgebra is used for fixed-size 2D vectors
 //! and, in tests, as the independent check.
 
 pub mod block_ldl;
 mod cholesky;
+mod dense_ldl;
 mod lu;
 mod pattern_ldl;
 mod sparse_cholesky;
 
 pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency, RELATIVE_PIVOT_TOLERANCE};
+pub use dense_ldl::ldl_solve_scaled;
 pub use lu::{lu_factor, lu_solve, SingularMatrix};
 pub use block_ldl::BlockLdl;
 pub use pattern_ldl::PatternLdl;

@@ -1,12 +1,12 @@
 //! Equations of motion in joint coordinates: `R^T M R theta_ddot = R^T (Q - M b)`.
 
-use super::tree::JointTree;
+use super::tree::{JointTree, ANY_DOFS};
 use crate::dynamics::equations::{applied_forces, check_finite};
 use crate::dynamics::frame::Frame;
 use crate::force::ElementMemory;
 use crate::dynamics::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::linalg::{cholesky_factor, cholesky_solve};
+use crate::linalg::ldl_solve_scaled;
 
 impl JointTree {
     /// Writes the body-space state `[q, v, z]` (the model's `StateLayout`) of the
@@ -36,7 +36,18 @@ pub(crate) fn place(model: &Model, tree: &JointTree, t: f64, y: &[f64], ws: &mut
 /// `ws.accelerations`, their applied forces in `ws.generalised_force` and the
 /// element state rates in `ws.element_state_rates`. Never allocates.
 pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ElementMemory], t: f64, y: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
-    let n = tree.n_dofs;
+    match tree.n_dofs {
+        1 => joint_accelerations_sized::<1>(model, tree, memory, t, y, ws),
+        2 => joint_accelerations_sized::<2>(model, tree, memory, t, y, ws),
+        3 => joint_accelerations_sized::<3>(model, tree, memory, t, y, ws),
+        4 => joint_accelerations_sized::<4>(model, tree, memory, t, y, ws),
+        _ => joint_accelerations_sized::<ANY_DOFS>(model, tree, memory, t, y, ws),
+    }
+}
+
+/// [`joint_accelerations`] for `N` joint coordinates ([`ANY_DOFS`]: any number).
+fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, memory: &[ElementMemory], t: f64, y: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
+    let n = tree.dofs::<N>();
     let (theta, rest) = y.split_at(n);
     let (theta_dot, z) = rest.split_at(n);
     tree.place_and_linearise(t, theta, theta_dot, &mut ws.frames, &mut ws.joint.velocity_map, &mut ws.joint.bias);
@@ -46,7 +57,7 @@ pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ElementMem
     ws.joint.body_state = body;
     applied?;
     let j = &mut ws.joint;
-    let (r, mass, theta_ddot, scale) = (&j.velocity_map, &mut j.mass, &mut j.accelerations, &mut j.scale);
+    let (r, mass, theta_ddot) = (&j.velocity_map, &mut j.mass, &mut j.accelerations);
     // R^T M R (lower triangle) and R^T (Q - M b)
     mass.fill(0.0);
     theta_ddot.fill(0.0);
@@ -65,10 +76,11 @@ pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ElementMem
         }
     }
     if n > 0 {
-        solve_scaled(mass, n, theta_ddot, scale).map_err(|(k, pivot)| SimulationError::SingularConfiguration {
+        // (scaled to a unit diagonal for the rank test: joint coordinates mix lengths and angles)
+        ldl_solve_scaled(mass, n, theta_ddot).map_err(|d| SimulationError::SingularConfiguration {
             time: t,
             element: "joint coordinates".to_string(),
-            cause: format!("the mass matrix of the joint coordinates is singular at coordinate {k} (relative pivot {pivot:.2e})"),
+            cause: format!("the mass matrix of the joint coordinates is singular at coordinate {} (relative pivot {:.2e})", d.row, d.relative_pivot),
         })?;
     }
     // the bodies' accelerations v_dot = R theta_ddot + b
@@ -76,28 +88,4 @@ pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ElementMem
         *a = b + r[row * n..(row + 1) * n].iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
     }
     check_finite(model, t, ws)
-}
-
-/// Solves `A x = b` in place for the symmetric positive definite `A` (lower
-/// triangle of the row-major `n x n` buffer, overwritten by the factor) with
-/// its diagonal scaled to one first: the joint coordinates mix lengths and
-/// angles, so their entries differ by orders of magnitude that say nothing
-/// about singularity. `scale` (length `n`) is scratch. On failure, the
-/// coordinate and the relative pivot.
-fn solve_scaled(a: &mut [f64], n: usize, b: &mut [f64], scale: &mut [f64]) -> Result<(), (usize, f64)> {
-    for (i, s) in scale.iter_mut().enumerate() {
-        *s = 1.0 / a[i * n + i].sqrt();
-    }
-    for i in 0..n {
-        for j in 0..=i {
-            a[i * n + j] *= scale[i] * scale[j];
-        }
-        b[i] *= scale[i];
-    }
-    cholesky_factor(a, n).map_err(|d| (d.row, d.relative_pivot))?;
-    cholesky_solve(a, n, b);
-    for (x, s) in b.iter_mut().zip(scale.iter()) {
-        *x *= s;
-    }
-    Ok(())
 }

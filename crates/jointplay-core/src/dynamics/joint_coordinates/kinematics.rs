@@ -17,7 +17,7 @@
 //! coordinate; a free revolute joint's state coordinate is the child's
 //! absolute angle, so its `s_dot` is `sigma (theta_dot_k - omega_p)`.
 
-use super::tree::{EdgeCoordinate, EdgeJoint, JointTree, TreeEdge};
+use super::tree::{EdgeCoordinate, EdgeJoint, JointTree, TreeEdge, ANY_DOFS};
 use crate::dynamics::frame::{perp, Frame, Vec2};
 
 /// The joint's relative coordinate `s` (revolute: `phi_second - phi_first`),
@@ -121,7 +121,18 @@ impl JointTree {
     /// row-major `nv x n_dofs`) and the bias accelerations `b` (`nv`) of the bodies'
     /// velocity coordinates `(vx, vy, omega)` (three per body, in body order).
     pub fn place_and_linearise(&self, t: f64, theta: &[f64], theta_dot: &[f64], frames: &mut [Frame], velocity_map: &mut [f64], bias: &mut [f64]) {
-        let n = self.n_dofs;
+        match self.n_dofs {
+            1 => self.place_and_linearise_sized::<1>(t, theta, theta_dot, frames, velocity_map, bias),
+            2 => self.place_and_linearise_sized::<2>(t, theta, theta_dot, frames, velocity_map, bias),
+            3 => self.place_and_linearise_sized::<3>(t, theta, theta_dot, frames, velocity_map, bias),
+            4 => self.place_and_linearise_sized::<4>(t, theta, theta_dot, frames, velocity_map, bias),
+            _ => self.place_and_linearise_sized::<ANY_DOFS>(t, theta, theta_dot, frames, velocity_map, bias),
+        }
+    }
+
+    /// [`JointTree::place_and_linearise`] for `N` joint coordinates ([`ANY_DOFS`]: any number).
+    fn place_and_linearise_sized<const N: usize>(&self, t: f64, theta: &[f64], theta_dot: &[f64], frames: &mut [Frame], velocity_map: &mut [f64], bias: &mut [f64]) {
+        let n = self.dofs::<N>();
         for edge in &self.edges {
             let parent = frames[edge.parent.0];
             let (s, s_dot, mut s_ddot) = coordinate(edge, &parent, t, theta, theta_dot);

@@ -61,12 +61,10 @@ pub struct JointWorkspace {
     pub velocity_map: Vec<f64>,
     /// `b`: body accelerations at zero joint accelerations (`nv`) [m/s^2, rad/s^2].
     pub bias: Vec<f64>,
-    /// `R^T M R`, then its Cholesky factor (`n_dofs x n_dofs`).
+    /// `R^T M R`, then its `L D L^T` factor (`n_dofs x n_dofs`).
     pub mass: Vec<f64>,
     /// Joint accelerations `theta_ddot` (`n_dofs`).
     pub accelerations: Vec<f64>,
-    /// Scratch of the solve (`n_dofs`).
-    pub scale: Vec<f64>,
     /// Body-space state `[q, v, z]` of the last placement, laid out as the model's `StateLayout`.
     pub body_state: Vec<f64>,
     /// Wrench each body receives from its parent edge, `(fx, fy, moment about the centre of mass)`, by body index.
@@ -84,7 +82,6 @@ impl JointWorkspace {
             bias: vec![0.0; nv],
             mass: vec![0.0; n * n],
             accelerations: vec![0.0; n],
-            scale: vec![0.0; n],
             body_state: vec![0.0; len],
             edge_wrenches: vec![[0.0; 3]; n_bodies + 1],
         }

@@ -57,6 +57,9 @@ pub enum EdgeCoordinate {
     Locked,
 }
 
+/// The size parameter of the kernels compiled for any number of joint coordinates.
+pub(crate) const ANY_DOFS: usize = 0;
+
 /// One edge of the tree: a body and how it hangs on its parent.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TreeEdge {
@@ -134,6 +137,14 @@ impl JointTree {
             }
         }
         Ok(JointTree { edges, n_dofs, mass })
+    }
+
+    /// The number of joint coordinates, `N` itself unless it is [`ANY_DOFS`]: the
+    /// kernels are compiled for small fixed sizes, whose loops the compiler unrolls.
+    #[inline(always)]
+    pub(crate) fn dofs<const N: usize>(&self) -> usize {
+        debug_assert!(N == ANY_DOFS || N == self.n_dofs);
+        if N == ANY_DOFS { self.n_dofs } else { N }
     }
 
     /// Velocity coordinates of body `body` in the body-space layout (three per planar body).
