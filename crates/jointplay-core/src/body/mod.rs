@@ -337,6 +337,14 @@ impl BodyKind {
         }
     }
 
+    /// Whether [`BodyKind::add_gravity`] adds the same load in every configuration.
+    pub fn gravity_load_is_constant(&self) -> bool {
+        match self {
+            Self::PlanarRigid(_) | Self::Beam(_) => true,
+            Self::Modal(_) => false,
+        }
+    }
+
     /// Adds the generalised force of uniform gravity `g` [m/s^2] at the body's positions `q` to `out`.
     #[inline]
     pub fn add_gravity(&self, g: Vec2, q: &[f64], out: &mut [f64]) {

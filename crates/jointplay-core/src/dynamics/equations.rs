@@ -123,14 +123,19 @@ fn non_finite_constraints(model: &Model, t: f64, deficiency: RankDeficiency) -> 
 /// and the force elements (clearance joints included), whose evaluations are
 /// kept in the workspace.
 pub(crate) fn applied_forces(model: &Model, memory: &[ElementMemory], t: f64, (q, v, z): (&[f64], &[f64], &[f64]), ws: &mut Workspace) -> Result<(), SimulationError> {
-    ws.generalised_force.fill(0.0);
+    match &ws.gravity_load {
+        Some(load) => ws.generalised_force.copy_from_slice(load),
+        None => ws.generalised_force.fill(0.0),
+    }
     if model.layout.has_body_forces {
         for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
             body.kind.add_body_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
         }
     }
     let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout, &ws.frames);
-    forces.add_gravity(model.gravity, q);
+    if ws.gravity_load.is_none() {
+        forces.add_gravity(model.gravity, q);
+    }
     for (k, element) in model.forces.iter().enumerate() {
         let states = model.layout.force_states[k].clone();
         let own = (&z[states.clone()], &mut ws.element_state_rates[states]);

@@ -193,6 +193,11 @@ impl MechanismSystem<'_> {
     /// Frames of the bodies the event functions read from the state y, in
     /// their own buffer so that the workspace keeps the last evaluation.
     fn update_event_frames(&mut self, t: f64, y: &[f64]) {
+        if self.step_end.holds_evaluation(t, y) {
+            // (the evaluation at this very state, a step end, placed them all)
+            self.ws.event_frames.copy_from_slice(&self.ws.frames);
+            return;
+        }
         if let Some(tree) = self.tree {
             let n = tree.n_dofs;
             tree.place(t, &y[..n], &y[n..2 * n], &mut self.ws.event_frames);

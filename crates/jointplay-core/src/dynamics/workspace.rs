@@ -16,6 +16,9 @@ pub struct Workspace {
     pub event_frames: Vec<Frame>,
     /// Generalised applied force `Q` over the velocity coordinates.
     pub generalised_force: Vec<f64>,
+    /// The generalised force of gravity alone when it does not depend on the
+    /// configuration (no modal body), formed once for the run.
+    pub gravity_load: Option<Vec<f64>>,
     /// Values of the constraint Jacobian `Phi_q`, block by block (all rows including
     /// assembly locks; the pattern is `Model::jacobian_pattern`).
     pub jacobian: Vec<f64>,
@@ -82,6 +85,7 @@ impl Workspace {
             frames: vec![Frame::GROUND; model.n_frames()],
             event_frames: vec![Frame::GROUND; model.n_frames()],
             generalised_force: vec![0.0; n],
+            gravity_load: constant_gravity_load(model),
             jacobian: vec![0.0; model.jacobian_pattern.n_values()],
             jacobian_solved: vec![0.0; model.jacobian_pattern.n_solved()],
             mass_scratch: vec![0.0; model.layout.bodies.iter().map(|b| b.nv).max().unwrap_or(0)],
@@ -113,4 +117,17 @@ impl Workspace {
             structured_jacobian: None,
         }
     }
+}
+
+/// The generalised force of gravity when no body's depends on its configuration.
+fn constant_gravity_load(model: &Model) -> Option<Vec<f64>> {
+    if !model.bodies.iter().all(|b| b.kind.gravity_load_is_constant()) {
+        return None;
+    }
+    let mut load = vec![0.0; model.n_velocities()];
+    let q = vec![0.0; model.layout.nq];
+    for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
+        body.kind.add_gravity(model.gravity, &q[address.q_range()], &mut load[address.v_range()]);
+    }
+    Some(load)
 }
