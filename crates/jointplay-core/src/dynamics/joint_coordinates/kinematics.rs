@@ -25,7 +25,7 @@ use crate::dynamics::frame::{perp, Frame, Vec2};
 /// free revolute joint is the child's absolute angle (so that its size, which
 /// the relative error control sees, does not grow with the turns of the parent);
 /// its relative value comes from the parent's frame.
-#[inline]
+#[inline(always)]
 fn coordinate(edge: &TreeEdge, parent: &Frame, t: f64, theta: &[f64], theta_dot: &[f64]) -> (f64, f64, f64) {
     match &edge.coordinate {
         EdgeCoordinate::Dofs(k) => match edge.joint {
@@ -43,7 +43,7 @@ fn coordinate(edge: &TreeEdge, parent: &Frame, t: f64, theta: &[f64], theta_dot:
 /// Frame at `angle` with zero position and velocities, taking sine and cosine
 /// from `previous` when its angle is bit for bit the same (a body whose angle
 /// is locked, or unchanged between evaluations).
-#[inline]
+#[inline(always)]
 fn turned(previous: &Frame, angle: f64, angular_velocity: f64) -> Frame {
     let (sin, cos) = if previous.angle.to_bits() == angle.to_bits() { (previous.sin, previous.cos) } else { angle.sin_cos() };
     Frame { position: Vec2::zeros(), angle, cos, sin, velocity: Vec2::zeros(), angular_velocity }
@@ -51,7 +51,7 @@ fn turned(previous: &Frame, angle: f64, angular_velocity: f64) -> Frame {
 
 /// The motion `h = (h_lin, h_omega)` of a one-coordinate joint and its rate `h_dot`
 /// (linear part only; `h_omega` is constant), at the placed child frame.
-#[inline]
+#[inline(always)]
 fn joint_motion(edge: &TreeEdge, parent: &Frame, child: &Frame) -> (Vec2, f64, Vec2) {
     match &edge.joint {
         EdgeJoint::Revolute { parent_point, sign, .. } => {
@@ -70,7 +70,7 @@ fn joint_motion(edge: &TreeEdge, parent: &Frame, child: &Frame) -> (Vec2, f64, V
 
 /// Places the child of `edge`: its frame from the parent frame and the joint's
 /// coordinate `s` and rate `s_dot` (`previous`: the child's last frame).
-#[inline]
+#[inline(always)]
 fn place_child(edge: &TreeEdge, parent: &Frame, previous: &Frame, theta: &[f64], theta_dot: &[f64], (s, s_dot): (f64, f64)) -> Frame {
     match &edge.joint {
         EdgeJoint::Free => {
