@@ -58,15 +58,18 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
     applied?;
     let j = &mut ws.joint;
     let (r, mass, theta_ddot) = (&j.velocity_map, &mut j.mass, &mut j.accelerations);
-    // R^T M R (lower triangle) and R^T (Q - M b)
+    // R^T M R (lower triangle) and R^T (Q - M b), row by row of R (slices of
+    // constant length when N is: the loops unroll)
+    let (mass, theta_ddot) = (&mut mass[..n * n], &mut theta_ddot[..n]);
     mass.fill(0.0);
     theta_ddot.fill(0.0);
-    for (row, ((&m, &q), &b)) in tree.mass.iter().zip(&ws.generalised_force).zip(&j.bias).enumerate() {
-        let r_row = &r[row * n..(row + 1) * n];
+    let rows = r.chunks_exact(n.max(1)).zip(tree.mass.iter().zip(&ws.generalised_force).zip(&j.bias));
+    for (r_row, ((&m, &q), &b)) in rows {
         let effective = q - m * b;
         for k in 0..n {
             let mk = m * r_row[k];
-            if mk == 0.0 {
+            // (a large tree's R is sparse)
+            if N == ANY_DOFS && mk == 0.0 {
                 continue;
             }
             theta_ddot[k] += r_row[k] * effective;
@@ -84,8 +87,11 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
         })?;
     }
     // the bodies' accelerations v_dot = R theta_ddot + b
-    for (row, (a, &b)) in ws.accelerations.iter_mut().zip(&j.bias).enumerate() {
-        *a = b + r[row * n..(row + 1) * n].iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
+    if n == 0 {
+        ws.accelerations.copy_from_slice(&j.bias);
+    }
+    for (a, (r_row, &b)) in ws.accelerations.iter_mut().zip(r.chunks_exact(n.max(1)).zip(&j.bias)) {
+        *a = b + r_row.iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
     }
     check_finite(model, t, ws)
 }

@@ -272,3 +272,38 @@ fn a_free_tree_conserves_energy_in_joint_coordinates() {
     assert!(swing > 0.1, "the mechanism moves ({swing} J)");
     assert!(drift < 1e-8 * swing, "energy drifts by {drift:e} J of {swing} J");
 }
+
+#[test]
+fn a_tree_without_coordinates_moves_as_driven_with_the_closed_form_motor_torque() {
+    // a crank turned at a constant rate omega under gravity: no joint coordinate is left, the
+    // accelerations are the bias alone, and the motor holds the weight, torque = m g d cos(theta)
+    let (m_crank, d, omega, g) = (0.3, 0.025, 40.0, 9.81);
+    let json = format!(
+        r#"{{
+        "name": "driven crank", "gravity": [0, -{g}],
+        "ground_points": [{{"name": "O", "position": [0, 0]}}],
+        "bodies": [
+          {{"name": "crank", "mass": {m_crank}, "inertia": 1e-4, "position": [{d}, 0.0], "angle": 0, "velocity": [0, {v}], "angular_velocity": {omega},
+            "points": [{{"name": "O", "position": [-{d}, 0]}}]}}
+        ],
+        "joints": [{{"type": "revolute", "name": "O", "first": "ground.O", "second": "crank.O"}}],
+        "drivers": [{{"name": "motor", "joint": "O", "function": {{"kind": "polynomial", "coefficients": [0, {omega}]}}}}],
+        "beams": [], "sensors": [], "forces": []
+        }}"#,
+        v = omega * d
+    );
+    let m = model(&json);
+    assert_eq!(tree(&m).n_dofs, 0);
+    let outcome = run(&m, Formulation::JointCoordinates);
+    let trajectory = &outcome.trajectory;
+    let (angle, torque) = (trajectory.channel("crank.angle").unwrap(), trajectory.channel("motor.torque").unwrap());
+    let (ax, ay) = (trajectory.channel("crank.ax").unwrap(), trajectory.channel("crank.ay").unwrap());
+    for (k, &t) in trajectory.time.iter().enumerate() {
+        let theta = omega * t;
+        assert!((angle[k] - theta).abs() < 1e-12, "angle at {t}");
+        // the centre's centripetal acceleration omega^2 d towards the pivot
+        assert!((ax[k] + omega * omega * d * theta.cos()).abs() < 1e-9 && (ay[k] + omega * omega * d * theta.sin()).abs() < 1e-9, "acceleration at {t}");
+        let expected = m_crank * g * d * theta.cos();
+        assert!((torque[k] - expected).abs() < 1e-12 + 1e-9 * expected.abs(), "torque at {t}: {} vs {expected}", torque[k]);
+    }
+}
