@@ -1,6 +1,8 @@
 //! Output channels `"<element>.<quantity>"` in SI units and their values
 //! at a sample (the [`super::Trajectory`] records them).
 
+use std::ops::Range;
+
 use super::frame::cross;
 use super::model::ElementKind;
 use crate::body::BodyKind;
@@ -43,14 +45,115 @@ pub(crate) struct Channel {
     pub source: Source,
 }
 
+/// How a sample reads a run of channels that one computation serves: a body's
+/// consecutive coordinates, rates or accelerations as one copy, an element's
+/// consecutive outputs from one evaluation of them (a recorded sample costs
+/// a dispatch per run instead of one per channel).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum ChannelRead {
+    /// Coordinates `q[range]`.
+    Coordinates(Range<usize>),
+    /// Rates `v[range]`.
+    Velocities(Range<usize>),
+    /// Accelerations `v_dot[range]`.
+    Accelerations(Range<usize>),
+    /// Outputs `outputs` of force element `element`.
+    ForceOutputs { element: usize, outputs: Range<usize> },
+    /// Reaction outputs `outputs` (`fx, fy, f, moment`) of the ideal joint `element`.
+    Reactions { element: usize, outputs: Range<usize> },
+    /// Energies `[kinetic, potential, total][range]`.
+    Energies(Range<usize>),
+    /// One channel of any other source.
+    One(Source),
+}
+
+impl ChannelRead {
+    /// The reads of channels with these sources, in their order.
+    pub(crate) fn plan(model: &Model, sources: impl IntoIterator<Item = Source>) -> Vec<ChannelRead> {
+        let mut reads: Vec<ChannelRead> = Vec::new();
+        for source in sources {
+            let joined = match (reads.last_mut(), source) {
+                (Some(Self::Coordinates(r)), Source::Coordinate(k))
+                | (Some(Self::Velocities(r)), Source::Velocity(k))
+                | (Some(Self::Accelerations(r)), Source::Acceleration(k)) => Self::extend(r, k),
+                (Some(Self::ForceOutputs { element, outputs }), Source::Force(f, which)) if *element == f => Self::extend(outputs, which as usize),
+                (Some(Self::Reactions { element, outputs }), Source::Ideal(e, which)) if *element == e => Self::extend(outputs, which as usize),
+                (Some(Self::Energies(r)), Source::Energy(which)) => Self::extend(r, which as usize),
+                _ => false,
+            };
+            if joined {
+                continue;
+            }
+            reads.push(match source {
+                Source::Coordinate(k) => Self::Coordinates(k..k + 1),
+                Source::Velocity(k) => Self::Velocities(k..k + 1),
+                Source::Acceleration(k) => Self::Accelerations(k..k + 1),
+                Source::Force(f, which) => Self::ForceOutputs { element: f, outputs: which as usize..which as usize + 1 },
+                Source::Ideal(e, which) if !is_driver(model, e) => Self::Reactions { element: e, outputs: which as usize..which as usize + 1 },
+                Source::Energy(which) => Self::Energies(which as usize..which as usize + 1),
+                source => Self::One(source),
+            });
+        }
+        reads
+    }
+
+    /// Extends `range` by `k` when `k` is its next index.
+    fn extend(range: &mut Range<usize>, k: usize) -> bool {
+        let next = range.end == k;
+        if next {
+            range.end += 1;
+        }
+        next
+    }
+
+    /// Number of channels it reads.
+    fn len(&self) -> usize {
+        match self {
+            Self::Coordinates(r) | Self::Velocities(r) | Self::Accelerations(r) | Self::Energies(r) => r.len(),
+            Self::ForceOutputs { outputs, .. } | Self::Reactions { outputs, .. } => outputs.len(),
+            Self::One(_) => 1,
+        }
+    }
+}
+
 /// Appends the values of all channels at one sample (in the order of
 /// `model.channels`) to `out`, after filling the workspace's
 /// `constraint_forces` once for all reaction channels.
 pub(crate) fn append_sample(model: &Model, y: &[f64], ws: &mut Workspace, out: &mut Vec<f64>) {
+    let start = out.len();
+    out.resize(start + model.channels.len(), 0.0);
+    read_channels(model, &model.channel_reads, y, ws, &mut out[start..]);
+}
+
+/// The values of the channels `reads` reads at the evaluation the workspace
+/// holds at `y` into `out` (one per channel), after filling the workspace's
+/// `constraint_forces` once for all reaction channels.
+pub(crate) fn read_channels(model: &Model, reads: &[ChannelRead], y: &[f64], ws: &mut Workspace, out: &mut [f64]) {
     update_constraint_forces(model, ws);
     let ws = &*ws;
-    let energy = kinetic_and_potential_energy(model, y, ws);
-    out.extend(model.channels.iter().map(|channel| value(model, channel.source, y, ws, energy)));
+    let (q, v, _) = model.layout.split(y);
+    let mut at = 0;
+    for read in reads {
+        let out = &mut out[at..at + read.len()];
+        at += out.len();
+        match read {
+            ChannelRead::Coordinates(r) => out.copy_from_slice(&q[r.clone()]),
+            ChannelRead::Velocities(r) => out.copy_from_slice(&v[r.clone()]),
+            ChannelRead::Accelerations(r) => out.copy_from_slice(&ws.accelerations[r.clone()]),
+            ChannelRead::ForceOutputs { element, outputs } => model.forces[*element].outputs(outputs.clone(), &ws.frames, &ws.element_work[*element], out),
+            ChannelRead::Reactions { element, outputs } => out.copy_from_slice(&reactions(model, *element, ws)[outputs.clone()]),
+            ChannelRead::Energies(r) => {
+                let [kinetic, potential] = kinetic_and_potential_energy(model, y, ws);
+                out.copy_from_slice(&[kinetic, potential, kinetic + potential][r.clone()]);
+            }
+            ChannelRead::One(source) => out[0] = value(model, *source, y, ws, [f64::NAN; 2]),
+        }
+    }
+}
+
+/// Whether ideal element `e` is a driver (one output, its effort).
+fn is_driver(model: &Model, e: usize) -> bool {
+    matches!(model.elements[e].kind, ElementKind::AngleDriver | ElementKind::DisplacementDriver)
 }
 
 /// The value of one channel; `energy` is `[kinetic, potential]` [J] of the sample.
@@ -59,10 +162,7 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
         Source::Coordinate(k) => y[k],
         Source::Velocity(k) => y[model.layout.nq + k],
         Source::Acceleration(k) => ws.accelerations[k],
-        Source::Ideal(e, which) => match model.elements[e].kind {
-            ElementKind::AngleDriver | ElementKind::DisplacementDriver => driver_effort(model, e, ws),
-            _ => reaction_value(model, e, which, ws),
-        },
+        Source::Ideal(e, which) => if is_driver(model, e) { driver_effort(model, e, ws) } else { reactions(model, e, ws)[which as usize] },
         Source::Force(f, which) => model.forces[f].output(which as usize, &ws.frames, &ws.element_work[f]),
         Source::Gauge(k, which) => gauge_value(model, k, which, y),
         Source::Energy(0) => energy[0],
@@ -124,19 +224,13 @@ fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 
     g
 }
 
-fn reaction_value(model: &Model, e: usize, which: u8, ws: &Workspace) -> f64 {
+/// The reaction outputs `[fx, fy, f, moment]` of ideal joint `e` from `ws.constraint_forces`
+/// (the moment about the element's point on its second body).
+fn reactions(model: &Model, e: usize, ws: &Workspace) -> [f64; 4] {
     let [fx, fy, moment] = ws.constraint_forces[e];
-    match which {
-        0 => fx,
-        1 => fy,
-        2 => (fx * fx + fy * fy).sqrt(),
-        _ => {
-            // moment about the element's point on the second body
-            let element = &model.elements[e];
-            let frame = &ws.frames[element.frames[1]];
-            moment - cross(frame.rotate(element.second_point), nalgebra::Vector2::new(fx, fy))
-        }
-    }
+    let element = &model.elements[e];
+    let frame = &ws.frames[element.frames[1]];
+    [fx, fy, (fx * fx + fy * fy).sqrt(), moment - cross(frame.rotate(element.second_point), nalgebra::Vector2::new(fx, fy))]
 }
 
 fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
@@ -157,4 +251,45 @@ fn kinetic_and_potential_energy(model: &Model, y: &[f64], ws: &Workspace) -> [f6
     let elements: f64 = model.forces.iter().zip(&ws.element_work).map(|(element, work)| element.potential_energy(work)).sum();
     let potential = own + elements;
     [kinetic, potential]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::dynamics::equations::{accelerations, Stabilization};
+    use crate::dynamics::assemble;
+
+    #[test]
+    fn a_sample_read_by_runs_equals_every_channel_read_alone() {
+        // a slider-crank with a clearance joint (contact outputs), reactions of a driven
+        // joint, a driver's effort and the energies; its pin in contact after a push
+        let model = crate::dynamics::modal_tests::slider_crank(false, true);
+        let mut ws = Workspace::new(&model);
+        let mut state = assemble(&model, 0.0, &mut ws).unwrap();
+        let nq = model.layout.nq;
+        for v in &mut state.y[nq..nq + model.layout.nv] {
+            *v += 0.3;
+        }
+        accelerations(&model, &state.memory, 0.0, &state.y, Stabilization::Projection, &mut ws).unwrap();
+        let reads = &model.channel_reads;
+        assert!(reads.len() < model.channels.len() / 2, "runs join channels: {} reads of {}", reads.len(), model.channels.len());
+        assert!(reads.iter().any(|r| matches!(r, ChannelRead::ForceOutputs { outputs, .. } if outputs.len() > 5)));
+        assert!(reads.iter().any(|r| matches!(r, ChannelRead::Reactions { outputs, .. } if outputs.len() > 2)));
+        let mut sample = Vec::new();
+        append_sample(&model, &state.y, &mut ws, &mut sample);
+        let energy = kinetic_and_potential_energy(&model, &state.y, &ws);
+        assert_eq!(sample.len(), model.channels.len());
+        for (k, channel) in model.channels.iter().enumerate() {
+            let alone = value(&model, channel.source, &state.y, &ws, energy);
+            assert_eq!(sample[k].to_bits(), alone.to_bits(), "{}: {} vs {alone}", channel.info.name, sample[k]);
+        }
+        // a subset (the tracker's) reads the same values
+        let subset: Vec<usize> = (0..model.channels.len()).filter(|c| c % 3 != 1).collect();
+        let subset_reads = ChannelRead::plan(&model, subset.iter().map(|&c| model.channels[c].source));
+        let mut values = vec![0.0; subset.len()];
+        read_channels(&model, &subset_reads, &state.y, &mut ws, &mut values);
+        for (v, &c) in values.iter().zip(&subset) {
+            assert_eq!(v.to_bits(), sample[c].to_bits(), "{}", model.channels[c].info.name);
+        }
+    }
 }

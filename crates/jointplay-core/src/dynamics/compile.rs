@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use super::channels::{Channel, ChannelInfo, Source};
+use super::channels::{Channel, ChannelInfo, ChannelRead, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use super::frame::{perp, BodyIndex, Frame, Marker, Vec2};
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
@@ -88,6 +88,7 @@ impl<'s> Compiler<'s> {
             initial_velocities: Vec::new(),
             initial_element_states: Vec::new(),
             channels: Vec::new(),
+            channel_reads: Vec::new(),
             joint_tree: Err("not compiled".to_string()),
         };
         Self {
@@ -644,6 +645,7 @@ impl<'s> Compiler<'s> {
         for (q, (quantity, description)) in [("kinetic_energy", "kinetic energy"), ("potential_energy", "potential energy (gravity, strain, springs, contact)"), ("energy", "total mechanical energy")].iter().enumerate() {
             self.channel("system", quantity, "J", description.to_string(), Source::Energy(q as u8));
         }
+        self.model.channel_reads = ChannelRead::plan(&self.model, self.model.channels.iter().map(|c| c.source));
         self.errors.into_result(self.model)
     }
 

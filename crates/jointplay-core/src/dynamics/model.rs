@@ -1,6 +1,6 @@
 //! The compiled, immutable description of a mechanism.
 
-use super::channels::Channel;
+use super::channels::{Channel, ChannelRead};
 use super::frame::{BodyIndex, Frame, Marker, Vec2};
 use super::joint_coordinates::JointTree;
 use super::constraint_jacobian::JacobianPattern;
@@ -141,6 +141,8 @@ pub struct Model {
     pub initial_element_states: Vec<f64>,
     /// Output channels, in recording order.
     pub(crate) channels: Vec<Channel>,
+    /// How a sample reads them (runs that one copy or one evaluation serves).
+    pub(crate) channel_reads: Vec<ChannelRead>,
     /// The tree of the ideal joints, for the joint-coordinate formulation, or
     /// why the model needs absolute coordinates (a joint closing a loop, ...).
     pub joint_tree: Result<JointTree, String>,

@@ -1,6 +1,7 @@
 //! Running a simulation: options, diagnostics, and the outcome that keeps
 //! whatever was computed even when the run fails.
 
+use super::channels::ChannelRead;
 use super::trajectory::{SampleSink, Trajectory};
 use super::equations::{update_frames, Stabilization};
 use super::joint_coordinates::{self, Formulation, JointTree};
@@ -198,6 +199,7 @@ fn new_tracking(model: &Model, len: usize) -> Tracking {
     let points: Vec<Marker> = model.points.iter().filter(|p| !p.1.body.is_ground()).map(|p| p.1).collect();
     Tracking {
         tracker: ExtremaTracker::new(channels.len() + points.len(), model.n_events()),
+        reads: ChannelRead::plan(model, channels.iter().map(|&c| model.channels[c].source)),
         channels,
         points,
         state: vec![0.0; len],

@@ -3,7 +3,7 @@
 //! clearance joint's contact onset and latched onset velocity), drift
 //! projection after each accepted step, and recording of the channels.
 
-use super::channels::{update_constraint_forces, value};
+use super::channels::{read_channels, ChannelRead};
 use super::extrema::{ExtremaTracker, StepProbe};
 use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
@@ -49,6 +49,8 @@ pub(crate) struct Tracking {
     pub tracker: ExtremaTracker,
     /// Indices into `Model::channels` of the tracked channels.
     pub channels: Vec<usize>,
+    /// How an evaluation reads them.
+    pub reads: Vec<ChannelRead>,
     /// Named body points whose acceleration magnitude is tracked after the channels.
     pub points: Vec<Marker>,
     /// State from the dense output at a time inside a step.
@@ -483,17 +485,14 @@ impl MechanismSystem<'_> {
     /// Tracked channel values, then point acceleration magnitudes [m/s^2], from
     /// the evaluation the workspace holds at `state`.
     fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
-        update_constraint_forces(self.model, self.ws);
-        let ws = &*self.ws;
         // (in joint coordinates the evaluation's body-space state)
-        let state = if self.tree.is_some() { &ws.joint.body_state[..] } else { state };
+        let body = std::mem::take(&mut self.ws.joint.body_state);
+        let state = if self.tree.is_some() { &body[..] } else { state };
         let (channels, points) = values.split_at_mut(self.tracking.channels.len());
-        for (v, &c) in channels.iter_mut().zip(&self.tracking.channels) {
-            // (tracked channels read forces and accelerations, never the energy)
-            *v = value(self.model, self.model.channels[c].source, state, ws, [f64::NAN; 2]);
-        }
+        read_channels(self.model, &self.tracking.reads, state, self.ws, channels);
+        self.ws.joint.body_state = body;
         for (v, marker) in points.iter_mut().zip(&self.tracking.points) {
-            *v = point_acceleration(self.model, ws, marker);
+            *v = point_acceleration(self.model, self.ws, marker);
         }
     }
 }

@@ -235,6 +235,15 @@ impl ForceElement {
         matches!(self, Self::ClearanceRevolute(e) if e.lubrication.is_some())
     }
 
+    /// Outputs `which` (indices into [`ForceElement::channels`]) of the last evaluation into `out` (one each) [SI units].
+    pub fn outputs(&self, which: std::ops::Range<usize>, frames: &[Frame], work: &ElementWork, out: &mut [f64]) {
+        match (self, work) {
+            (Self::ClearanceRevolute(e), ElementWork::Clearance(work)) => out.copy_from_slice(&e.outputs(frames, work)[which]),
+            (_, ElementWork::Outputs(output)) => out.copy_from_slice(&output.values[which]),
+            _ => out.fill(f64::NAN),
+        }
+    }
+
     /// Value of channel `which` from the last evaluation in `work` [SI units].
     pub fn output(&self, which: usize, frames: &[Frame], work: &ElementWork) -> f64 {
         match (self, work) {

@@ -140,29 +140,35 @@ impl ClearanceRevolute {
 
     /// Value of channel `which` (an index into [`CHANNELS`]) from the last evaluation.
     pub fn output(&self, which: usize, frames: &[Frame], work: &ClearanceWork) -> f64 {
+        self.outputs(frames, work)[which]
+    }
+
+    /// Values of all channels ([`CHANNELS`], the film's zero for a dry joint) from the last evaluation.
+    pub fn outputs(&self, frames: &[Frame], work: &ClearanceWork) -> [f64; CHANNELS.len()] {
         let (c, f) = (&work.contact, &work.film);
-        match which {
-            0 => c.eccentricity.x,
-            1 => c.eccentricity.y,
-            2 => c.eccentricity.norm() / self.clearance,
-            3 => c.penetration.max(0.0),
-            4 => c.normal_force,
-            5 => c.friction_force,
-            // the joint's total force on the journal: dry contact plus film (zero for a dry joint)
-            6 => c.force_on_journal.x + f.force_on_journal.x,
-            7 => c.force_on_journal.y + f.force_on_journal.y,
-            8 => (c.force_on_journal + f.force_on_journal).norm(),
-            9 => if c.in_contact { c.penetration_rate } else { self.free_radial_velocity(frames, c) },
-            10 => c.sliding_velocity,
-            11 => f64::from(u8::from(c.in_contact)),
-            12 => f.film_min,
-            13 => f.force_on_journal.x,
-            14 => f.force_on_journal.y,
-            15 => f.force_on_journal.norm(),
-            16 => f.peak_pressure,
-            17 => f.weight,
-            _ => f64::from(f.mode),
-        }
+        // the joint's total force on the journal: dry contact plus film (zero for a dry joint)
+        let total = c.force_on_journal + f.force_on_journal;
+        [
+            c.eccentricity.x,
+            c.eccentricity.y,
+            c.eccentricity.norm() / self.clearance,
+            c.penetration.max(0.0),
+            c.normal_force,
+            c.friction_force,
+            total.x,
+            total.y,
+            total.norm(),
+            if c.in_contact { c.penetration_rate } else { self.free_radial_velocity(frames, c) },
+            c.sliding_velocity,
+            f64::from(u8::from(c.in_contact)),
+            f.film_min,
+            f.force_on_journal.x,
+            f.force_on_journal.y,
+            f.force_on_journal.norm(),
+            f.peak_pressure,
+            f.weight,
+            f64::from(f.mode),
+        ]
     }
 
     /// `d|e|/dt` while the journal is free [m/s] (0 at `e = 0`).
