@@ -238,14 +238,14 @@ impl BeamBody {
         }
     }
 
-    /// The rigid frame's rows `[1, 0, -(A s)_y]`, `[0, 1, (A s)_x]` spread over the nodes.
-    pub fn marker_jacobian(frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
-        let s = frame.rotate(marker.local);
+    /// The rigid frame's rows `scale [1, 0, -(A s)_y]`, `scale [0, 1, (A s)_x]` spread over the nodes.
+    pub fn marker_jacobian(frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
+        let s = frame.rotate(marker.local) * scale;
         jx.fill(0.0);
         jy.fill(0.0);
         let site = Self::section(marker);
-        Self::spread(site, [1.0, 0.0, -s.y], jx);
-        Self::spread(site, [0.0, 1.0, s.x], jy);
+        Self::spread(site, [scale, 0.0, -s.y], jx);
+        Self::spread(site, [0.0, scale, s.x], jy);
     }
 
     /// `along . [[1, 0, -(A s)_y], [0, 1, (A s)_x]]` spread over the nodes.

@@ -127,6 +127,15 @@ impl BodyKind {
         }
     }
 
+    /// Moves `frame` to the body's frame at `q`, `v` in place (as [`Self::frame`] with it as the previous frame).
+    #[inline]
+    pub fn update_frame(&self, q: &[f64], v: &[f64], frame: &mut Frame) {
+        match self {
+            Self::PlanarRigid(_) => frame.move_to(q, v),
+            _ => *frame = self.frame(q, v, frame),
+        }
+    }
+
     /// Frame of the marker site `site` (pose and velocity), as [`Self::frame`].
     #[inline]
     pub fn site_frame(&self, site: &Site, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
@@ -139,13 +148,13 @@ impl BodyKind {
 
     /// Jacobian of the global velocity of `marker`'s point (its frame is `frame`,
     /// the body's reference frame `body`) by the velocity coordinates the marker
-    /// moves with ([`Self::marker_coordinates`]): row x into `jx`, row y into `jy` [m/m, m/rad].
+    /// moves with ([`Self::marker_coordinates`]), times `scale` [-]: row x into `jx`, row y into `jy` [m/m, m/rad].
     #[inline]
-    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
+    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
         match self {
-            Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, marker.local, jx, jy),
-            Self::Beam(_) => BeamBody::marker_jacobian(frame, marker, jx, jy),
-            Self::Modal(b) => b.marker_jacobian(body, frame, marker, jx, jy),
+            Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, marker.local, scale, jx, jy),
+            Self::Beam(_) => BeamBody::marker_jacobian(frame, marker, scale, jx, jy),
+            Self::Modal(b) => b.marker_jacobian(body, frame, marker, scale, jx, jy),
         }
     }
 

@@ -424,15 +424,15 @@ impl ModalBody {
         body.rotate(Vec2::new(rows.0[i], rows.1[i])) + perp(s) * rows.2[i]
     }
 
-    /// `d(v_P)/d(v)`: `[I, perp(P - R), A Phi_a + perp(s) Psi_a]`, rows x and y.
-    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, jx: &mut [f64], jy: &mut [f64]) {
+    /// `scale d(v_P)/d(v)`: `scale [I, perp(P - R), A Phi_a + perp(s) Psi_a]`, rows x and y.
+    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
         let s = frame.rotate(marker.local);
-        let d = frame.position + s - body.position;
-        jx[..3].copy_from_slice(&[1.0, 0.0, -d.y]);
-        jy[..3].copy_from_slice(&[0.0, 1.0, d.x]);
+        let d = (frame.position + s - body.position) * scale;
+        jx[..3].copy_from_slice(&[scale, 0.0, -d.y]);
+        jy[..3].copy_from_slice(&[0.0, scale, d.x]);
         let rows = self.rows(self.node(marker));
         for i in 0..self.n_modes() {
-            let c = Self::modal_column(body, rows, s, i);
+            let c = Self::modal_column(body, rows, s, i) * scale;
             jx[3 + i] = c.x;
             jy[3 + i] = c.y;
         }

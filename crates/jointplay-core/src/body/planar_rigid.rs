@@ -58,12 +58,12 @@ impl PlanarRigidBody {
         Frame::from_coordinates_after(previous, q, v)
     }
 
-    /// `d(r_G + A s)/d(x, y, phi)` = `[[1, 0, -(A s)_y], [0, 1, (A s)_x]]`.
+    /// `scale d(r_G + A s)/d(x, y, phi)` = `scale [[1, 0, -(A s)_y], [0, 1, (A s)_x]]`.
     #[inline]
-    pub fn marker_jacobian(frame: &Frame, local: Vec2, jx: &mut [f64], jy: &mut [f64]) {
-        let s = frame.rotate(local);
-        jx.copy_from_slice(&[1.0, 0.0, -s.y]);
-        jy.copy_from_slice(&[0.0, 1.0, s.x]);
+    pub fn marker_jacobian(frame: &Frame, local: Vec2, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
+        let s = frame.rotate(local) * scale;
+        jx.copy_from_slice(&[scale, 0.0, -s.y]);
+        jy.copy_from_slice(&[0.0, scale, s.x]);
     }
 
     /// Adds `along . [[1, 0, -(A s)_y], [0, 1, (A s)_x]]` to `out`.

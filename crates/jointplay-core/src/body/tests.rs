@@ -24,7 +24,7 @@ fn the_marker_jacobian_is_the_derivative_of_the_marker_position() {
     let body = bar();
     let frame = frame_at(&body, &Q, &V);
     let (mut jx, mut jy) = ([0.0; 3], [0.0; 3]);
-    body.marker_jacobian(&frame, &frame, &MARKER, &mut jx, &mut jy);
+    body.marker_jacobian(&frame, &frame, &MARKER, 1.0, &mut jx, &mut jy);
     let h = 1e-6;
     for k in 0..3 {
         let (mut plus, mut minus) = (Q, Q);

@@ -64,7 +64,7 @@ fn a_beam_marker_moves_as_its_jacobian_says_and_a_point_force_does_its_virtual_w
     let block = kind.marker_coordinates(&marker);
     assert_eq!(block.len(), 9, "a section of a quadratic element moves with its three nodes");
     let (mut jx, mut jy) = (vec![0.0; 9], vec![0.0; 9]);
-    kind.marker_jacobian(&Frame::GROUND, &frame, &marker, &mut jx, &mut jy);
+    kind.marker_jacobian(&Frame::GROUND, &frame, &marker, 1.0, &mut jx, &mut jy);
     let h = 1e-6;
     for (i, c) in block.clone().enumerate() {
         let (mut plus, mut minus) = (q.clone(), q.clone());

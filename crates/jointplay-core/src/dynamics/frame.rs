@@ -108,6 +108,21 @@ impl Frame {
         Self::with_sin_cos(q, qdot, sin_cos)
     }
 
+    /// Moves the frame to `(x, y, phi)` with rates `qdot` in place, as
+    /// [`Frame::from_coordinates_after`] with itself as the previous frame (no
+    /// temporary frame: assigning a returned one through the reference it was
+    /// computed from makes the compiler build it on the stack and copy it).
+    #[inline]
+    pub fn move_to(&mut self, q: &[f64], qdot: &[f64]) {
+        if self.angle.to_bits() != q[2].to_bits() {
+            (self.sin, self.cos) = q[2].sin_cos();
+            self.angle = q[2];
+        }
+        self.position = Vec2::new(q[0], q[1]);
+        self.velocity = Vec2::new(qdot[0], qdot[1]);
+        self.angular_velocity = qdot[2];
+    }
+
     /// Frame from `(x, y, phi)`, their rates and `(sin phi, cos phi)`.
     #[inline]
     fn with_sin_cos(q: &[f64], qdot: &[f64], (sin, cos): (f64, f64)) -> Frame {
@@ -162,5 +177,11 @@ mod tests {
         let stale = Frame { sin: 9.0, ..fresh };
         assert_eq!(Frame::from_coordinates_after(&stale, &[0.1, -0.2, 0.8], &qdot), Frame::from_coordinates(&[0.1, -0.2, 0.8], &qdot));
         assert_eq!(Frame::from_coordinates_after(&Frame::GROUND, &q, &qdot), fresh);
+        // in place, the same
+        for (start, q) in [(fresh, [0.5, 0.5, 0.7]), (stale, [0.1, -0.2, 0.8]), (Frame::GROUND, q)] {
+            let mut moved = start;
+            moved.move_to(&q, &qdot);
+            assert_eq!(moved, Frame::from_coordinates_after(&start, &q, &qdot));
+        }
     }
 }

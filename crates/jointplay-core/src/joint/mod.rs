@@ -93,10 +93,7 @@ impl ConstraintRows<'_> {
         // (a later row's blocks sit after an earlier row's)
         let (head, tail) = self.jacobian.split_at_mut(y.start);
         let (jx, jy) = (&mut head[x], &mut tail[..y.end - y.start]);
-        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, jx, jy);
-        if scale != 1.0 {
-            jx.iter_mut().chain(jy.iter_mut()).for_each(|j| *j *= scale);
-        }
+        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, scale, jx, jy);
     }
 
     /// Adds `scale d(omega)/d(v)` of `marker`'s frame to row `row + r`, block `slot`.
@@ -108,7 +105,7 @@ impl ConstraintRows<'_> {
     }
 
     /// The velocity-dependent part of `marker`'s point acceleration (zero on the ground) [m/s^2].
-    #[inline]
+    #[inline(always)]
     pub fn bias_acceleration(&self, frames: &[Frame], marker: &Marker) -> Vec2 {
         if marker.body.is_ground() {
             return Vec2::zeros();
@@ -117,7 +114,7 @@ impl ConstraintRows<'_> {
     }
 
     /// The velocity-dependent part of `marker`'s angular acceleration (zero on the ground) [rad/s^2].
-    #[inline]
+    #[inline(always)]
     pub fn bias_angular_acceleration(&self, frames: &[Frame], marker: &Marker) -> f64 {
         if marker.body.is_ground() {
             return 0.0;

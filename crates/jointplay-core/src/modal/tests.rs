@@ -225,7 +225,7 @@ fn a_node_marker_moves_as_its_jacobian_says_and_a_point_force_does_its_virtual_w
     let (body_frame, frame) = frames(&q, &v);
     let (mut jx, mut jy) = (vec![0.0; n], vec![0.0; n]);
     assert_eq!(kind.marker_coordinates(&marker), 0..n);
-    kind.marker_jacobian(&body_frame, &frame, &marker, &mut jx, &mut jy);
+    kind.marker_jacobian(&body_frame, &frame, &marker, 1.0, &mut jx, &mut jy);
     let h = 1e-6;
     for c in 0..n {
         let (mut plus, mut minus) = (q.clone(), q.clone());
