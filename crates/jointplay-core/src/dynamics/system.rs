@@ -183,10 +183,11 @@ impl MechanismSystem<'_> {
     /// Records the sample at `(t, y)` from the evaluation the workspace holds there
     /// (in joint coordinates, with the body-space state of that evaluation).
     fn push_sample(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
-        if self.tree.is_none() {
+        let Some(tree) = self.tree else {
             return self.trajectory.push(self.model, t, y, self.ws);
-        }
-        let body = std::mem::take(&mut self.ws.joint.body_state);
+        };
+        let mut body = std::mem::take(&mut self.ws.joint.body_state);
+        tree.body_state(self.model, &self.ws.frames, &y[2 * tree.n_dofs..], &mut body);
         let pushed = self.trajectory.push(self.model, t, &body, self.ws);
         self.ws.joint.body_state = body;
         pushed
@@ -486,7 +487,10 @@ impl MechanismSystem<'_> {
     /// the evaluation the workspace holds at `state`.
     fn tracked_values(&mut self, state: &[f64], values: &mut [f64]) {
         // (in joint coordinates the evaluation's body-space state)
-        let body = std::mem::take(&mut self.ws.joint.body_state);
+        let mut body = std::mem::take(&mut self.ws.joint.body_state);
+        if let Some(tree) = self.tree {
+            tree.body_state(self.model, &self.ws.frames, &state[2 * tree.n_dofs..], &mut body);
+        }
         let state = if self.tree.is_some() { &body[..] } else { state };
         let (channels, points) = values.split_at_mut(self.tracking.channels.len());
         read_channels(self.model, &self.tracking.reads, state, self.ws, channels);

@@ -32,9 +32,12 @@ pub(crate) fn place(model: &Model, tree: &JointTree, t: f64, y: &[f64], ws: &mut
 }
 
 /// Evaluates the joint accelerations `ws.joint.accelerations` at `(t, y)`,
-/// `y = [theta, theta_dot, z]`, with the bodies' accelerations in
-/// `ws.accelerations`, their applied forces in `ws.generalised_force` and the
-/// element state rates in `ws.element_state_rates`. Never allocates.
+/// `y = [theta, theta_dot, z]`, with the bodies' frames in `ws.frames`, their
+/// accelerations in `ws.accelerations`, their applied forces in
+/// `ws.generalised_force` and the element state rates in
+/// `ws.element_state_rates` (the body-space state `ws.joint.body_state` only
+/// when the forces need it: [`JointTree::body_state`] makes it from the frames).
+/// Never allocates.
 pub fn joint_accelerations(model: &Model, tree: &JointTree, memory: &[ElementMemory], t: f64, y: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
     match tree.n_dofs {
         1 => joint_accelerations_sized::<1>(model, tree, memory, t, y, ws),
@@ -51,11 +54,17 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
     let (theta, rest) = y.split_at(n);
     let (theta_dot, z) = rest.split_at(n);
     tree.place_and_linearise(t, theta, theta_dot, &mut ws.frames, &mut ws.joint.velocity_map, &mut ws.joint.bias);
-    let mut body = std::mem::take(&mut ws.joint.body_state);
-    tree.body_state(model, &ws.frames, z, &mut body);
-    let applied = applied_forces(model, memory, t, model.layout.split(&body), ws);
-    ws.joint.body_state = body;
-    applied?;
+    // the forces read the frames; the bodies' coordinates only body forces and a
+    // configuration-dependent gravity load read (samples make them when they need them)
+    if model.layout.has_body_forces || ws.gravity_load.is_none() {
+        let mut body = std::mem::take(&mut ws.joint.body_state);
+        tree.body_state(model, &ws.frames, z, &mut body);
+        let applied = applied_forces(model, memory, t, model.layout.split(&body), ws);
+        ws.joint.body_state = body;
+        applied?;
+    } else {
+        applied_forces(model, memory, t, (&[], &[], z), ws)?;
+    }
     let j = &mut ws.joint;
     let (r, mass, theta_ddot) = (&j.velocity_map, &mut j.mass, &mut j.accelerations);
     // R^T M R (lower triangle) and R^T (Q - M b), row by row of R (slices of
