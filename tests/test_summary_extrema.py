@@ -51,12 +51,10 @@ def test_dry_summary_is_the_same_for_output_every_step_every_1us_and_every_1ms(d
     for step in OUTPUT_STEPS[1:]:
         s = dry_runs[step].summary()
         assert s["steps"] == reference["steps"] == dry_runs[step].statistics["accepted_steps"]
-        for name, peak in reference["peaks"].items():
-            assert close(s["peaks"][name], peak, 5e-3), (step, name, s["peaks"][name], peak)
-        a, b = s["clearance_joints"]["B"], reference["clearance_joints"]["B"]
-        assert a["impacts"] == b["impacts"]
-        assert close(a["contact_fraction"], b["contact_fraction"], 5e-3)
-        assert close(a["max_penetration"], b["max_penetration"], 5e-3)
+        # the same to the bit: the integration does not depend on the output, and a step end's
+        # values are read from the sample recorded there or evaluated anew, which must agree
+        assert s["peaks"] == reference["peaks"], step
+        assert s["clearance_joints"] == reference["clearance_joints"], step
     # the numbers themselves: a first impact of about 45.9 kN (Flores' slider-crank at 5000 rpm)
     assert close(reference["peaks"]["B.fn"], 45.9e3, 5e-3), reference["peaks"]["B.fn"]
     joint = reference["clearance_joints"]["B"]
