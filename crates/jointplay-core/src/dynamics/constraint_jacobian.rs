@@ -159,10 +159,7 @@ impl JacobianPattern {
     pub fn transpose_times(&self, rows: usize, values: &[f64], w: &[f64], out: &mut [f64]) {
         out.fill(0.0);
         for (b, &r) in self.blocks_of_rows(rows).iter().zip(&self.block_rows) {
-            let wr = w[r];
-            for (o, j) in out[b.columns()].iter_mut().zip(&values[b.values()]) {
-                *o += j * wr;
-            }
+            block_add_scaled(&mut out[b.columns()], &values[b.values()], w[r]);
         }
     }
 
@@ -185,6 +182,20 @@ fn block_dot(a: &[f64], b: &[f64]) -> f64 {
         return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     }
     dot(a, b)
+}
+
+/// `out += a s` for a block and its columns, unrolled for the planar rigid body's three.
+#[inline(always)]
+fn block_add_scaled(out: &mut [f64], a: &[f64], s: f64) {
+    if let (Ok(out), Ok(a)) = (<&mut [f64; 3]>::try_from(&mut *out), <&[f64; 3]>::try_from(a)) {
+        out[0] += a[0] * s;
+        out[1] += a[1] * s;
+        out[2] += a[2] * s;
+        return;
+    }
+    for (o, j) in out.iter_mut().zip(a) {
+        *o += j * s;
+    }
 }
 
 #[cfg(test)]
