@@ -207,18 +207,19 @@ impl PeakGroup {
         // offer the step end; a quantity that rose at the last step end and
         // did not climb further peaked in this step
         let (mut any_improved, mut any_search) = (false, false);
-        for i in 0..self.peaks.len() {
-            let (value, peak) = (self.end[i], &mut self.peaks[i]);
-            let score = self.kind.score(value);
-            let improved = score > peak.score;
-            if improved {
+        let kind = self.kind;
+        // (zipped, not indexed: one pass with no bounds checks, run at every step)
+        let flags = self.improved.iter_mut().zip(self.search.iter_mut()).zip(self.pending.iter_mut());
+        for ((&value, peak), ((improved, search), pending)) in self.end.iter().zip(self.peaks.iter_mut()).zip(flags) {
+            let score = kind.score(value);
+            *improved = score > peak.score;
+            if *improved {
                 *peak = Peak { score, value, time: t_new };
             }
-            self.improved[i] = improved;
-            self.search[i] = self.pending[i] && !improved;
-            self.pending[i] = false;
-            any_improved |= improved;
-            any_search |= self.search[i];
+            *search = *pending && !*improved;
+            *pending = false;
+            any_improved |= *improved;
+            any_search |= *search;
         }
         if t_new <= t_old || self.step_ends_only {
             return Ok(());

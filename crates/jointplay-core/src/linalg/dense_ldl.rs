@@ -19,6 +19,8 @@ use super::{RankDeficiency, RELATIVE_PIVOT_TOLERANCE};
 /// `1 / d_k` on it. Fails at the first row whose pivot, relative to its
 /// diagonal entry, is at most [`RELATIVE_PIVOT_TOLERANCE`] (the row depends on
 /// the rows before it, or the matrix is not positive definite).
+/// Inlined, so that a caller of fixed size keeps the system in registers.
+#[inline(always)]
 pub fn ldl_solve_scaled(a: &mut [f64], n: usize, b: &mut [f64]) -> Result<(), RankDeficiency> {
     match n {
         1 => solve::<1>(a, n, b),

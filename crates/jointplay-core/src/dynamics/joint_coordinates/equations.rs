@@ -66,14 +66,37 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
         applied_forces(model, memory, t, (&[], &[], z), ws)?;
     }
     let j = &mut ws.joint;
-    let (r, mass, theta_ddot) = (&j.velocity_map, &mut j.mass, &mut j.accelerations);
-    // R^T M R (lower triangle) and R^T (Q - M b), row by row of R (slices of
-    // constant length when N is: the loops unroll)
-    let (mass, theta_ddot) = (&mut mass[..n * n], &mut theta_ddot[..n]);
+    if N == ANY_DOFS {
+        solve_reduced::<N>(tree, &j.velocity_map, &ws.generalised_force, &j.bias, &mut j.mass[..n * n], &mut j.accelerations[..n], t)?;
+    } else {
+        // (a local system of fixed size, which the compiler keeps in registers)
+        let (mut mass, mut theta_ddot) = ([0.0; FIXED_DOFS_MAX * FIXED_DOFS_MAX], [0.0; FIXED_DOFS_MAX]);
+        solve_reduced::<N>(tree, &j.velocity_map, &ws.generalised_force, &j.bias, &mut mass[..n * n], &mut theta_ddot[..n], t)?;
+        j.accelerations[..n].copy_from_slice(&theta_ddot[..n]);
+    }
+    let (r, theta_ddot) = (&j.velocity_map, &j.accelerations[..n]);
+    // the bodies' accelerations v_dot = R theta_ddot + b
+    if n == 0 {
+        ws.accelerations.copy_from_slice(&j.bias);
+    }
+    for (a, (r_row, &b)) in ws.accelerations.iter_mut().zip(r.chunks_exact(n.max(1)).zip(&j.bias)) {
+        *a = b + r_row.iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
+    }
+    check_finite(model, t, ws)
+}
+
+/// Largest number of joint coordinates with kernels of their own size.
+const FIXED_DOFS_MAX: usize = 4;
+
+/// Forms `R^T M R` (lower triangle, into `mass`, `n x n`) and `R^T (Q - M b)`
+/// (into `theta_ddot`) row by row of `R` (slices of constant length when `N`
+/// is: the loops unroll), and solves for the joint accelerations `theta_ddot`.
+#[inline(always)]
+fn solve_reduced<const N: usize>(tree: &JointTree, r: &[f64], q: &[f64], bias: &[f64], mass: &mut [f64], theta_ddot: &mut [f64], t: f64) -> Result<(), SimulationError> {
+    let n = tree.dofs::<N>();
     mass.fill(0.0);
     theta_ddot.fill(0.0);
-    let rows = r.chunks_exact(n.max(1)).zip(tree.mass.iter().zip(&ws.generalised_force).zip(&j.bias));
-    for (r_row, ((&m, &q), &b)) in rows {
+    for (r_row, ((&m, &q), &b)) in r.chunks_exact(n.max(1)).zip(tree.mass.iter().zip(q).zip(bias)) {
         let effective = q - m * b;
         for k in 0..n {
             let mk = m * r_row[k];
@@ -87,20 +110,13 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
             }
         }
     }
-    if n > 0 {
-        // (scaled to a unit diagonal for the rank test: joint coordinates mix lengths and angles)
-        ldl_solve_scaled(mass, n, theta_ddot).map_err(|d| SimulationError::SingularConfiguration {
-            time: t,
-            element: "joint coordinates".to_string(),
-            cause: format!("the mass matrix of the joint coordinates is singular at coordinate {} (relative pivot {:.2e})", d.row, d.relative_pivot),
-        })?;
-    }
-    // the bodies' accelerations v_dot = R theta_ddot + b
     if n == 0 {
-        ws.accelerations.copy_from_slice(&j.bias);
+        return Ok(());
     }
-    for (a, (r_row, &b)) in ws.accelerations.iter_mut().zip(r.chunks_exact(n.max(1)).zip(&j.bias)) {
-        *a = b + r_row.iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
-    }
-    check_finite(model, t, ws)
+    // (scaled to a unit diagonal for the rank test: joint coordinates mix lengths and angles)
+    ldl_solve_scaled(mass, n, theta_ddot).map_err(|d| SimulationError::SingularConfiguration {
+        time: t,
+        element: "joint coordinates".to_string(),
+        cause: format!("the mass matrix of the joint coordinates is singular at coordinate {} (relative pivot {:.2e})", d.row, d.relative_pivot),
+    })
 }
