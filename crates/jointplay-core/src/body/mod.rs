@@ -149,7 +149,7 @@ impl BodyKind {
     /// Jacobian of the global velocity of `marker`'s point (its frame is `frame`,
     /// the body's reference frame `body`) by the velocity coordinates the marker
     /// moves with ([`Self::marker_coordinates`]), times `scale` [-]: row x into `jx`, row y into `jy` [m/m, m/rad].
-    #[inline]
+    #[inline(always)]
     pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::marker_jacobian(frame, marker.local, scale, jx, jy),
@@ -173,7 +173,7 @@ impl BodyKind {
     /// projected on `along`, to the marker's block `out` (see
     /// [`Self::marker_coordinates`]) [m/m, m/rad times the unit of `along`];
     /// `body` is the body's reference frame.
-    #[inline]
+    #[inline(always)]
     pub fn add_marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => PlanarRigidBody::add_marker_jacobian(frame, marker.local, along, out),
@@ -184,7 +184,7 @@ impl BodyKind {
 
     /// Adds `scale d(omega_P)/d(v)`, the Jacobian of `marker`'s angular
     /// velocity, to the marker's block `out` [rad/rad times `scale`].
-    #[inline]
+    #[inline(always)]
     pub fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]) {
         match self {
             Self::PlanarRigid(_) => out[2] += scale,

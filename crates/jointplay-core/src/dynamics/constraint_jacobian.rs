@@ -65,12 +65,15 @@ pub struct JacobianPattern {
     blocks: Vec<JacobianBlock>,
     /// The blocks of row `r` are `blocks[row_blocks[r]..row_blocks[r + 1]]`.
     row_blocks: Vec<usize>,
-    /// The block of each row for the constraint's first and second marker (`None` on the ground).
-    row_slots: Vec<[Option<u32>; 2]>,
+    /// The values of each row's block for the first and second marker (empty on the ground),
+    /// what a constraint writes at every linearisation.
+    slot_values: Vec<[Range<usize>; 2]>,
     /// The row of every block.
     block_rows: Vec<usize>,
     n_values: usize,
     n_solved: usize,
+    /// Whether some block is not three wide (a marker on a beam or a modal body).
+    mixed_widths: bool,
 }
 
 impl JacobianPattern {
@@ -81,12 +84,11 @@ impl JacobianPattern {
             self.row_blocks.push(0);
         }
         for _ in 0..rows {
-            let mut slots = [None, None];
+            let mut values = [0..0, 0..0];
             for (slot, marker) in markers.iter().enumerate() {
                 let Some(m) = marker else { continue };
                 let width = m.columns.len();
-                let index = u32::try_from(self.blocks.len()).expect("a model has fewer than 2^32 Jacobian blocks");
-                slots[slot] = Some(index);
+                values[slot] = self.n_values..self.n_values + width;
                 self.blocks.push(JacobianBlock {
                     body: m.body,
                     start: m.columns.start,
@@ -95,18 +97,19 @@ impl JacobianPattern {
                     value: self.n_values,
                     solved: self.n_solved,
                 });
-                self.block_rows.push(self.row_slots.len());
+                self.block_rows.push(self.slot_values.len());
                 self.n_values += width;
+                self.mixed_widths |= width != 3;
                 self.n_solved += m.body_columns.len();
             }
-            self.row_slots.push(slots);
+            self.slot_values.push(values);
             self.row_blocks.push(self.blocks.len());
         }
     }
 
     /// Number of rows.
     pub fn n_rows(&self) -> usize {
-        self.row_slots.len()
+        self.slot_values.len()
     }
 
     /// Number of Jacobian values (the length of the values array).
@@ -140,17 +143,26 @@ impl JacobianPattern {
         self.row_blocks[r]..self.row_blocks[r + 1]
     }
 
-    /// The block of row `r` for the constraint's marker `slot` (0 first, 1 second), if not on the ground.
+    /// The values of the block of row `r` for the constraint's marker `slot`
+    /// (0 first, 1 second); empty for a marker on the ground.
     #[inline(always)]
-    pub fn slot(&self, r: usize, slot: usize) -> Option<&JacobianBlock> {
-        self.row_slots[r][slot].map(|b| &self.blocks[b as usize])
+    pub fn slot_values(&self, r: usize, slot: usize) -> Range<usize> {
+        self.slot_values[r][slot].clone()
     }
 
     /// `out[r] = (Phi_q v)_r` for the first `rows` rows.
     pub fn times(&self, rows: usize, values: &[f64], v: &[f64], out: &mut [f64]) {
         let out = &mut out[..rows];
         out.fill(0.0);
-        for (b, &r) in self.blocks_of_rows(rows).iter().zip(&self.block_rows) {
+        let blocks = self.blocks_of_rows(rows).iter().zip(&self.block_rows);
+        if !self.mixed_widths {
+            // (every block three wide, the values of one after the other's)
+            for ((b, &r), a) in blocks.zip(values.chunks_exact(3)) {
+                out[r] += block_dot(a, &v[b.start..b.start + 3]);
+            }
+            return;
+        }
+        for (b, &r) in blocks {
             out[r] += block_dot(&values[b.values()], &v[b.columns()]);
         }
     }
@@ -158,7 +170,14 @@ impl JacobianPattern {
     /// `out = Phi_q^T w` over the first `rows` rows.
     pub fn transpose_times(&self, rows: usize, values: &[f64], w: &[f64], out: &mut [f64]) {
         out.fill(0.0);
-        for (b, &r) in self.blocks_of_rows(rows).iter().zip(&self.block_rows) {
+        let blocks = self.blocks_of_rows(rows).iter().zip(&self.block_rows);
+        if !self.mixed_widths {
+            for ((b, &r), a) in blocks.zip(values.chunks_exact(3)) {
+                block_add_scaled(&mut out[b.start..b.start + 3], a, w[r]);
+            }
+            return;
+        }
+        for (b, &r) in blocks {
             block_add_scaled(&mut out[b.columns()], &values[b.values()], w[r]);
         }
     }
@@ -217,36 +236,64 @@ mod tests {
         assert_eq!(pattern.n_rows(), 4);
         assert_eq!(pattern.n_values(), 2 * (3 + 3) + 7 + 3);
         assert_eq!(pattern.n_solved(), 2 * (3 + 7) + 7 + 3);
-        assert_eq!(pattern.slot(2, 0), None);
-        assert_eq!(pattern.slot(2, 1).map(|b| (b.start, b.width, b.offset_in_body)), Some((3, 7, 0)));
-        assert_eq!(pattern.slot(0, 1).map(|b| (b.start, b.width, b.offset_in_body)), Some((4, 3, 1)));
+        assert!(pattern.mixed_widths, "the products take their loop for blocks of any width");
+        // each row's blocks, first marker before second, their values one after the other (none on the ground)
+        assert_eq!([pattern.slot_values(0, 0), pattern.slot_values(0, 1)], [0..3, 3..6]);
+        assert_eq!([pattern.slot_values(1, 0), pattern.slot_values(1, 1)], [6..9, 9..12]);
+        assert_eq!([pattern.slot_values(2, 0), pattern.slot_values(2, 1)], [0..0, 12..19]);
+        assert_eq!([pattern.slot_values(3, 0), pattern.slot_values(3, 1)], [19..22, 0..0]);
+        let wide = pattern.row(2)[0];
+        assert_eq!((wide.start, wide.width, wide.offset_in_body, wide.values()), (3, 7, 0, 12..19));
+        let inner = pattern.row(0)[1];
+        assert_eq!((inner.start, inner.width, inner.offset_in_body, inner.values()), (4, 3, 1, 3..6));
+        let dense = products_match_dense(&pattern, 10);
+        assert_eq!(dense[0][3], 0.0, "the inner marker's block leaves the body's first coordinate out");
+    }
+
+    /// Rows over three-wide blocks only (planar rigid bodies, the products' own loop):
+    /// the products against the dense Jacobian.
+    #[test]
+    fn products_of_three_wide_blocks_match_the_dense_jacobian() {
+        let body = |k: usize| Some(MarkerColumns { body: k, body_columns: 3 * k..3 * k + 3, columns: 3 * k..3 * k + 3 });
+        let mut pattern = JacobianPattern::default();
+        pattern.push_rows(2, [body(0), body(2)]);
+        pattern.push_rows(1, [None, body(1)]);
+        pattern.push_rows(2, [body(2), body(1)]);
+        assert!(!pattern.mixed_widths);
+        products_match_dense(&pattern, 9);
+    }
+
+    /// Checks `Phi_q v`, `Phi_q^T w` and the entries of `pattern` (over `columns`
+    /// velocity coordinates) against its dense Jacobian, written from the blocks'
+    /// definitions for made-up values; returns that Jacobian.
+    fn products_match_dense(pattern: &JacobianPattern, columns: usize) -> Vec<Vec<f64>> {
+        let rows = pattern.n_rows();
         let values: Vec<f64> = (0..pattern.n_values()).map(|k| 0.5 + (k as f64 * 0.37).sin()).collect();
-        // the dense 4 x 10 Jacobian, written from the blocks' definitions
-        let mut dense = [[0.0; 10]; 4];
-        for r in 0..4 {
+        let mut dense = vec![vec![0.0; columns]; rows];
+        for (r, dense_row) in dense.iter_mut().enumerate() {
             for block in pattern.row(r) {
                 for (i, c) in block.columns().enumerate() {
-                    dense[r][c] += values[block.value + i];
+                    dense_row[c] += values[block.value + i];
                 }
             }
         }
-        assert_eq!(dense[0][3], 0.0, "the inner marker's block leaves the body's first coordinate out");
-        let v: Vec<f64> = (0..10).map(|k| 1.0 - 0.3 * k as f64).collect();
-        let w = [0.7, -1.1, 2.0, 0.4];
-        let mut jv = [0.0; 4];
-        pattern.times(4, &values, &v, &mut jv);
-        let mut jtw = [0.0; 10];
-        pattern.transpose_times(4, &values, &w, &mut jtw);
-        for r in 0..4 {
-            let expected: f64 = (0..10).map(|c| dense[r][c] * v[c]).sum();
+        let v: Vec<f64> = (0..columns).map(|k| 1.0 - 0.3 * k as f64).collect();
+        let w: Vec<f64> = (0..rows).map(|r| 0.7 - 0.45 * r as f64).collect();
+        let mut jv = vec![0.0; rows];
+        pattern.times(rows, &values, &v, &mut jv);
+        let mut jtw = vec![0.0; columns];
+        pattern.transpose_times(rows, &values, &w, &mut jtw);
+        for r in 0..rows {
+            let expected: f64 = (0..columns).map(|c| dense[r][c] * v[c]).sum();
             assert!((jv[r] - expected).abs() < 1e-14, "row {r}");
-            for c in 0..10 {
+            for c in 0..columns {
                 assert_eq!(pattern.entry(&values, r, c), dense[r][c]);
             }
         }
-        for c in 0..10 {
-            let expected: f64 = (0..4).map(|r| dense[r][c] * w[r]).sum();
+        for c in 0..columns {
+            let expected: f64 = (0..rows).map(|r| dense[r][c] * w[r]).sum();
             assert!((jtw[c] - expected).abs() < 1e-14, "column {c}");
         }
+        dense
     }
 }

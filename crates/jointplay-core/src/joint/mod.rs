@@ -78,9 +78,10 @@ impl ConstraintRows<'_> {
     /// block of the constraint's marker `slot` (0 first, 1 second; nothing on the ground).
     #[inline(always)]
     pub fn add_point_jacobian(&mut self, frames: &[Frame], r: usize, slot: usize, marker: &Marker, along: Vec2) {
-        if let Some(block) = self.pattern.slot(self.row + r, slot) {
+        let values = self.pattern.slot_values(self.row + r, slot);
+        if !values.is_empty() {
             let kind = &self.bodies[marker.body.0 - 1].kind;
-            kind.add_marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, along, &mut self.jacobian[block.values()]);
+            kind.add_marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, along, &mut self.jacobian[values]);
         }
     }
 
@@ -88,8 +89,10 @@ impl ConstraintRows<'_> {
     /// times the Jacobian of the marker point's velocity, x and y (one call to the body kind).
     #[inline(always)]
     pub fn set_point_jacobian_rows(&mut self, frames: &[Frame], r: usize, slot: usize, marker: &Marker, scale: f64) {
-        let (Some(x), Some(y)) = (self.pattern.slot(self.row + r, slot), self.pattern.slot(self.row + r + 1, slot)) else { return };
-        let (x, y) = (x.values(), y.values());
+        let (x, y) = (self.pattern.slot_values(self.row + r, slot), self.pattern.slot_values(self.row + r + 1, slot));
+        if x.is_empty() {
+            return;
+        }
         // (a later row's blocks sit after an earlier row's)
         let (head, tail) = self.jacobian.split_at_mut(y.start);
         let (jx, jy) = (&mut head[x], &mut tail[..y.end - y.start]);
@@ -99,8 +102,9 @@ impl ConstraintRows<'_> {
     /// Adds `scale d(omega)/d(v)` of `marker`'s frame to row `row + r`, block `slot`.
     #[inline(always)]
     pub fn add_angle_jacobian(&mut self, r: usize, slot: usize, marker: &Marker, scale: f64) {
-        if let Some(block) = self.pattern.slot(self.row + r, slot) {
-            self.bodies[marker.body.0 - 1].kind.add_marker_angle_jacobian(marker, scale, &mut self.jacobian[block.values()]);
+        let values = self.pattern.slot_values(self.row + r, slot);
+        if !values.is_empty() {
+            self.bodies[marker.body.0 - 1].kind.add_marker_angle_jacobian(marker, scale, &mut self.jacobian[values]);
         }
     }
 
