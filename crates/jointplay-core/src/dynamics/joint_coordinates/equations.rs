@@ -1,6 +1,6 @@
 //! Equations of motion in joint coordinates: `R^T M R theta_ddot = R^T (Q - M b)`.
 
-use super::tree::{JointTree, ANY_DOFS};
+use super::tree::{JointTree, ANY_DOFS, FIXED_DOFS_MAX};
 use crate::dynamics::equations::{applied_forces, check_finite};
 use crate::dynamics::frame::Frame;
 use crate::force::ElementMemory;
@@ -70,6 +70,7 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
         solve_reduced::<N>(tree, &j.velocity_map, &ws.generalised_force, &j.bias, &mut j.mass[..n * n], &mut j.accelerations[..n], t)?;
     } else {
         // (a local system of fixed size, which the compiler keeps in registers)
+        const { assert!(N <= FIXED_DOFS_MAX, "a kernel of fixed size beyond the local system's") };
         let (mut mass, mut theta_ddot) = ([0.0; FIXED_DOFS_MAX * FIXED_DOFS_MAX], [0.0; FIXED_DOFS_MAX]);
         solve_reduced::<N>(tree, &j.velocity_map, &ws.generalised_force, &j.bias, &mut mass[..n * n], &mut theta_ddot[..n], t)?;
         j.accelerations[..n].copy_from_slice(&theta_ddot[..n]);
@@ -84,9 +85,6 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
     }
     check_finite(model, t, ws)
 }
-
-/// Largest number of joint coordinates with kernels of their own size.
-const FIXED_DOFS_MAX: usize = 4;
 
 /// Forms `R^T M R` (lower triangle, into `mass`, `n x n`) and `R^T (Q - M b)`
 /// (into `theta_ddot`) row by row of `R` (slices of constant length when `N`

@@ -60,6 +60,10 @@ pub enum EdgeCoordinate {
 /// The size parameter of the kernels compiled for any number of joint coordinates.
 pub(crate) const ANY_DOFS: usize = 0;
 
+/// The largest number of joint coordinates with kernels compiled for their own
+/// size (the others run the kernel for [`ANY_DOFS`]).
+pub(crate) const FIXED_DOFS_MAX: usize = 4;
+
 /// One edge of the tree: a body and how it hangs on its parent.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TreeEdge {
