@@ -1,7 +1,7 @@
 //! Equations of motion in joint coordinates: `R^T M R theta_ddot = R^T (Q - M b)`.
 
 use super::tree::{JointTree, ANY_DOFS, FIXED_DOFS_MAX};
-use crate::dynamics::equations::{applied_forces, check_finite};
+use crate::dynamics::equations::{applied_forces, check_finite_values};
 use crate::dynamics::frame::Frame;
 use crate::force::ElementMemory;
 use crate::dynamics::{Model, Workspace};
@@ -83,7 +83,10 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
     for (a, (r_row, &b)) in ws.accelerations.iter_mut().zip(r.chunks_exact(n.max(1)).zip(&j.bias)) {
         *a = b + r_row.iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
     }
-    check_finite(model, t, ws)
+    // every body acceleration is finite when the joint accelerations are: a non-finite
+    // force, bias or velocity map reaches each of them through `R^T (Q - M b)` and `R^T M R`
+    let checked = if n == 0 { &ws.accelerations[..] } else { &ws.joint.accelerations[..n] };
+    check_finite_values(model, t, ws, checked)
 }
 
 /// Forms `R^T M R` (lower triangle, into `mass`, `n x n`) and `R^T (Q - M b)`

@@ -138,59 +138,68 @@ impl JointTree {
             let (s, s_dot, mut s_ddot) = coordinate(edge, &parent, t, theta, theta_dot);
             let child = place_child(edge, &parent, &frames[edge.child.0], theta, theta_dot, (s, s_dot));
             frames[edge.child.0] = child;
-            let c = JointTree::body_offset(edge.child);
             let d = child.position - parent.position;
             // rows of the child: the parent's rows carried rigidly, then the joint's own column
-            if edge.parent.is_ground() {
-                velocity_map[c * n..(c + 3) * n].fill(0.0);
-                bias[c..c + 3].fill(0.0);
-            } else {
-                let p = JointTree::body_offset(edge.parent);
-                for k in 0..n {
-                    let omega = velocity_map[(p + 2) * n + k];
-                    velocity_map[c * n + k] = velocity_map[p * n + k] - d.y * omega;
-                    velocity_map[(c + 1) * n + k] = velocity_map[(p + 1) * n + k] + d.x * omega;
-                    velocity_map[(c + 2) * n + k] = omega;
+            let (parent_rows, rows) = rows_of(velocity_map, edge, n);
+            let (row_x, rest) = rows.split_at_mut(n);
+            let (row_y, row_omega) = rest.split_at_mut(n);
+            let (bias_parent, bias_child) = bias_of(bias, edge);
+            let mut alpha = 0.0;
+            match (parent_rows, bias_parent) {
+                (Some(parent_rows), Some(bias_parent)) => {
+                    let (parent_x, rest) = parent_rows.split_at(n);
+                    let (parent_y, parent_omega) = rest.split_at(n);
+                    for k in 0..n {
+                        let omega = parent_omega[k];
+                        row_x[k] = parent_x[k] - d.y * omega;
+                        row_y[k] = parent_y[k] + d.x * omega;
+                        row_omega[k] = omega;
+                    }
+                    let w = parent.angular_velocity;
+                    alpha = bias_parent[2];
+                    let carried = Vec2::new(bias_parent[0], bias_parent[1]) + perp(d) * alpha + perp(child.velocity - parent.velocity) * w;
+                    bias_child.copy_from_slice(&[carried.x, carried.y, alpha]);
                 }
-                let (alpha, w) = (bias[p + 2], parent.angular_velocity);
-                let carried = Vec2::new(bias[p], bias[p + 1]) + perp(d) * alpha + perp(child.velocity - parent.velocity) * w;
-                bias[c] = carried.x;
-                bias[c + 1] = carried.y;
-                bias[c + 2] = alpha;
+                _ => {
+                    row_x.fill(0.0);
+                    row_y.fill(0.0);
+                    row_omega.fill(0.0);
+                    bias_child.fill(0.0);
+                }
             }
             let (h, h_omega, h_dot) = joint_motion(edge, &parent, &child);
             match &edge.coordinate {
                 EdgeCoordinate::Dofs(k) if edge.joint == EdgeJoint::Free => {
-                    for i in 0..3 {
-                        velocity_map[(c + i) * n + k + i] = 1.0;
-                    }
+                    row_x[*k] = 1.0;
+                    row_y[k + 1] = 1.0;
+                    row_omega[k + 2] = 1.0;
                 }
                 EdgeCoordinate::Dofs(k) if matches!(edge.joint, EdgeJoint::Revolute { .. }) => {
-                    // s_dot = sigma (theta_dot_k - omega_p): h sigma times (e_k - the parent's omega row)
+                    // s_dot = sigma (theta_dot_k - omega_p): h sigma times (e_k - the parent's omega row);
+                    // the child's omega row holds the parent's (zero on the ground)
                     let sigma = h_omega;
                     for l in 0..n {
-                        let parent_omega = if edge.parent.is_ground() { 0.0 } else { velocity_map[(JointTree::body_offset(edge.parent) + 2) * n + l] };
-                        let rate = sigma * (f64::from(u8::from(l == *k)) - parent_omega);
-                        velocity_map[c * n + l] += h.x * rate;
-                        velocity_map[(c + 1) * n + l] += h.y * rate;
-                        velocity_map[(c + 2) * n + l] += h_omega * rate;
+                        let rate = sigma * (f64::from(u8::from(l == *k)) - row_omega[l]);
+                        row_x[l] += h.x * rate;
+                        row_y[l] += h.y * rate;
+                        row_omega[l] += h_omega * rate;
                     }
                     // and s_ddot = -sigma alpha_p at zero joint accelerations
                     if !edge.parent.is_ground() {
-                        s_ddot = -sigma * bias[JointTree::body_offset(edge.parent) + 2];
+                        s_ddot = -sigma * alpha;
                     }
                 }
                 EdgeCoordinate::Dofs(k) => {
-                    velocity_map[c * n + k] += h.x;
-                    velocity_map[(c + 1) * n + k] += h.y;
-                    velocity_map[(c + 2) * n + k] += h_omega;
+                    row_x[*k] += h.x;
+                    row_y[*k] += h.y;
+                    row_omega[*k] += h_omega;
                 }
                 EdgeCoordinate::Driven(_) | EdgeCoordinate::Locked => {}
             }
             let extra = h_dot * s_dot + h * s_ddot;
-            bias[c] += extra.x;
-            bias[c + 1] += extra.y;
-            bias[c + 2] += h_omega * s_ddot;
+            bias_child[0] += extra.x;
+            bias_child[1] += extra.y;
+            bias_child[2] += h_omega * s_ddot;
         }
     }
 
@@ -222,4 +231,28 @@ impl JointTree {
             }
         }
     }
+}
+
+/// The three rows (`x`, `y`, `omega`, each of `n` columns) of the velocity map
+/// of the parent of `edge` (none for the ground) and of its child.
+#[inline(always)]
+fn rows_of<'m>(map: &'m mut [f64], edge: &TreeEdge, n: usize) -> (Option<&'m [f64]>, &'m mut [f64]) {
+    let c = JointTree::body_offset(edge.child) * n;
+    if edge.parent.is_ground() {
+        return (None, &mut map[c..c + 3 * n]);
+    }
+    let p = JointTree::body_offset(edge.parent) * n;
+    if p < c {
+        let (before, after) = map.split_at_mut(c);
+        (Some(&before[p..p + 3 * n]), &mut after[..3 * n])
+    } else {
+        let (before, after) = map.split_at_mut(p);
+        (Some(&after[..3 * n]), &mut before[c..c + 3 * n])
+    }
+}
+
+/// The bias accelerations of the parent of `edge` (none for the ground) and of its child.
+#[inline(always)]
+fn bias_of<'b>(bias: &'b mut [f64], edge: &TreeEdge) -> (Option<&'b [f64]>, &'b mut [f64]) {
+    rows_of(bias, edge, 1)
 }
