@@ -307,3 +307,26 @@ fn a_tree_without_coordinates_moves_as_driven_with_the_closed_form_motor_torque(
         assert!((torque[k] - expected).abs() < 1e-12 + 1e-9 * expected.abs(), "torque at {t}: {} vs {expected}", torque[k]);
     }
 }
+
+#[test]
+fn a_non_finite_rate_stops_the_evaluation_naming_the_first_element_it_reaches() {
+    // the rates, NaN, reach the dampers' forces and the bias accelerations but not
+    // R (positions only): the check on the joint accelerations sees it and names
+    // the first force element whose outputs are not finite
+    let m = every_edge_kind();
+    let tree = tree(&m);
+    let (theta, theta_dot) = moving_state(&m);
+    let mut ws = Workspace::new(&m);
+    let memory = m.initial_memory();
+    let finite: Vec<f64> = theta.iter().chain(&theta_dot).copied().collect();
+    assert!(joint_accelerations(&m, tree, &memory, 0.01, &finite, &mut ws).is_ok());
+    let mut y = finite.clone();
+    y[tree.n_dofs] = f64::NAN;
+    match joint_accelerations(&m, tree, &memory, 0.01, &y, &mut ws) {
+        Err(crate::error::SimulationError::NonFinite { time, element }) => {
+            assert_eq!(time, 0.01);
+            assert_eq!(element, "link");
+        }
+        other => panic!("expected a non-finite error, got {other:?}"),
+    }
+}
