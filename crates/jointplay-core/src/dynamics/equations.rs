@@ -218,13 +218,7 @@ pub(crate) fn constrained_accelerations(
 
 /// Names the first element whose output is not finite when some acceleration is not.
 pub(crate) fn check_finite(model: &Model, t: f64, ws: &Workspace) -> Result<(), SimulationError> {
-    check_finite_values(model, t, ws, &ws.accelerations)
-}
-
-/// Names the first element whose output is not finite when some of `values`
-/// (accelerations that every acceleration of the evaluation depends on) is not.
-pub(crate) fn check_finite_values(model: &Model, t: f64, ws: &Workspace, values: &[f64]) -> Result<(), SimulationError> {
-    if values.iter().all(|a| a.is_finite()) {
+    if ws.accelerations.iter().all(|a| a.is_finite()) {
         return Ok(());
     }
     let element = ws

@@ -1,7 +1,7 @@
 //! Equations of motion in joint coordinates: `R^T M R theta_ddot = R^T (Q - M b)`.
 
 use super::tree::{JointTree, ANY_DOFS, FIXED_DOFS_MAX};
-use crate::dynamics::equations::{applied_forces, check_finite_values};
+use crate::dynamics::equations::{applied_forces, check_finite};
 use crate::dynamics::frame::Frame;
 use crate::force::ElementMemory;
 use crate::dynamics::{Model, Workspace};
@@ -76,17 +76,20 @@ fn joint_accelerations_sized<const N: usize>(model: &Model, tree: &JointTree, me
         j.accelerations[..n].copy_from_slice(&theta_ddot[..n]);
     }
     let (r, theta_ddot) = (&j.velocity_map, &j.accelerations[..n]);
-    // the bodies' accelerations v_dot = R theta_ddot + b
+    // the bodies' accelerations v_dot = R theta_ddot + b, checked finite as they are made
+    let mut finite = true;
     if n == 0 {
         ws.accelerations.copy_from_slice(&j.bias);
+        finite = ws.accelerations.iter().all(|a| a.is_finite());
     }
     for (a, (r_row, &b)) in ws.accelerations.iter_mut().zip(r.chunks_exact(n.max(1)).zip(&j.bias)) {
         *a = b + r_row.iter().zip(theta_ddot.iter()).map(|(x, y)| x * y).sum::<f64>();
+        finite &= a.is_finite();
     }
-    // every body acceleration is finite when the joint accelerations are: a non-finite
-    // force, bias or velocity map reaches each of them through `R^T (Q - M b)` and `R^T M R`
-    let checked = if n == 0 { &ws.accelerations[..] } else { &ws.joint.accelerations[..n] };
-    check_finite_values(model, t, ws, checked)
+    if finite {
+        return Ok(());
+    }
+    check_finite(model, t, ws)
 }
 
 /// Forms `R^T M R` (lower triangle, into `mass`, `n x n`) and `R^T (Q - M b)`

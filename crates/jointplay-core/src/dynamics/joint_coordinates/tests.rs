@@ -310,9 +310,9 @@ fn a_tree_without_coordinates_moves_as_driven_with_the_closed_form_motor_torque(
 
 #[test]
 fn a_non_finite_rate_stops_the_evaluation_naming_the_first_element_it_reaches() {
-    // the rates, NaN, reach the dampers' forces and the bias accelerations but not
-    // R (positions only): the check on the joint accelerations sees it and names
-    // the first force element whose outputs are not finite
+    // the rate, NaN, reaches the dampers' forces and the bias accelerations (not R,
+    // which depends on positions only): the check made as the bodies' accelerations
+    // are formed sees it and names the first force element whose outputs are not finite
     let m = every_edge_kind();
     let tree = tree(&m);
     let (theta, theta_dot) = moving_state(&m);
