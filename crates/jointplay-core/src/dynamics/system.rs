@@ -194,10 +194,8 @@ impl MechanismSystem<'_> {
     }
 
     /// Frames of the bodies the event functions read from the state y, in
-    /// their own buffer so that the workspace keeps the last evaluation; their
-    /// velocities only `with_rates` (in joint coordinates; the event functions
-    /// themselves read positions alone).
-    fn update_event_frames(&mut self, t: f64, y: &[f64], with_rates: bool) {
+    /// their own buffer so that the workspace keeps the last evaluation.
+    fn update_event_frames(&mut self, t: f64, y: &[f64]) {
         if self.step_end.holds_evaluation(t, y) {
             // (the evaluation at this very state, a step end, placed them all)
             self.ws.event_frames.copy_from_slice(&self.ws.frames);
@@ -205,11 +203,7 @@ impl MechanismSystem<'_> {
         }
         if let Some(tree) = self.tree {
             let n = tree.n_dofs;
-            if with_rates {
-                tree.place(t, &y[..n], &y[n..2 * n], &mut self.ws.event_frames);
-            } else {
-                tree.place_positions(t, &y[..n], &y[n..2 * n], &mut self.ws.event_frames);
-            }
+            tree.place(t, &y[..n], &y[n..2 * n], &mut self.ws.event_frames);
             return;
         }
         let (q, v, _) = self.model.layout.split(y);
@@ -352,12 +346,12 @@ impl OdeSystem for MechanismSystem<'_> {
     }
 
     fn event_functions(&mut self, t: f64, y: &[f64], g: &mut [f64]) {
-        self.update_event_frames(t, y, false);
+        self.update_event_frames(t, y);
         self.element_event_functions(g, None);
     }
 
     fn event_functions_and_rates(&mut self, t: f64, y: &[f64], g: &mut [f64], rates: &mut [f64]) -> bool {
-        self.update_event_frames(t, y, true);
+        self.update_event_frames(t, y);
         self.element_event_functions(g, Some(rates));
         true
     }

@@ -69,19 +69,15 @@ fn joint_motion(edge: &TreeEdge, parent: &Frame, child: &Frame) -> (Vec2, f64, V
 }
 
 /// Places the child of `edge`: its frame from the parent frame and the joint's
-/// coordinate `s` and rate `s_dot` (`previous`: the child's last frame); the
-/// velocity of its origin only when `VELOCITIES` (else zero; the angular
-/// velocity, one addition, always).
+/// coordinate `s` and rate `s_dot` (`previous`: the child's last frame).
 #[inline(always)]
-fn place_child<const VELOCITIES: bool>(edge: &TreeEdge, parent: &Frame, previous: &Frame, theta: &[f64], theta_dot: &[f64], (s, s_dot): (f64, f64)) -> Frame {
+fn place_child(edge: &TreeEdge, parent: &Frame, previous: &Frame, theta: &[f64], theta_dot: &[f64], (s, s_dot): (f64, f64)) -> Frame {
     match &edge.joint {
         EdgeJoint::Free => {
             let EdgeCoordinate::Dofs(k) = edge.coordinate else { unreachable!("a free body has three coordinates") };
             let mut child = turned(previous, theta[k + 2], theta_dot[k + 2]);
             child.position = Vec2::new(theta[k], theta[k + 1]);
-            if VELOCITIES {
-                child.velocity = Vec2::new(theta_dot[k], theta_dot[k + 1]);
-            }
+            child.velocity = Vec2::new(theta_dot[k], theta_dot[k + 1]);
             child
         }
         EdgeJoint::Revolute { parent_point, child_point, sign } => {
@@ -89,10 +85,8 @@ fn place_child<const VELOCITIES: bool>(edge: &TreeEdge, parent: &Frame, previous
             let omega = parent.angular_velocity + sign * s_dot;
             let mut child = turned(previous, parent.angle + sign * s, omega);
             child.position = p - child.rotate(*child_point);
-            if VELOCITIES {
-                let d = child.position - parent.position;
-                child.velocity = parent.velocity + perp(d) * parent.angular_velocity + perp(child.position - p) * (sign * s_dot);
-            }
+            let d = child.position - parent.position;
+            child.velocity = parent.velocity + perp(d) * parent.angular_velocity + perp(child.position - p) * (sign * s_dot);
             child
         }
         EdgeJoint::Translational { parent_point, child_point, axis, parent_is_first, relative_angle } => {
@@ -100,18 +94,14 @@ fn place_child<const VELOCITIES: bool>(edge: &TreeEdge, parent: &Frame, previous
             let mut child = turned(previous, parent.angle + sign * relative_angle, parent.angular_velocity);
             let u = if *parent_is_first { parent.rotate(*axis) } else { child.rotate(*axis) };
             child.position = parent.point(*parent_point) + u * (sign * s) - child.rotate(*child_point);
-            if VELOCITIES {
-                let d = child.position - parent.position;
-                child.velocity = parent.velocity + perp(d) * parent.angular_velocity + u * (sign * s_dot);
-            }
+            let d = child.position - parent.position;
+            child.velocity = parent.velocity + perp(d) * parent.angular_velocity + u * (sign * s_dot);
             child
         }
         EdgeJoint::Fixed { parent_point, child_point, relative_angle } => {
             let mut child = turned(previous, parent.angle + relative_angle, parent.angular_velocity);
             child.position = parent.point(*parent_point) - child.rotate(*child_point);
-            if VELOCITIES {
-                child.velocity = parent.velocity + perp(child.position - parent.position) * parent.angular_velocity;
-            }
+            child.velocity = parent.velocity + perp(child.position - parent.position) * parent.angular_velocity;
             child
         }
     }
@@ -120,22 +110,10 @@ fn place_child<const VELOCITIES: bool>(edge: &TreeEdge, parent: &Frame, previous
 impl JointTree {
     /// Frames of all bodies (index 0, the ground, untouched) from the joint state at `t`.
     pub fn place(&self, t: f64, theta: &[f64], theta_dot: &[f64], frames: &mut [Frame]) {
-        self.place_frames::<true>(t, theta, theta_dot, frames);
-    }
-
-    /// [`JointTree::place`] without the velocities of the bodies' origins (left
-    /// zero): for the event functions' values alone, which the event scans
-    /// evaluate inside steps.
-    pub fn place_positions(&self, t: f64, theta: &[f64], theta_dot: &[f64], frames: &mut [Frame]) {
-        self.place_frames::<false>(t, theta, theta_dot, frames);
-    }
-
-    /// Places edge by edge from the ground out, the origins' velocities when `VELOCITIES`.
-    fn place_frames<const VELOCITIES: bool>(&self, t: f64, theta: &[f64], theta_dot: &[f64], frames: &mut [Frame]) {
         for edge in &self.edges {
             let parent = frames[edge.parent.0];
             let (s, s_dot, _) = coordinate(edge, &parent, t, theta, theta_dot);
-            frames[edge.child.0] = place_child::<VELOCITIES>(edge, &parent, &frames[edge.child.0], theta, theta_dot, (s, s_dot));
+            frames[edge.child.0] = place_child(edge, &parent, &frames[edge.child.0], theta, theta_dot, (s, s_dot));
         }
     }
 
@@ -158,7 +136,7 @@ impl JointTree {
         for edge in &self.edges {
             let parent = frames[edge.parent.0];
             let (s, s_dot, mut s_ddot) = coordinate(edge, &parent, t, theta, theta_dot);
-            let child = place_child::<true>(edge, &parent, &frames[edge.child.0], theta, theta_dot, (s, s_dot));
+            let child = place_child(edge, &parent, &frames[edge.child.0], theta, theta_dot, (s, s_dot));
             frames[edge.child.0] = child;
             let d = child.position - parent.position;
             // rows of the child: the parent's rows carried rigidly, then the joint's own column

@@ -7,7 +7,7 @@
 //! joint axis that turns with its body).
 
 use super::*;
-use crate::dynamics::frame::{Frame, Vec2};
+use crate::dynamics::frame::Frame;
 use crate::dynamics::{assemble, compile, simulate, Model, SimulationOptions, Workspace};
 use crate::integrate::IntegratorOptions;
 use crate::spec::ModelSpec;
@@ -156,21 +156,6 @@ fn placed_velocities_are_the_time_derivative_of_placed_positions() {
         let omega = (ahead[b].angle - behind[b].angle) / (2.0 * h);
         assert!((velocity - frames[b].velocity).norm() < 1e-7, "body {b}: {velocity:?} vs {:?}", frames[b].velocity);
         assert!((omega - frames[b].angular_velocity).abs() < 1e-7, "body {b}");
-    }
-}
-
-#[test]
-fn the_positions_only_placement_places_every_edge_kind_bit_for_bit_as_the_full_one() {
-    let m = every_edge_kind();
-    let tree = tree(&m);
-    let (theta, theta_dot) = moving_state(&m);
-    let full = placed(tree, &m, 0.013, &theta, &theta_dot);
-    let mut positions = vec![Frame::GROUND; m.bodies.len() + 1];
-    tree.place_positions(0.013, &theta, &theta_dot, &mut positions);
-    for (b, (p, f)) in positions.iter().zip(&full).enumerate().skip(1) {
-        assert_eq!((p.position, p.angle, p.cos, p.sin), (f.position, f.angle, f.cos, f.sin), "body {b}");
-        assert!(f.velocity.norm() > 0.0 || f.angular_velocity != 0.0, "body {b} moves in the full placement");
-        assert_eq!(p.velocity, Vec2::zeros(), "body {b}: no velocity of the origin computed");
     }
 }
 
