@@ -135,6 +135,18 @@ pub enum SimulationError {
         /// The bound [m].
         bound: f64,
     },
+    /// The assembled start is not one the description can mean: a flexible body
+    /// strained far beyond any elastic link to close a loop, a journal started
+    /// deep inside its bearing.
+    #[error("{element} cannot start as assembled at t = {time:.6e} s: {cause}")]
+    ImplausibleStart {
+        /// Time [s].
+        time: f64,
+        /// Body or clearance joint.
+        element: String,
+        /// What assembly found, with the numbers.
+        cause: String,
+    },
     /// A film model failed (for example the Reynolds solver did not converge).
     #[error("film model of {element} failed at t = {time:.6e} s: {cause}")]
     FilmModel {
@@ -209,6 +221,7 @@ impl SimulationError {
             | Self::SingularConfiguration { time, .. }
             | Self::ConstraintViolation { time, .. }
             | Self::ExcessivePenetration { time, .. }
+            | Self::ImplausibleStart { time, .. }
             | Self::InvalidInput { time, .. }
             | Self::FilmModel { time, .. }
             | Self::ElementOutOfRange { time, .. }
@@ -226,6 +239,7 @@ impl SimulationError {
             | Self::SingularConfiguration { element, .. }
             | Self::ConstraintViolation { element, .. }
             | Self::ExcessivePenetration { element, .. }
+            | Self::ImplausibleStart { element, .. }
             | Self::FilmModel { element, .. }
             | Self::ElementOutOfRange { element, .. } => Some(element),
             Self::TooManySteps { .. }

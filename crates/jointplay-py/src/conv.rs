@@ -92,6 +92,11 @@ pub fn simulation_error<'py>(py: Python<'py>, e: &SimulationError) -> PyResult<B
     Ok(d)
 }
 
+/// Notes of an assembly as a list of `(name, on_body, message)`.
+pub fn assembly_notes<'py>(py: Python<'py>, notes: &[jointplay_core::dynamics::AssemblyNote]) -> PyResult<Bound<'py, PyList>> {
+    PyList::new(py, notes.iter().map(|n| (n.name.as_str(), n.on_body, n.message.as_str())))
+}
+
 /// Channel names, units and descriptions into `out`.
 pub fn channel_infos(py: Python<'_>, out: &Bound<'_, PyDict>, infos: &[ChannelInfo]) -> PyResult<()> {
     out.set_item("names", PyList::new(py, infos.iter().map(|c| c.name.as_str()))?)?;

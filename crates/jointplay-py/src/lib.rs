@@ -162,14 +162,16 @@ impl CoreModel {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
                 dynamics::assemble(&model, t0, &mut ws).map(|state| {
+                    let notes = dynamics::assembly_notes(&model, t0, state.coordinates(), &mut ws);
                     let rank = dynamics::constraint_rank(&model, &state, &mut ws);
-                    (state, rank)
+                    (state, rank, notes)
                 })
             })
         })?;
         let out = PyDict::new(py);
         match result {
-            Ok((state, rank)) => {
+            Ok((state, rank, notes)) => {
+                out.set_item("notes", conv::assembly_notes(py, &notes)?)?;
                 out.set_item("coordinates", PyArray1::from_slice(py, state.coordinates()))?;
                 out.set_item("velocities", PyArray1::from_slice(py, state.velocities()))?;
                 out.set_item("constraint_rank", rank.rank)?;
@@ -215,7 +217,8 @@ impl CoreModel {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
                 let mut state = dynamics::assemble(&model, t0, &mut ws).map_err(|e| e)?;
-                Ok(dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&*watched), sink))
+                let notes = dynamics::assembly_notes(&model, t0, state.coordinates(), &mut ws);
+                Ok((dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&*watched), sink), notes))
             })
         })?;
         if let Some(error) = raised.lock().map_err(|_| PyRuntimeError::new_err("callback state poisoned"))?.take() {
@@ -223,7 +226,10 @@ impl CoreModel {
         }
         let out = PyDict::new(py);
         match run {
-            Ok(outcome) => conv::outcome(py, &out, outcome)?,
+            Ok((outcome, notes)) => {
+                conv::outcome(py, &out, outcome)?;
+                out.set_item("assembly_notes", conv::assembly_notes(py, &notes)?)?;
+            }
             Err(e) => {
                 out.set_item("time", PyArray1::<f64>::zeros(py, 0, false))?;
                 out.set_item("values", PyArray2::<f64>::zeros(py, [0, self.model.channel_infos().len()], false))?;

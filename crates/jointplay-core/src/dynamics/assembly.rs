@@ -26,19 +26,14 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
     let mut q = model.initial_coordinates.clone();
     let mut qdot = model.initial_velocities.clone();
     project_positions(model, all, t0, &mut q, ASSEMBLY_TOLERANCE, ASSEMBLY_ITERATIONS, ws)?;
+    super::assembly_checks::refuse_implausible_start(model, t0, &q, ws)?;
     let (before, _) = velocity_residuals(model, all, t0, &q, &qdot, ws);
     project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
     // dependent equations that contradict each other (a driver against a weld) leave a residual
     // no velocity removes: the mechanism is locked
     let (after, row) = velocity_residuals(model, all, t0, &q, &qdot, ws);
     if after > LOCKED_VELOCITY_RESIDUAL * (1.0 + before) {
-        return Err(SimulationError::SingularConfiguration {
-            time: t0,
-            element: model.elements[model.row_owner[row]].name.clone(),
-            cause: format!(
-                "the mechanism is locked: no velocities satisfy its joints and drivers together (residual {after:.3e} m/s or rad/s remains); a driver fights a joint, or the joints leave no freedom to move"
-            ),
-        });
+        return Err(super::assembly_checks::velocity_failure(model, t0, &q, after, row, ws));
     }
     let mut y = Vec::with_capacity(model.layout.len());
     y.extend_from_slice(&q);

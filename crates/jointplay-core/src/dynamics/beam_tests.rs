@@ -11,7 +11,7 @@ use crate::dynamics::frame::{Frame, Vec2};
 use crate::integrate::{IntegratorOptions, Method};
 use crate::spec::ModelSpec;
 
-pub(super) fn model(json: serde_json::Value) -> Model {
+pub(crate) fn model(json: serde_json::Value) -> Model {
     let spec: ModelSpec = serde_json::from_value(json).expect("valid spec");
     compile(&spec).unwrap_or_else(|e| panic!("{e}"))
 }
@@ -238,7 +238,7 @@ fn the_spin_up_beam_stretches_as_the_centrifugal_closed_form_says() {
 }
 
 /// A slider-crank whose rod is a beam (`Some(elements)`) or a rigid body (`None`).
-pub(super) fn slider_crank(rod: Option<usize>) -> Model {
+pub(crate) fn slider_crank(rod: Option<usize>) -> Model {
     // a 15 x 15 mm bar with the density of steel and 100 times its stiffness (E = 2.1e13 Pa);
     // the rigid rod has the beam's mass and inertia (its sections' rotary inertia included)
     let (l, rho_a, rho_i) = (0.12, 1.75, 3.3e-5);

@@ -5,6 +5,7 @@
 //! simulation loop that produces a [`Trajectory`].
 
 mod assembly;
+mod assembly_checks;
 mod brent;
 mod channels;
 mod compile;
@@ -23,12 +24,14 @@ mod progress;
 mod projection;
 mod redundancy;
 mod simulate;
+mod singular_diagnosis;
 mod state;
 mod system;
 mod trajectory;
 mod workspace;
 
 pub use assembly::assemble;
+pub use assembly_checks::{assembly_notes, AssemblyNote};
 pub use channels::ChannelInfo;
 pub use compile::compile;
 pub use constraint_jacobian::{JacobianBlock, JacobianPattern, MarkerColumns};

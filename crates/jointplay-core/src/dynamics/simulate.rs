@@ -162,6 +162,7 @@ pub fn simulate_with_sink(
     diagnostics.impacts = model.clearance_joints().map(|(k, _, _)| state.memory[k].impacts()).collect();
     let extrema = summarize(model, &tracking.tracker, &tracking.channels, &state.memory);
     let error = result.err().map(|e| name_likely_cause(model, e, &ws));
+    let error = error.map(|e| super::singular_diagnosis::diagnose_toggle(model, e, t0, state.time, state.coordinates(), &mut ws));
     let formulation = if tree.is_some() { Formulation::JointCoordinates } else { Formulation::Absolute };
     SimulationOutcome { trajectory, statistics, diagnostics, extrema, error, formulation }
 }

@@ -181,7 +181,7 @@ fn statically_loaded_slider_crank_balances_by_virtual_work() {
     assert!(outcome.trajectory.channel("slider.ay").unwrap()[0].abs() < 1e-9);
 }
 
-fn slider_crank_spec_json() -> serde_json::Value {
+pub(crate) fn slider_crank_spec_json() -> serde_json::Value {
     let m = slider_crank(0.0, 0.0);
     let _ = m;
     serde_json::from_str(
