@@ -23,7 +23,13 @@ SECTION = Section(ea=2e6, ei=100.0, rho_a=2.0)
 NODES, MASS, STIFFNESS = straight_member(1.0, 4, SECTION)
 
 
+#: the matrices and nodes here are in SI units (kg, m, s)
+SI = {"length_unit": "m", "mass_unit": "kg"}
+
 def model_text(matrices: str, extra: str = "") -> str:
+    """A modal body from ``matrices`` (in SI units unless they say otherwise)."""
+    if "length_unit" not in matrices:
+        matrices += ', length_unit = "m", mass_unit = "kg"'
     return f"""
 [modal_bodies.link]
 matrices = {{ {matrices} }}
@@ -78,7 +84,7 @@ def test_files_are_found_beside_the_model_file_and_arrays_are_taken_from_python(
     from_file = structure(jp.load(path))
     m = jp.Model("link")
     m.add_modal_body("link", matrices={"mass": scipy.sparse.csr_matrix(MASS), "stiffness": STIFFNESS,
-                                       "nodes": NODES.tolist()}, interface={"A": 0, "B": 4})
+                                       "nodes": NODES.tolist(), **SI}, interface={"A": 0, "B": 4})
     for read, given in zip(from_file, structure(m)):
         np.testing.assert_allclose(read, given, rtol=1e-15, atol=0)
 
@@ -141,7 +147,8 @@ def test_bad_files_are_reported_at_their_key(tmp_path: Path):
 
 def test_a_body_given_by_matrices_refuses_beam_keys_and_points_by_length(tmp_path: Path):
     write(tmp_path, "link", NODES, MASS, STIFFNESS)
-    files = 'mass = "link.mass.mtx", stiffness = "link.stiffness.mtx", nodes = "link.nodes.csv"'
+    files = ('mass = "link.mass.mtx", stiffness = "link.stiffness.mtx", nodes = "link.nodes.csv", '
+             'length_unit = "m", mass_unit = "kg"')
     text = f"""
 [modal_bodies.link]
 matrices = {{ {files} }}
@@ -164,7 +171,7 @@ free = true
 def compile_problems(stiffness: np.ndarray, interface: dict, gauge: bool = False) -> dict[str, str]:
     """The problems the core finds in the link of ``stiffness`` with ``interface`` (and a gauge at node 2)."""
     m = jp.Model("link")
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": stiffness, "nodes": NODES},
+    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": stiffness, "nodes": NODES, **SI},
                      interface=interface, points={"C": 2})
     if gauge:
         m.add_strain_gauge("gauge", "link.C")
@@ -189,7 +196,7 @@ def test_a_structure_beyond_the_dense_reduction_s_size_is_refused_before_it_is_s
     identity = scipy.sparse.identity(3 * n, format="csr")
     nodes = np.column_stack([np.arange(n, dtype=float), np.zeros(n)])
     with pytest.raises(ModelError, match=f"{n} nodes: a structure given by matrices has at most"):
-        jp.Model("big").add_modal_body("big", matrices={"mass": identity, "stiffness": identity, "nodes": nodes},
+        jp.Model("big").add_modal_body("big", matrices={"mass": identity, "stiffness": identity, "nodes": nodes, **SI},
                                        interface={"A": 0, "B": 1})
 
 

@@ -69,11 +69,11 @@ def _bad_input(title: str, problems) -> typer.Exit:
     return typer.Exit(EXIT_BAD_INPUT)
 
 
-def _load(model: Path, overrides: list[str]):
+def _load(model: Path, overrides: list[str], check: bool = True):
     from .modelfile import load
 
     try:
-        return load(model, overrides)
+        return load(model, overrides, check=check)
     except ModelError as exc:
         n = len(exc.problems)
         raise _bad_input(f"{model}: {n} problem{'s' if n != 1 else ''}", exc.problems) from None
@@ -253,13 +253,17 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
     clearance joints, drivers and force elements, and the degrees of freedom.
     Exits with 2 and one line per problem when the file is not valid.
     """
-    from .modelfile.plausibility import plausibility
+    from .modelfile import assembly_error
 
-    m = _load(model, set_)
-    info = m.check()
+    m = _load(model, set_, check=False)
     spec = m.to_spec()
-    for problem in plausibility(spec):
-        _warning(str(problem))
+    # the plausibility warnings first, whatever the assembly then finds; then the assembly's notes
+    try:
+        with _printed_warnings():
+            info = m.check()
+    except SimulationError as exc:
+        problems = [p for p in assembly_error(exc, spec).problems if not p.message.startswith("(plausibility")]
+        raise _bad_input(f"{model}: the initial configuration cannot be assembled", problems) from None
     q0 = info["initial_coordinates"]
     out.print(f"[bold]{spec['name']}[/]  ({model})")
     bodies = Table("body", "mass", "inertia", "x (mm)", "y (mm)", "angle (deg)", title="bodies, assembled at t0")

@@ -303,11 +303,28 @@ class Model:
         """Compiles and assembles the initial configuration; returns the mechanism's summary
         (bodies, joints, coordinates, degrees of freedom, initial coordinates) and, under
         ``beam_frequencies``, each beam's three lowest natural frequencies [Hz], unstressed, free-free and
-        clamped at its start (beams of at most 1500 coordinates: a dense eigensolve)."""
+        clamped at its start (beams of at most 1500 coordinates: a dense eigensolve).
+
+        The plausibility findings (:func:`jointplay.modelfile.plausibility`) are issued first, as
+        :class:`~jointplay.errors.JointplayWarning` warnings, whatever the assembly then does; what the
+        assembly did that the description does not say (a body moved far from its given place, a driver whose
+        start value contradicts the given positions, a flexible body strained to close a loop) is issued
+        next, the same way, and listed under ``assembly_notes`` (docs/model-files.md, "How a run starts").
+        Raises :class:`~jointplay.errors.SimulationError` when no consistent start exists."""
+        from .modelfile.plausibility import emit
+
+        emit(self._spec_and_findings()[1])
+        info = self._assembled()
+        emit(info["assembly_notes"])
+        return info
+
+    def _assembled(self) -> dict:
+        """:meth:`check` without its warnings."""
         info = dict(self.compile().describe())
         assembled = self.compile().assemble(0.0)
         if assembled["error"] is not None:
             raise SimulationError(assembled["error"], stage="assembly")
+        info["assembly_notes"] = _assembly_problems(assembled["notes"], self._spec)
         # degrees of freedom from the rank of the joints' equations at the assembled configuration
         info["redundant_equations"] = assembled["redundant_equations"]
         info["dependent_elements"] = list(assembled["dependent_elements"])
@@ -401,6 +418,7 @@ class Model:
             results = make_results(raw)
             if kind == "csv":
                 results.save(output_file if raw["error"] is None else resultsfile.partial_path(output_file))
+        emit(_assembly_problems(raw.get("assembly_notes", []), spec_snapshot))
         if raw["error"] is not None:
             raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
         return results
@@ -429,6 +447,15 @@ class Model:
         from pathlib import Path
 
         Path(path).write_text(self.to_toml(), encoding="utf-8")
+
+
+def _assembly_problems(notes: list, spec: dict) -> list:
+    """The core's assembly notes ``(name, on_body, message)`` as problems located in the description."""
+    from .errors import Problem
+    from .modelfile import body_location, element_location
+
+    return [Problem(body_location(name, spec) if on_body else element_location(name, spec), message)
+            for name, on_body, message in notes]
 
 
 def _flexible_advice(spec: dict, options: dict) -> list:

@@ -691,8 +691,10 @@ MODAL_MATRICES = Table("matrices", "A planar structure from another finite-eleme
           "`.txt`: numbers apart by commas or spaces, `#` comments); or a list of pairs",
           example='a file, e.g. "link.nodes.csv"'),
     Param("length_unit", "text", "unit of lengths in the files (node positions; the matrices' rotational "
-          "coordinates follow)", "m", of="a unit of length", why="SI"),
-    Param("mass_unit", "text", "unit of mass in the files (`t` with `mm`)", "kg", of="a unit of mass", why="SI"),
+          "coordinates follow); required, because the numbers of a file carry no unit and a structure in mm "
+          "read as m is 1000 times too large", of="a unit of length", example='a unit of length, e.g. "mm"'),
+    Param("mass_unit", "text", "unit of mass in the files (`t` with `mm`); required, as `length_unit`",
+          of="a unit of mass", example='a unit of mass, e.g. "t" (with "mm") or "kg" (with "m")'),
 ))
 
 MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating frame plus Craig-Bampton modes, "

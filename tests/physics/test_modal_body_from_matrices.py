@@ -19,13 +19,16 @@ EI, RHO_A = 100.0, 2.0  # N m^2, kg/m
 SECTION = Section(ea=2e6, ei=EI, rho_a=RHO_A)
 
 
+#: the matrices and nodes here are in SI units (kg, m, s)
+SI = {"length_unit": "m", "mass_unit": "kg"}
+
 def test_a_link_from_matrices_is_held_simply_supported_at_euler_bernoullis_frequencies(tmp_path: Path):
     # f_n = (n pi)^2 sqrt(EI / (rho A L^4)) / (2 pi) for a 1 m link; 20 Hermite elements and 8 fixed-interface
     # modes: the reduction is within 6e-5 of it (seen 4.5e-7, 1.1e-5, 5.7e-5)
     nodes, mass, stiffness = straight_member(1.0, 20, SECTION)
     files = write(tmp_path, "link", nodes, mass, stiffness)
     m = jp.Model("link", gravity=(0, 0))
-    m.add_modal_body("link", matrices={key: str(tmp_path / name) for key, name in files.items()},
+    m.add_modal_body("link", matrices={**{key: str(tmp_path / name) for key, name in files.items()}, **SI},
                      interface={"A": 0, "B": 20}, normal_modes=8)
     body = next(b for b in m.check()["bodies"] if b["name"] == "link")
     expected = [(n * math.pi) ** 2 * math.sqrt(EI / RHO_A) / (2 * math.pi) for n in (1, 2, 3)]
@@ -107,7 +110,7 @@ free_length = "0 m"
 def test_an_undamped_l_frame_spinning_and_vibrating_in_free_flight_keeps_its_energy(tmp_path: Path):
     nodes, mass, stiffness = l_frame(0.4, 0.3, 4)
     m = jp.Model("free L", gravity=(0, 0))
-    m.add_modal_body("ell", matrices={"mass": mass, "stiffness": stiffness, "nodes": nodes},
+    m.add_modal_body("ell", matrices={"mass": mass, "stiffness": stiffness, "nodes": nodes, **SI},
                      interface={"root": 0, "tip": 8}, normal_modes=3, angular_velocity="20 rad/s",
                      velocity=("0.5 m/s", 0))
     start = m.check()["initial_velocities"].copy()

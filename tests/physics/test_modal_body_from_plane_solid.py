@@ -30,6 +30,9 @@ NODES, MASS, STIFFNESS = strip(LENGTH, DEPTH, 20, 2, E, NU, RHO, T)
 A, B = node_at(NODES, 0.0, 0.0), node_at(NODES, LENGTH, 0.0)
 
 
+#: the matrices and nodes here are in SI units (kg, m, s)
+SI = {"length_unit": "m", "mass_unit": "kg"}
+
 def full_mesh_held_frequencies() -> np.ndarray:
     """The full mesh's frequencies [Hz] with the chord frame's three coordinates held (A's two, B's u_y)."""
     held = [2 * A, 2 * A + 1, 2 * B + 1]
@@ -46,7 +49,7 @@ def test_a_plane_solid_held_at_its_chord_vibrates_as_the_full_mesh():
     # 10 fixed-interface modes and the constraint mode of B's u_x: the two bending modes and the first
     # axial one of the 126-coordinate mesh (805, 3104, 3973 Hz) within 3e-4 (seen 1e-12, 1e-12, 2.1e-4)
     m = jp.Model("strip", gravity=(0, 0))
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES},
+    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES, **SI},
                      interface={"A": A, "B": B}, normal_modes=10)
     body = next(b for b in m.check()["bodies"] if b["name"] == "link")
     assert body["nodes"] == 63 and body["mass"] == pytest.approx(RHO * T * DEPTH * LENGTH, rel=1e-12)
@@ -78,7 +81,7 @@ def test_a_plane_solid_pendulum_swings_with_the_compound_pendulum_period():
     amplitude = 0.05
     m = jp.Model("pendulum", gravity=(0, -9.81))
     m.add_ground_point("O", (0.0, 0.0))
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES},
+    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES, **SI},
                      interface={"A": A, "B": B}, normal_modes=4, angle=-math.pi / 2 + amplitude)
     m.add_revolute("pin", "ground.O", "link.A")
     results = m.simulate(2.0, method="generalized_alpha", step=5e-4, rtol=1e-8, atol=1e-11)
@@ -104,7 +107,7 @@ free = true
 """)
     loaded = jp.load(tmp_path / "strip.toml")
     m = jp.Model("strip", gravity=(0, 0))
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES},
+    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES, **SI},
                      interface={"A": A, "B": B}, normal_modes=10)
     assert held_frequencies(loaded) == pytest.approx(held_frequencies(m), rel=1e-12)
     again = jp.loads(loaded.to_toml())  # written back inline in SI
@@ -113,14 +116,14 @@ free = true
 
 def test_a_clamped_frame_and_matrices_of_neither_size_are_refused_at_their_keys():
     m = jp.Model("strip")
-    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES},
+    m.add_modal_body("link", matrices={"mass": MASS, "stiffness": STIFFNESS, "nodes": NODES, **SI},
                      interface={"A": A, "B": B}, frame="clamped")
     with pytest.raises(ModelError, match="holds the first interface node's section angle, which a structure with two "
                                          "coordinates per node"):
         m.compile()
     with pytest.raises(ModelError) as caught:
         jp.Model("strip").add_modal_body("link", matrices={"mass": MASS[:-1, :-1], "stiffness": STIFFNESS,
-                                                           "nodes": NODES}, interface={"A": A, "B": B})
+                                                           "nodes": NODES, **SI}, interface={"A": A, "B": B})
     found = {p.location: p.message for p in caught.value.problems}
     assert "must be 189 x 189: three coordinates (u_x, u_y, theta) for each of the 63 nodes of a frame, or " \
            "126 x 126: two (u_x, u_y) for each node of a plane solid, got 125 x 125" in found["modal_bodies.link.matrices.mass"]

@@ -102,10 +102,24 @@ def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check:
         raise ModelError([Problem(core_location(p.location, spec), p.message) for p in exc.problems]) from None
     if check:
         try:
-            model.check()
+            model._assembled()
         except SimulationError as exc:
-            raise ModelError([Problem(element_location(exc.element, spec), exc.cause)]) from None
+            raise assembly_error(exc, spec) from None
     return model
+
+
+def assembly_error(exc: SimulationError, spec: dict) -> ModelError:
+    """A failed assembly as a ModelError located at its element, followed by the plausibility findings
+    (made independently of the assembly: a unit slip in a mass is often what made it fail)."""
+    from .plausibility import plausibility
+
+    where = body_location(exc.element, spec)
+    if where == "model":
+        where = element_location(exc.element, spec)
+    found = plausibility(spec)
+    problems = [Problem(where, exc.cause)]
+    problems += [Problem(p.location, f"(plausibility, may explain the above) {p.message}") for p in found]
+    return ModelError(problems)
 
 
 def to_toml(model, header: str | None = None) -> str:
@@ -139,6 +153,16 @@ def core_location(location: str, spec: dict) -> str:
         return location
     rest = location[match.end():]
     return head + rest
+
+
+def body_location(name: str | None, spec: dict) -> str:
+    """The table of a named body, beam or modal body (``bodies.crank``); ``model`` when unknown."""
+    from .fields import join
+
+    for section in ("bodies", "beams", "modal_bodies"):
+        if name and any(e["name"] == name for e in spec.get(section, [])):
+            return join(section, name)
+    return "model"
 
 
 def element_location(element: str | None, spec: dict) -> str:

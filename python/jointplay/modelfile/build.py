@@ -619,8 +619,14 @@ class Builder:
             except mx.MatrixError as exc:
                 self.problem(join(at, key), str(exc))
         for key, kind in units.items():
+            if given.get(key) is None:
+                # the numbers of a file carry no unit: taken as SI, a structure in mm is 1000 times too large
+                self.problem(join(at, key), f"missing required value: {table[key].example}; the numbers in the "
+                                            f"files carry no unit, so the {kind} unit they are written in must "
+                                            "be given (\"m\" and \"kg\" for SI)")
+                continue
             try:
-                read[key] = mx.unit_factor(given.get(key, table.default(key)), kind)
+                read[key] = mx.unit_factor(given[key], kind)
             except mx.MatrixError as exc:
                 self.problem(join(at, key), str(exc))
         fits = read.get("nodes") is not None and self.structure_fits(read, at)
