@@ -26,7 +26,7 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
     let mut q = model.initial_coordinates.clone();
     let mut qdot = model.initial_velocities.clone();
     project_positions(model, all, t0, &mut q, ASSEMBLY_TOLERANCE, ASSEMBLY_ITERATIONS, ws)?;
-    super::assembly_checks::refuse_implausible_start(model, t0, &q, ws)?;
+    super::assembly_checks::settle_start(model, t0, &mut q, ws)?;
     let (before, _) = velocity_residuals(model, all, t0, &q, &qdot, ws);
     project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
     // dependent equations that contradict each other (a driver against a weld) leave a residual

@@ -7,7 +7,10 @@
 //! masses make its equations too ill-conditioned to solve
 //! (docs/model-files.md, "How a run starts").
 
+use super::assembly::ASSEMBLY_TOLERANCE;
 use super::equations::{constraint_residuals, jacobian_times, linearise_constraints, update_frames};
+use super::projection::project_positions;
+use super::rigid_placement::place_bodies_rigidly;
 use super::frame::{Frame, Marker};
 use super::model::ElementKind;
 use super::{Model, Workspace};
@@ -79,10 +82,35 @@ struct Deformation {
     turned: (String, String),
 }
 
+/// Newton iterations of the second assembly, from the bodies placed as wholes (as the first's).
+const SECOND_ASSEMBLY_ITERATIONS: usize = 50;
+
+/// After the assembly's Newton: when it strained a flexible body beyond the refusal bounds,
+/// assembles again from the bodies moved as wholes to satisfy the joints and drivers
+/// ([`place_bodies_rigidly`]), and keeps that start if it strains no body so; then refuses
+/// what is still implausible ([`refuse_implausible_start`]).
+pub(crate) fn settle_start(model: &Model, t0: f64, q: &mut [f64], ws: &mut Workspace) -> Result<(), SimulationError> {
+    if !model.is_rigid() && too_strained(model, q, ws) {
+        let all = model.constraints.len();
+        let given = frames_at(model, &model.initial_coordinates, ws);
+        let mut again = place_bodies_rigidly(model, all, t0, mechanism_size(model, &given), ws);
+        let assembled = project_positions(model, all, t0, &mut again, ASSEMBLY_TOLERANCE, SECOND_ASSEMBLY_ITERATIONS, ws);
+        if assembled.is_ok() && !too_strained(model, &again, ws) {
+            q.copy_from_slice(&again);
+        }
+    }
+    refuse_implausible_start(model, t0, q, ws)
+}
+
+/// Whether a flexible body is strained beyond [`REFUSED_STRAIN`] or [`REFUSED_ROTATION`] at `q`.
+fn too_strained(model: &Model, q: &[f64], ws: &mut Workspace) -> bool {
+    deformations(model, q, ws).iter().any(|d| d.strain.abs() > REFUSED_STRAIN || d.rotation.abs() > REFUSED_ROTATION)
+}
+
 /// Refuses an assembled configuration `q` that bends or stretches a flexible body beyond
 /// [`REFUSED_STRAIN`] or [`REFUSED_ROTATION`], or starts a journal deeper in its bearing
 /// than its joint's penetration bound.
-pub(crate) fn refuse_implausible_start(model: &Model, t0: f64, q: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
+fn refuse_implausible_start(model: &Model, t0: f64, q: &[f64], ws: &mut Workspace) -> Result<(), SimulationError> {
     for d in deformations(model, q, ws) {
         if d.strain.abs() > REFUSED_STRAIN || d.rotation.abs() > REFUSED_ROTATION {
             return Err(SimulationError::ImplausibleStart { time: t0, element: model.bodies[d.body].name.clone(), cause: strain_text(&d, true) });

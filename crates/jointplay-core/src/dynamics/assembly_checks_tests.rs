@@ -152,3 +152,28 @@ fn numbers_are_written_to_three_significant_digits() {
     assert_eq!(mm(0.0005), "0.500 mm");
     assert_eq!(significant(2.5e-5), "2.50e-5");
 }
+
+#[test]
+fn a_beam_given_600_mm_from_its_pin_is_moved_there_whole_not_stretched() {
+    // the mass-weighted Newton alone moves the pinned end and drags the rest: 300 mm became 665 mm
+    let m = beam_model(serde_json::json!({
+        "name": "far beam", "gravity": [0, 0], "ground_points": [{"name": "hub", "position": [0.3, -0.3]}], "bodies": [],
+        "beams": [{"name": "flex", "start": [0.3, 0.3], "end": [0.6, 0.3],
+                   "section": {"type": "resultants", "axial_stiffness": 1.0e7, "shear_stiffness": 4.0e6, "bending_stiffness": 20.0,
+                               "mass_per_length": 0.4, "rotary_inertia_per_length": 1e-6},
+                   "mesh": {"order": "quadratic", "elements": 3, "element_length": null},
+                   "damping_time": 0.0, "velocity": [0, 0], "angular_velocity": 0, "points": []}],
+        "joints": [{"type": "revolute", "name": "pin", "first": "ground.hub", "second": "flex.start"}],
+        "drivers": [], "forces": [], "sensors": []
+    }));
+    let mut ws = Workspace::new(&m);
+    let state = assemble(&m, 0.0, &mut ws).expect("a rigid translation closes the joint");
+    let q = state.coordinates();
+    let n = q.len();
+    // first node at the hub, last node 300 mm to its right: translated by -600 mm, unstretched
+    assert!((q[0] - 0.3).abs() < 1e-12 && (q[1] + 0.3).abs() < 1e-12, "{q:?}");
+    assert!((q[n - 3] - 0.6).abs() < 1e-9 && (q[n - 2] + 0.3).abs() < 1e-9, "{q:?}");
+    let notes = assembly_notes(&m, 0.0, q, &mut ws);
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    assert!(notes[0].message.starts_with("assembly moved it 600 mm and turned it 0 deg"), "{}", notes[0].message);
+}

@@ -23,6 +23,7 @@ mod model;
 mod progress;
 mod projection;
 mod redundancy;
+mod rigid_placement;
 mod simulate;
 mod singular_diagnosis;
 mod state;
