@@ -89,23 +89,42 @@ def test_a_beam_preloaded_by_a_fifth_of_a_percent_is_noted_at_check_and_run(tmp_
     assert [p.location for p in info["assembly_notes"]] == ["beams.rod"]
 
 
-def short_rocker_four_bar() -> jp.Model:
-    """The example's four-bar with its modal coupler and a rocker 20 % too short (144 mm for 180 mm)."""
+def short_rocker_four_bar(factor: float) -> jp.Model:
+    """The example's four-bar with its modal coupler (base 240 mm) and its rocker ``factor`` times 180 mm long."""
     model = four_bar.build_model(flexible=True)
     spec = model.to_spec()
     rocker = next(b for b in spec["bodies"] if b["name"] == "rocker")
     for point in rocker["points"]:
-        point["position"] = [0.8 * point["position"][0], point["position"][1]]
+        point["position"] = [factor * point["position"][0], point["position"][1]]
     return jp.Model.from_spec(spec)
 
 
-def test_a_modal_coupler_bent_to_close_a_loop_too_short_for_it_is_refused():
-    # before: assembled with a modal coordinate of -2 and 1.1 MN at B in the first millisecond
+def test_a_modal_coupler_bent_to_close_a_loop_no_rigid_coupler_closes_is_refused():
+    # a rocker of 72 mm: from the crank pin A (60, 0) mm to the rocker's pivot (190, 0) mm is 130 mm, less than
+    # 240 - 72 mm, so no rigid coupler closes the loop (before: assembled bent, meganewtons at t = 0)
     with pytest.raises(SimulationError) as caught:
-        short_rocker_four_bar().simulate(1e-3, method="dopri5")
+        short_rocker_four_bar(0.4).simulate(1e-3, method="dopri5")
     assert caught.value.stage == "assembly" and caught.value.element == "coupler"
     assert ("coupler cannot start as assembled at t = 0.000000e0 s: closing the loops compresses it from 240 mm to "
-            "216 mm between coupler.A and coupler.B, a strain of 10.0 %") in caught.value.cause
+            "166 mm between coupler.A and coupler.B, a strain of 30.9 %") in caught.value.cause
+
+
+def test_a_rocker_20_percent_short_is_closed_by_turning_the_links_not_by_bending_the_coupler():
+    # 144 mm still closes the loop with rigid links, turned: the mass-weighted Newton alone bent the coupler
+    # (a modal coordinate of -2 and 1.1 MN at B in the first millisecond); now the links turn, and say so
+    model = short_rocker_four_bar(0.8)
+    with pytest.warns(JointplayWarning) as caught:
+        info = model.check()
+    notes = {p.location: p.message for p in info["assembly_notes"]}
+    assert notes["modal_bodies.coupler"].startswith("assembly moved it 0 mm and turned it -17.1 deg")
+    assert notes["bodies.rocker"].startswith("assembly moved it 35.6 mm and turned it -22.0 deg")
+    assert any(str(w.message).startswith("modal_bodies.coupler: assembly moved it") for w in caught)
+    coupler = next(b for b in info["bodies"] if b["name"] == "coupler")
+    first, n = coupler["coordinates"]
+    assert max(abs(v) for v in info["initial_coordinates"][first + 3: first + n]) < 1e-9  # no modal amplitude
+    with pytest.warns(JointplayWarning):
+        results = model.simulate(1e-3, method="dopri5", rtol=1e-7, atol=1e-10)
+    assert max((results["B.fx"] ** 2 + results["B.fy"] ** 2) ** 0.5) < 10.0  # N (before: 1.1e6)
 
 
 def test_matrix_files_without_their_units_are_refused_at_each_unit_key(tmp_path):
