@@ -33,7 +33,7 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
     // no velocity removes: the mechanism is locked
     let (after, row) = velocity_residuals(model, all, t0, &q, &qdot, ws);
     if after > LOCKED_VELOCITY_RESIDUAL * (1.0 + before) {
-        return Err(super::assembly_checks::velocity_failure(model, t0, &q, after, row, ws));
+        return Err(super::conditioning::velocity_failure(model, t0, &q, after, row, ws));
     }
     let mut y = Vec::with_capacity(model.layout.len());
     y.extend_from_slice(&q);

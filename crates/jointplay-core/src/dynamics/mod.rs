@@ -9,6 +9,7 @@ mod assembly_checks;
 mod brent;
 mod channels;
 mod compile;
+mod conditioning;
 mod constraint_jacobian;
 mod constraint_solution;
 mod equations;

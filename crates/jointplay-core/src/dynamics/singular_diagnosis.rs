@@ -4,7 +4,8 @@
 //! makes a clearance joint take the driver's effort, and its penetration or
 //! the step size runs away there.
 
-use super::assembly_checks::{relative_smallest_singular_value, significant};
+use super::assembly_checks::significant;
+use super::conditioning::relative_smallest_singular_value;
 use super::model::ElementKind;
 use super::{Model, Workspace};
 use crate::error::SimulationError;

@@ -2,6 +2,7 @@
 //! the outer dead centre, where no crank angle follows the slider.
 
 use super::*;
+use crate::dynamics::conditioning::relative_smallest_singular_value;
 use crate::dynamics::tests::slider_crank_spec_json;
 use crate::dynamics::{assemble, compile, simulate, SimulationOptions};
 use crate::spec::ModelSpec;
