@@ -301,3 +301,15 @@ def test_the_examples_assemble_without_a_note():
         assert jp.load(EXAMPLES / f"{name}.toml")._assembled()["assembly_notes"] == [], name
     for flexible in (False, True):
         assert four_bar.build_model(flexible)._assembled()["assembly_notes"] == []
+
+
+def test_the_same_slider_with_an_ideal_pin_is_told_as_a_toggle_position_too(tmp_path):
+    # before: "constraints could not be satisfied at t = 6.091340e-2 s (residual 1.017e-7 in A)"
+    i, j = TOGGLE.index("[joints.B]"), TOGGLE.index("[drivers.push]")
+    text = TOGGLE[:i] + '[joints.B]\ntype = "revolute"\nfirst = "slider.B"\nsecond = "rod.B"\n' + TOGGLE[j:]
+    with pytest.raises(SimulationError) as caught:
+        jp.loads(text).simulate(0.1)
+    assert caught.value.kind == "SingularConfiguration" and caught.value.element == "push"
+    assert ("the driver pushes the linkage through a toggle (singular) position at t = 0.0609 s"
+            in caught.value.cause)
+    assert "so the joints cannot follow the driver" in caught.value.cause

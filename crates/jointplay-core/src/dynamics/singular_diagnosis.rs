@@ -23,16 +23,18 @@ pub const TOGGLE_RATIO: f64 = 2e-2;
 const DRIVER_GAIN: f64 = 10.0;
 
 /// `error` restated when, at the last accepted positions `q` (time `t`), a driver holds the
-/// linkage at a toggle position: a penetration beyond its bound, or a step size underflow,
-/// there follows from the position, not from a soft contact or a large step.
+/// linkage at a toggle position: a penetration beyond its bound, a step size underflow or
+/// equations that could not be kept there follow from the position, not from a soft
+/// contact, a large step or a tolerance.
 pub(crate) fn diagnose_toggle(model: &Model, error: SimulationError, t0: f64, t: f64, q: &[f64], ws: &mut Workspace) -> SimulationError {
     let stopped = match &error {
-        SimulationError::ExcessivePenetration { .. } | SimulationError::StepSizeUnderflow { .. } => error.time() > t0,
+        SimulationError::ExcessivePenetration { .. } | SimulationError::StepSizeUnderflow { .. } | SimulationError::ConstraintViolation { .. } => error.time() > t0,
         _ => false,
     };
-    if !stopped || model.clearance_joints().next().is_none() {
+    if !stopped {
         return error;
     }
+    let consequence = if model.clearance_joints().next().is_some() { "the clearance joints take the driver's effort" } else { "the joints cannot follow the driver" };
     let all = model.constraints.len();
     let with = relative_smallest_singular_value(model, all, t, q, None, ws);
     if with >= TOGGLE_RATIO {
@@ -46,10 +48,11 @@ pub(crate) fn diagnose_toggle(model: &Model, error: SimulationError, t0: f64, t:
                 time: error.time(),
                 element: driver.name.clone(),
                 cause: format!(
-                    "the driver pushes the linkage through a toggle (singular) position at t = {} s: there the driven coordinate no longer moves the linkage (the smallest singular value of the joints' and drivers' equations, with the clearance joints held where they are, is {:.2e} of the largest, {:.2e} without this driver), so the clearance joints take the driver's effort: {}; check the driver's range of motion (a crank-rocker driven at its rocker, a slider driven beyond its dead centre) or drive another joint",
+                    "the driver pushes the linkage through a toggle (singular) position at t = {} s: there the driven coordinate no longer moves the linkage (the smallest singular value of the joints' and drivers' equations, with the clearance joints held where they are, is {:.2e} of the largest, {:.2e} without this driver), so {}: {}; check the driver's range of motion (a crank-rocker driven at its rocker, a slider driven beyond its dead centre) or drive another joint",
                     significant(t),
                     with,
                     without,
+                    consequence,
                     what_stopped(&error)
                 ),
             };
@@ -65,6 +68,7 @@ fn what_stopped(error: &SimulationError) -> String {
             format!("the penetration in {element} reached {} mm, beyond its bound {} mm", significant(penetration * 1e3), significant(bound * 1e3))
         }
         SimulationError::StepSizeUnderflow { step, .. } => format!("the step size fell to {step:.3e} s"),
+        SimulationError::ConstraintViolation { element, residual, .. } => format!("the joints' equations could not be kept (residual {residual:.3e} in {element})"),
         other => other.to_string(),
     }
 }

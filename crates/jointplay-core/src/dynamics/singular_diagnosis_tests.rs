@@ -7,10 +7,10 @@ use crate::dynamics::tests::slider_crank_spec_json;
 use crate::dynamics::{assemble, compile, simulate, SimulationOptions};
 use crate::spec::ModelSpec;
 
-/// The Flores slider-crank with its clearance joint B (rod/slider), crank at 90 deg, the slider
+/// The Flores slider-crank with its clearance joint B (rod/slider; ideal unless `clearance`), crank at 90 deg, the slider
 /// pushed outward at 1 m/s from x = sqrt(120^2 - 50^2) mm: it reaches the outer dead centre
 /// (170 mm) at t = 60.9 ms and is driven on beyond the linkage's reach.
-pub(crate) fn slider_pushed_through_dead_centre() -> Model {
+pub(crate) fn slider_pushed_through_dead_centre(clearance: bool) -> Model {
     let mut spec = slider_crank_spec_json();
     let x = (0.12f64.powi(2) - 0.05f64.powi(2)).sqrt();
     spec["bodies"][0]["position"] = serde_json::json!([0.0, 0.025]);
@@ -18,14 +18,16 @@ pub(crate) fn slider_pushed_through_dead_centre() -> Model {
     spec["bodies"][1]["position"] = serde_json::json!([x / 2.0, 0.025]);
     spec["bodies"][1]["angle"] = serde_json::json!((-0.05f64).atan2(x));
     spec["bodies"][2]["position"] = serde_json::json!([x, 0.0]);
-    spec["joints"][2] = serde_json::json!({
-        "type": "clearance_revolute", "name": "B", "bearing": "slider.B", "journal": "rod.B",
-        "bearing_radius": 0.01, "clearance": 0.0005, "length": 0.04,
-        "bearing_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
-        "journal_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
-        "contact": {"law": "lankarani_nikravesh", "restitution": 0.9}, "stiffness": {"law": "hertz_cylinder"},
-        "friction": {"law": "none"}, "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": true,
-        "onset_velocity_floor": 1e-4, "max_penetration": null, "lubrication": null});
+    if clearance {
+        spec["joints"][2] = serde_json::json!({
+            "type": "clearance_revolute", "name": "B", "bearing": "slider.B", "journal": "rod.B",
+            "bearing_radius": 0.01, "clearance": 0.0005, "length": 0.04,
+            "bearing_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
+            "journal_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
+            "contact": {"law": "lankarani_nikravesh", "restitution": 0.9}, "stiffness": {"law": "hertz_cylinder"},
+            "friction": {"law": "none"}, "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": true,
+            "onset_velocity_floor": 1e-4, "max_penetration": null, "lubrication": null});
+    }
     spec["drivers"] = serde_json::json!([{"name": "push", "joint": "guide", "function": {"kind": "constant_rate", "initial": x, "rate": 1.0}}]);
     let spec: ModelSpec = serde_json::from_value(spec).expect("valid spec");
     compile(&spec).unwrap_or_else(|e| panic!("{e}"))
@@ -33,7 +35,7 @@ pub(crate) fn slider_pushed_through_dead_centre() -> Model {
 
 #[test]
 fn a_slider_driven_beyond_its_dead_centre_is_told_as_a_toggle_position() {
-    let m = slider_pushed_through_dead_centre();
+    let m = slider_pushed_through_dead_centre(true);
     let mut ws = Workspace::new(&m);
     let mut state = assemble(&m, 0.0, &mut ws).unwrap();
     let outcome = simulate(&m, &mut state, 0.1, &SimulationOptions::default(), None);
@@ -52,10 +54,27 @@ fn a_slider_driven_beyond_its_dead_centre_is_told_as_a_toggle_position() {
 
 #[test]
 fn the_toggle_measure_is_small_only_near_the_dead_centre() {
-    let m = slider_pushed_through_dead_centre();
+    let m = slider_pushed_through_dead_centre(true);
     let mut ws = Workspace::new(&m);
     let state = assemble(&m, 0.0, &mut ws).unwrap();
     let all = m.constraints.len();
     let at_start = relative_smallest_singular_value(&m, all, 0.0, state.coordinates(), None, &mut ws);
     assert!(at_start > 10.0 * TOGGLE_RATIO, "{at_start}");
+}
+
+#[test]
+fn the_same_slider_crank_with_ideal_joints_is_told_as_a_toggle_position_too() {
+    let m = slider_pushed_through_dead_centre(false);
+    let mut ws = Workspace::new(&m);
+    let mut state = assemble(&m, 0.0, &mut ws).unwrap();
+    let outcome = simulate(&m, &mut state, 0.1, &SimulationOptions::default(), None);
+    match outcome.error.expect("the run cannot go beyond the dead centre") {
+        SimulationError::SingularConfiguration { time, element, cause } => {
+            assert_eq!(element, "push");
+            assert!((0.0605..0.0615).contains(&time), "{time}");
+            assert!(cause.contains("the driver pushes the linkage through a toggle (singular) position at t = 0.0609 s"), "{cause}");
+            assert!(cause.contains("so the joints cannot follow the driver: the joints' equations could not be kept"), "{cause}");
+        }
+        other => panic!("expected a toggle, got {other}"),
+    }
 }
