@@ -49,6 +49,9 @@ pub const DRIVER_ANGLE: f64 = 5.0 * std::f64::consts::PI / 180.0;
 /// See [`DRIVER_ANGLE`].
 pub const DRIVER_FRACTION: f64 = 0.1;
 
+/// A move never noted, whatever the mechanism's size (one without named points has none) [m]: round-off.
+const NEGLIGIBLE_MOVE: f64 = 1e-9;
+
 /// Something assembly did that the user should know, with what it is about.
 #[derive(Clone, Debug, PartialEq)]
 pub struct AssemblyNote {
@@ -155,7 +158,7 @@ fn driver_notes(model: &Model, t0: f64, ws: &mut Workspace) -> Vec<AssemblyNote>
             let wrapped = wrap(r);
             (wrapped.abs() > DRIVER_ANGLE, format!("{} deg", significant(wrapped.abs().to_degrees())))
         } else {
-            (r.abs() > DRIVER_FRACTION * size, mm(r.abs()))
+            (r.abs() > (DRIVER_FRACTION * size).max(NEGLIGIBLE_MOVE), mm(r.abs()))
         };
         if off {
             let what = if angle { "relative angle" } else { "displacement" };
@@ -181,7 +184,7 @@ fn moved_bodies(model: &Model, q: &[f64], ws: &mut Workspace) -> Vec<AssemblyNot
         let (a, b) = (&given[k + 1], &assembled[k + 1]);
         let moved = (b.position - a.position).norm();
         let turned = wrap(b.angle - a.angle);
-        if moved > MOVED_FRACTION * size || turned.abs() > MOVED_ANGLE {
+        if moved > (MOVED_FRACTION * size).max(NEGLIGIBLE_MOVE) || turned.abs() > MOVED_ANGLE {
             notes.push(AssemblyNote {
                 name: body.name.clone(),
                 on_body: true,
