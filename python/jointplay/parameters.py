@@ -646,6 +646,9 @@ VARIANTS = {"section": BEAM_SECTIONS}
 ELEMENT_ORDERS = ("linear", "quadratic")
 MODAL_FRAMES = ("chord", "clamped")
 
+#: Default of a flexible body's initial velocities (docs/model-files.md, "How a run starts").
+_RIGID_START = "none: the rigid motion the assembled mechanism gives the body, found as a rigid link's velocities are"
+
 BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reissner) beam, straight and unstressed "
              "at the start, divided into elements of equal length; its named points are `start`, `end` and those of "
              "`points` (docs/theory/beam.md).", (
@@ -666,8 +669,10 @@ BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reiss
     Param("damping_time", "time", "retardation time tau of strain-rate (Kelvin-Voigt) damping: each stress resultant "
           "gains tau times its rate; a mode of circular frequency w gets the damping ratio tau w / 2", 0.0, ge=0,
           why="undamped unless chosen"),
-    Param("velocity", "vector", "approximate initial velocity of the first end", (0.0, 0.0), of="velocity"),
-    Param("angular_velocity", "angular velocity", "approximate initial angular velocity, as a rigid link", 0.0),
+    Param("velocity", "vector", "initial velocity of the first end; with `angular_velocity`, the rigid motion the "
+          "beam starts in, held and checked against the joints", None, of="velocity", default_text=_RIGID_START),
+    Param("angular_velocity", "angular velocity", "initial angular velocity, as a rigid link (see `velocity`)", None,
+          default_text=_RIGID_START),
     Param("points", "arclengths", 'named points by arclength from the first end: `points = { E = "75 mm" }`', {}),
     Param("free", "flag", "allow a beam that no joint or force element refers to (otherwise an error)", False,
           in_spec=False),
@@ -733,9 +738,11 @@ MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating 
     Param("damping_time", "time", "retardation time tau of stiffness-proportional damping `tau K`, added to the "
           "modal damping: a beam's strain-rate damping of the same `damping_time`, linearised (mode n gets the "
           "ratio tau w_n / 2)", 0.0, ge=0, why="undamped unless chosen"),
-    Param("velocity", "vector", "initial velocity of the frame's origin (the first interface node)", (0.0, 0.0),
-          of="velocity"),
-    Param("angular_velocity", "angular velocity", "initial angular velocity of the frame", 0.0),
+    Param("velocity", "vector", "initial velocity of the frame's origin (the first interface node); with "
+          "`angular_velocity`, the rigid motion the body starts in (modal rates zero), held and checked against the "
+          "joints", None, of="velocity", default_text=_RIGID_START),
+    Param("angular_velocity", "angular velocity", "initial angular velocity of the frame (see `velocity`)", None,
+          default_text=_RIGID_START),
     Param("free", "flag", "allow a modal body that no joint or force element refers to (otherwise an error)", False,
           in_spec=False),
 ))

@@ -123,6 +123,16 @@ pub enum SimulationError {
         /// Largest residual after the iteration [m or rad].
         residual: f64,
     },
+    /// Initial velocities given for a flexible body contradict its joints.
+    #[error("the initial velocities given for {element} contradict its joints and drivers at t = {time:.6e} s: {cause}")]
+    ContradictoryVelocities {
+        /// Time [s].
+        time: f64,
+        /// The body (or bodies) whose given velocities the joints contradict.
+        element: String,
+        /// What the joints need instead.
+        cause: String,
+    },
     /// A contact penetrated further than the sanity bound allows.
     #[error("penetration {penetration:.3e} m in {element} at t = {time:.6e} s exceeds the bound {bound:.3e} m; the contact is too soft or the step too large")]
     ExcessivePenetration {
@@ -208,6 +218,7 @@ impl SimulationError {
             | Self::NonFinite { time, .. }
             | Self::SingularConfiguration { time, .. }
             | Self::ConstraintViolation { time, .. }
+            | Self::ContradictoryVelocities { time, .. }
             | Self::ExcessivePenetration { time, .. }
             | Self::InvalidInput { time, .. }
             | Self::FilmModel { time, .. }
@@ -225,6 +236,7 @@ impl SimulationError {
             Self::NonFinite { element, .. }
             | Self::SingularConfiguration { element, .. }
             | Self::ConstraintViolation { element, .. }
+            | Self::ContradictoryVelocities { element, .. }
             | Self::ExcessivePenetration { element, .. }
             | Self::FilmModel { element, .. }
             | Self::ElementOutOfRange { element, .. } => Some(element),

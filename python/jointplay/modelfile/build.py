@@ -462,7 +462,7 @@ class Builder:
         section, mesh = geometry
         return {"name": name, "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
                 "section": section, "mesh": mesh, "damping_time": float(t.damping_time),
-                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity),
+                **_rigid_motion(t),
                 "points": stations}
 
     def beam_geometry(self, where: str, t: Strict, raw: dict,
@@ -560,7 +560,7 @@ class Builder:
                 "points": [point(station) for station in points], "frame": t.frame,
                 "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
                 "damping_time": float(t.damping_time),
-                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity)}
+                **_rigid_motion(t)}
 
     def modal_beam(self, where: str, t: Strict, raw: dict, named: tuple[list[dict], list[dict]]) -> dict | None:
         """The core's structure of a modal body reduced from a beam; None after adding problems."""
@@ -794,3 +794,9 @@ def _shown(value: Any) -> str:
     """A validated quantity as the user wrote it."""
     return value.text if isinstance(value, Q) else f"{value:g}"
 
+
+def _rigid_motion(t: Strict) -> dict:
+    """A flexible body's initial rigid motion as the core reads it: each key None where it was not given (neither
+    given: the rigid motion the mechanism gives the body at assembly)."""
+    return {"velocity": None if t.velocity is None else [float(v) for v in t.velocity],
+            "angular_velocity": None if t.angular_velocity is None else float(t.angular_velocity)}

@@ -311,6 +311,21 @@ impl BodyKind {
         }
     }
 
+    /// The velocity coordinates `v` of the body at positions `q` moving as a
+    /// rigid body: its reference point (a rigid body's centre of mass, a beam's
+    /// first node, a modal body's frame origin) at `velocity` [m/s], turning at
+    /// `angular_velocity` [rad/s], undeformed in rate (a modal body's modal rates zero).
+    pub fn rigid_motion_velocities(&self, q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]) {
+        match self {
+            Self::PlanarRigid(_) => v.copy_from_slice(&[velocity.x, velocity.y, angular_velocity]),
+            Self::Beam(_) => BeamBody::rigid_motion_velocities(q, velocity, angular_velocity, v),
+            Self::Modal(_) => {
+                v.fill(0.0);
+                v[..3].copy_from_slice(&[velocity.x, velocity.y, angular_velocity]);
+            }
+        }
+    }
+
     /// Moves the positions `q` by the velocity-coordinate increment `dv` (a
     /// position correction `q + dv` where `nq == nv`).
     #[inline]

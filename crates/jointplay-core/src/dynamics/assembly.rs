@@ -2,9 +2,10 @@
 //! constraints (driver equations included, so driven coordinates are held
 //! at their prescribed values) with every clearance joint locked at its
 //! initial eccentricity, then the velocities of that locked (ideal)
-//! mechanism.
+//! mechanism, every flexible body in a rigid motion (`rigid_motion_start.rs`).
 
 use super::projection::{project_positions, project_velocities, velocity_residuals};
+use super::rigid_motion_start::{needs_rigid_motion_start, start_in_rigid_motion};
 use super::state::State;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
@@ -27,7 +28,11 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
     let mut qdot = model.initial_velocities.clone();
     project_positions(model, all, t0, &mut q, ASSEMBLY_TOLERANCE, ASSEMBLY_ITERATIONS, ws)?;
     let (before, _) = velocity_residuals(model, all, t0, &q, &qdot, ws);
-    project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
+    if needs_rigid_motion_start(model) {
+        start_in_rigid_motion(model, t0, &q, &mut qdot, ws)?;
+    } else {
+        project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
+    }
     // dependent equations that contradict each other (a driver against a weld) leave a residual
     // no velocity removes: the mechanism is locked
     let (after, row) = velocity_residuals(model, all, t0, &q, &qdot, ws);

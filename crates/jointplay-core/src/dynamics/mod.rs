@@ -5,6 +5,7 @@
 //! simulation loop that produces a [`Trajectory`].
 
 mod assembly;
+mod rigid_motion_start;
 mod brent;
 mod channels;
 mod compile;
@@ -37,7 +38,7 @@ pub use joint_coordinates::{Formulation, JointTree};
 pub use layout::{BodyAddress, StateLayout};
 pub use extrema_summary::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
-pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
+pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
 pub use progress::Progress;
 pub use redundancy::{constraint_rank, ConstraintRank};
 pub use simulate::{simulate, simulate_with_sink, Diagnostics, SimulationOptions, SimulationOutcome};
