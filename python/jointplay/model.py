@@ -330,7 +330,7 @@ class Model:
                  stabilization: str = _SIMULATION.default("stabilization"),
                  formulation: str = _SIMULATION.default("formulation"), t0: float = _SIMULATION.default("t0"),
                  progress: Callable[[float], None] | None = None, output_file: str | os.PathLike | None = None,
-                 max_output_bytes: int | str | None = None) -> Results:
+                 max_output_bytes: int | str | None = None, initial: str = "assembly") -> Results:
         """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
 
         ``method``: ``"dopri5"`` (adaptive Dormand-Prince 5(4), contact onsets located by dense
@@ -364,6 +364,10 @@ class Model:
         ``output_step`` grid that cannot fit is refused before it starts (ModelError), any other run stops
         with a SimulationError when it reaches the budget.
 
+        ``initial``: ``"assembly"`` (default: the description's positions and velocities made consistent with
+        the joints, docs/model-files.md "How a run starts") or ``"equilibrium"`` (at rest in the static
+        equilibrium at ``t0``, :meth:`equilibrium`).
+
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
         """
@@ -373,6 +377,9 @@ class Model:
         emit(findings)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian, step, spectral_radius)
+        if initial not in ("assembly", "equilibrium"):
+            raise ModelError([("simulation.initial", f"must be \"assembly\" or \"equilibrium\", got {initial!r}")])
+        options["initial"] = initial
         emit(_flexible_advice(spec_snapshot, options))
         emit(_alpha_advice(options))
         emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
@@ -404,6 +411,18 @@ class Model:
         if raw["error"] is not None:
             raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
         return results
+
+    def equilibrium(self, t0: float = _SIMULATION.default("t0"), *, tolerance: float = 1e-10,
+                    max_iterations: int = 100):
+        """The static equilibrium at ``t0``: the mechanism at rest under gravity, springs, loads, preloads and
+        closed hydraulic chambers, its drivers held at their values at ``t0``; a
+        :class:`jointplay.statics.Equilibrium` with the positions, the residual and every channel there (joint
+        reactions included). ``tolerance``: largest force residual relative to the largest load.
+        Raises :class:`~jointplay.errors.SimulationError` when there is none (a free body under gravity), naming
+        the body (docs/theory/static-equilibrium.md)."""
+        from .statics import equilibrium
+
+        return equilibrium(self, t0, tolerance, max_iterations)
 
     # model files -------------------------------------------------------------
 
@@ -580,7 +599,8 @@ def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float
         sink(times, values, start)
         last[:] = [float(times[-1])]
 
-    raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward)
+    raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward,
+                        options.get("initial") == "equilibrium")
     if len(raw["time"]):
         last[:] = [float(raw["time"][-1])]
     if progress is not None and last:

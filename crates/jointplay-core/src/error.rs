@@ -123,6 +123,16 @@ pub enum SimulationError {
         /// Largest residual after the iteration [m or rad].
         residual: f64,
     },
+    /// The mechanism has no static equilibrium near its assembled configuration.
+    #[error("no static equilibrium at t = {time:.6e} s: {element} has {cause}")]
+    NoEquilibrium {
+        /// Time [s].
+        time: f64,
+        /// The body whose load is not carried.
+        element: String,
+        /// What is unbalanced.
+        cause: String,
+    },
     /// Initial velocities given for a flexible body contradict its joints.
     #[error("the initial velocities given for {element} contradict its joints and drivers at t = {time:.6e} s: {cause}")]
     ContradictoryVelocities {
@@ -219,6 +229,7 @@ impl SimulationError {
             | Self::SingularConfiguration { time, .. }
             | Self::ConstraintViolation { time, .. }
             | Self::ContradictoryVelocities { time, .. }
+            | Self::NoEquilibrium { time, .. }
             | Self::ExcessivePenetration { time, .. }
             | Self::InvalidInput { time, .. }
             | Self::FilmModel { time, .. }
@@ -237,6 +248,7 @@ impl SimulationError {
             | Self::SingularConfiguration { element, .. }
             | Self::ConstraintViolation { element, .. }
             | Self::ContradictoryVelocities { element, .. }
+            | Self::NoEquilibrium { element, .. }
             | Self::ExcessivePenetration { element, .. }
             | Self::FilmModel { element, .. }
             | Self::ElementOutOfRange { element, .. } => Some(element),

@@ -5,6 +5,7 @@
 //! simulation loop that produces a [`Trajectory`].
 
 mod assembly;
+mod equilibrium;
 mod rigid_motion_start;
 mod brent;
 mod channels;
@@ -30,6 +31,7 @@ mod trajectory;
 mod workspace;
 
 pub use assembly::assemble;
+pub use equilibrium::{equilibrium, Equilibrium, EquilibriumOptions};
 pub use channels::ChannelInfo;
 pub use compile::compile;
 pub use constraint_jacobian::{JacobianBlock, JacobianPattern, MarkerColumns};
