@@ -65,9 +65,10 @@ def equilibrium(model: Model, t0: float, tolerance: float, max_iterations: int) 
         problems.append(("equilibrium.t0", f"must be a finite time in s, got {t0!r}"))
     spec = model.to_spec()
     for element in spec.get("joints", []):
-        if element.get("type") == "clearance_revolute":
-            problems.append((f"joints.{element['name']}", "the static equilibrium with a clearance joint is not "
-                                                          "available yet"))
+        if element.get("type") == "clearance_revolute" and not element.get("lock_at_assembly", True):
+            problems.append((f"joints.{element['name']}.lock_at_assembly", "the static equilibrium finds where the "
+                                                                           "journal rests from the joint held at "
+                                                                           "assembly: leave lock_at_assembly true"))
     _warn_of_inflows(spec)
     if problems:
         raise ModelError(problems)

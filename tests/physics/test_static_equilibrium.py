@@ -200,3 +200,24 @@ def test_a_bad_start_option_is_a_located_model_error():
     with pytest.raises(jp.ModelError) as caught:
         hanging_mass().simulate(0.1, initial="rest")
     assert "simulation.initial: must be \"assembly\" or \"equilibrium\", got 'rest'" in str(caught.value)
+
+
+def test_a_journal_rests_in_its_bore_at_the_hertz_laws_static_penetration():
+    """A 10 kg block hung from a bore in the ground by a pin at its centre of mass: at rest the pin lies at the
+    bottom of the bore, pressed in until K delta^1.5 = m g, K = (4/3) E* sqrt(R*) (docs/theory/
+    stiffness-hertz-cylinder.md), steel on steel."""
+    mass, radius, clearance = 10.0, 0.010, 0.5e-3
+    m = jp.Model("hung block", gravity=(0, -9.81))
+    m.add_ground_point("B", (0, 0))
+    m.add_body("block", mass=mass, inertia=0.05, position=(0, 0), points={"B": (0, 0)})
+    m.add_clearance_revolute("B", "ground.B", "block.B", bearing_radius=radius, clearance=clearance,
+                             contact=jp.laws.lankarani_nikravesh(0.9), friction=jp.laws.coulomb(0.1))
+    found = m.equilibrium()
+    e_star = 1.0 / (2 * (1 - 0.3**2) / 207e9)
+    r_star = radius * (radius - clearance) / clearance
+    k = 4.0 / 3.0 * e_star * math.sqrt(r_star)
+    penetration = (mass * 9.81 / k) ** (1 / 1.5)
+    assert found["B.penetration"] == pytest.approx(penetration, rel=1e-6)
+    assert found["B.ey"] == pytest.approx(-(clearance + penetration), rel=1e-9)
+    assert found["B.ex"] == pytest.approx(0.0, abs=1e-12)
+    assert found["B.fn"] == pytest.approx(mass * 9.81, rel=1e-9)

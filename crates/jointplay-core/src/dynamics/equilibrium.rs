@@ -24,11 +24,12 @@ use nalgebra::{DMatrix, DVector};
 
 use super::assembly::assemble;
 use super::equations::{applied_forces, constraint_residuals, jacobian_transpose_times, linearise_constraints, update_frames};
-use super::frame::Frame;
+use super::frame::{Frame, Vec2};
 use super::state::State;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::force::ElementMemory;
+use crate::force::{ElementMemory, ForceElement};
+use crate::joint::{ClearanceRevolute, ConstraintKind};
 
 /// Options of the static analysis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -59,6 +60,9 @@ pub struct Equilibrium {
     pub constraint_residual: f64,
     /// Newton iterations taken.
     pub iterations: usize,
+    /// Multipliers of the joints' and drivers' equations, in row order (the
+    /// reactions' generalised components) [N, N m].
+    pub multipliers: Vec<f64>,
 }
 
 /// Singular values of the scaled Jacobian below this fraction of the largest
@@ -84,14 +88,32 @@ const UNBALANCED: f64 = 1e-3;
 /// solution, which stretches the beam as it bends it.
 pub fn equilibrium(model: &Model, t0: f64, options: &EquilibriumOptions, ws: &mut Workspace) -> Result<Equilibrium, SimulationError> {
     let start = assemble(model, t0, ws)?;
-    let mut problem = Statics::new(model, t0, &start, ws);
-    let (n, rows) = (model.layout.nv, model.row_offsets[model.n_dynamic_constraints]);
+    let all = model.constraints.len();
+    if all == model.n_dynamic_constraints {
+        return solve(model, model.n_dynamic_constraints, t0, &start, options, ws);
+    }
+    // clearance joints: held at their assembled eccentricity first, which gives the load on each journal;
+    // then held where that load presses it into its bore, at the contact law's static penetration; then free
+    let locked = solve(model, all, t0, &start, options, ws)?;
+    let placed = resting_journals(model, &locked, ws);
+    let resting = solve(&placed, all, t0, &locked.state, options, ws)?;
+    let mut free = solve(model, model.n_dynamic_constraints, t0, &resting.state, options, ws)?;
+    free.iterations += locked.iterations + resting.iterations;
+    Ok(free)
+}
+
+/// The equilibrium with the first `n_constraints` constraints from the positions and element states of
+/// `from` (an equilibrium at no load, or near the one sought), by load increments as [`equilibrium`] says.
+fn solve(model: &Model, n_constraints: usize, t0: f64, from: &State, options: &EquilibriumOptions, ws: &mut Workspace) -> Result<Equilibrium, SimulationError> {
+    let mut problem = Statics::new(model, n_constraints, t0, from, ws);
+    let (n, rows) = (model.layout.nv, model.row_offsets[n_constraints]);
     let mut x = DVector::zeros(n + rows);
-    x.rows_mut(0, n).copy_from(&DVector::from_column_slice(start.coordinates()));
+    x.rows_mut(0, n).copy_from(&DVector::from_column_slice(from.coordinates()));
     let (mut reached, mut increment, mut iterations) = (0.0_f64, 1.0_f64, 0);
     loop {
         problem.load_factor = (reached + increment).min(1.0);
-        match newton(&mut problem, x.clone(), options, INCREMENT_ITERATIONS.min(options.max_iterations - iterations), ws)? {
+        let allowed = INCREMENT_ITERATIONS.min(options.max_iterations.saturating_sub(iterations));
+        match newton(&mut problem, x.clone(), options, allowed, ws)? {
             Newton::Converged { x: found, iterations: taken } => {
                 iterations += taken;
                 x = found;
@@ -99,7 +121,7 @@ pub fn equilibrium(model: &Model, t0: f64, options: &EquilibriumOptions, ws: &mu
                 if reached >= 1.0 {
                     let f = problem.residual(&x, ws)?;
                     let (force, constraint) = (f.rows(0, n).amax(), f.rows(n, rows).amax());
-                    return Ok(problem.finish(&x, start, force, constraint, iterations));
+                    return Ok(problem.finish(&x, from.clone(), force, constraint, iterations));
                 }
                 if taken <= EASY_INCREMENT {
                     increment *= 2.0;
@@ -115,6 +137,72 @@ pub fn equilibrium(model: &Model, t0: f64, options: &EquilibriumOptions, ws: &mu
             }
         }
     }
+}
+
+/// A copy of `model` whose assembly lock of each loaded clearance joint holds
+/// the journal where its load presses it: against the bore, along the load,
+/// at the penetration where the contact law's elastic force carries it (at
+/// rest the damping and friction terms vanish). The load is read from the
+/// lock's reaction in the `locked` equilibrium; an unloaded journal stays.
+fn resting_journals(model: &Model, locked: &Equilibrium, ws: &mut Workspace) -> Model {
+    let mut placed = model.clone();
+    let q = locked.state.coordinates();
+    for k in model.n_dynamic_constraints..model.constraints.len() {
+        let ConstraintKind::PointCoincidence(lock) = &model.constraints[k].kind else { continue };
+        let Some(joint) = model.forces.iter().find_map(|f| match f {
+            ForceElement::ClearanceRevolute(j) if j.bearing == lock.first && j.journal == lock.second => Some(j),
+            _ => None,
+        }) else {
+            continue;
+        };
+        let force = lock_force_on_journal(model, k, q, &locked.multipliers, ws);
+        let magnitude = force.norm();
+        if !(magnitude > 0.0 && magnitude.is_finite()) {
+            continue;
+        }
+        let penetration = static_penetration(joint, magnitude);
+        if let ConstraintKind::PointCoincidence(moved) = &mut placed.constraints[k].kind {
+            // the journal moves along its load, -force
+            moved.offset = -force / magnitude * (joint.clearance + penetration);
+        }
+    }
+    placed
+}
+
+/// The force [N] the assembly lock `k` exerts on its journal at positions `q`
+/// with the multipliers `multipliers`: the virtual work of `-Phi_q^T lambda`
+/// of the lock's rows in a translation of the journal's body.
+fn lock_force_on_journal(model: &Model, k: usize, q: &[f64], multipliers: &[f64], ws: &mut Workspace) -> Vec2 {
+    let ConstraintKind::PointCoincidence(lock) = &model.constraints[k].kind else { return Vec2::zeros() };
+    let Some(address) = model.layout.body(lock.second.body) else { return Vec2::zeros() };
+    let rows = model.row_offsets[model.constraints.len()];
+    update_frames(model, q, &vec![0.0; model.layout.nv], &mut ws.frames);
+    linearise_constraints(model, model.constraints.len(), 0.0, ws);
+    let mut lambda = vec![0.0; rows];
+    let own = model.row_offsets[k]..model.row_offsets[k + 1];
+    lambda[own.clone()].copy_from_slice(&multipliers[own]);
+    jacobian_transpose_times(model, rows, &ws.jacobian, &lambda, &mut ws.scratch);
+    let body = &model.bodies[lock.second.body.0 - 1].kind;
+    let component = |velocity: Vec2| {
+        let mut rates = vec![0.0; address.nv];
+        body.rigid_motion_velocities(&q[address.q_range()], velocity, 0.0, &mut rates);
+        -rates.iter().zip(&ws.scratch[address.v_range()]).map(|(r, g)| r * g).sum::<f64>()
+    };
+    Vec2::new(component(Vec2::new(1.0, 0.0)), component(Vec2::new(0.0, 1.0)))
+}
+
+/// The penetration [m] at which the contact law's elastic force is `force` [N]
+/// (bisection: the force grows with the penetration), at most the clearance.
+fn static_penetration(joint: &ClearanceRevolute, force: f64) -> f64 {
+    let (mut low, mut high) = (0.0, joint.clearance.max(joint.max_penetration.min(joint.bearing_radius)));
+    if joint.stiffness.elastic_force(high) < force {
+        return high;
+    }
+    for _ in 0..200 {
+        let middle = 0.5 * (low + high);
+        if joint.stiffness.elastic_force(middle) < force { low = middle } else { high = middle }
+    }
+    0.5 * (low + high)
 }
 
 /// Newton iterations allowed for one load increment before it is halved.
@@ -137,7 +225,7 @@ enum Newton {
 /// Newton on `problem` at its load factor from `x`, at most `allowed` iterations.
 fn newton(problem: &mut Statics<'_>, mut x: DVector<f64>, options: &EquilibriumOptions, allowed: usize, ws: &mut Workspace) -> Result<Newton, SimulationError> {
     let model = problem.model;
-    let (n, rows) = (model.layout.nv, model.row_offsets[model.n_dynamic_constraints]);
+    let (n, rows) = (model.layout.nv, model.row_offsets[problem.n_constraints]);
     let load = problem.load_scale;
     let mut f = problem.residual(&x, ws)?;
     for iteration in 0..=allowed {
@@ -257,6 +345,8 @@ const MAX_HALVINGS: usize = 30;
 /// placement and element states, the elements' memory.
 struct Statics<'m> {
     model: &'m Model,
+    /// The constraints held: the joints and drivers, and the assembly locks in a first stage.
+    n_constraints: usize,
     t: f64,
     memory: Vec<ElementMemory>,
     reference_frames: Vec<Frame>,
@@ -272,12 +362,13 @@ struct Statics<'m> {
 }
 
 impl<'m> Statics<'m> {
-    fn new(model: &'m Model, t: f64, start: &State, ws: &mut Workspace) -> Self {
+    fn new(model: &'m Model, n_constraints: usize, t: f64, start: &State, ws: &mut Workspace) -> Self {
         let zeros = vec![0.0; model.layout.nv];
         update_frames(model, start.coordinates(), &zeros, &mut ws.frames);
         let reference_states = model.layout.split(&start.y).2.to_vec();
         let mut statics = Self {
             model,
+            n_constraints,
             t,
             memory: start.memory.clone(),
             reference_frames: ws.frames.clone(),
@@ -297,7 +388,7 @@ impl<'m> Statics<'m> {
     /// `[f; Phi]` at `x = [q; lambda]`.
     fn residual(&mut self, x: &DVector<f64>, ws: &mut Workspace) -> Result<DVector<f64>, SimulationError> {
         let model = self.model;
-        let (n, rows) = (model.layout.nv, model.row_offsets[model.n_dynamic_constraints]);
+        let (n, rows) = (model.layout.nv, model.row_offsets[self.n_constraints]);
         let q = x.as_slice()[..n].to_vec();
         update_frames(model, &q, &self.zeros, &mut ws.frames);
         for (k, element) in model.forces.iter().enumerate() {
@@ -315,8 +406,8 @@ impl<'m> Statics<'m> {
                 *g = self.load_factor * *g + (1.0 - self.load_factor) * internal;
             }
         }
-        linearise_constraints(model, model.n_dynamic_constraints, self.t, ws);
-        constraint_residuals(model, model.n_dynamic_constraints, self.t, ws);
+        linearise_constraints(model, self.n_constraints, self.t, ws);
+        constraint_residuals(model, self.n_constraints, self.t, ws);
         let mut out = DVector::zeros(n + rows);
         jacobian_transpose_times(model, rows, &ws.jacobian, &x.as_slice()[n..], &mut ws.scratch);
         for i in 0..n {
@@ -361,7 +452,8 @@ impl<'m> Statics<'m> {
         q.copy_from_slice(&x.as_slice()[..layout.nq]);
         v.fill(0.0);
         z.copy_from_slice(&self.states);
-        Equilibrium { state, force_residual: force, constraint_residual: constraint, iterations }
+        let multipliers = x.as_slice()[layout.nv..].to_vec();
+        Equilibrium { state, force_residual: force, constraint_residual: constraint, iterations, multipliers }
     }
 }
 
