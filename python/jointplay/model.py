@@ -362,7 +362,12 @@ class Model:
         in memory and written as CSV at the end. ``max_output_bytes`` (bytes, or ``"2 GiB"``): budget of
         samples x channels x 8 bytes, by default 2 GiB with a NetCDF file and 1 GiB in memory; a run on an
         ``output_step`` grid that cannot fit is refused before it starts (ModelError), any other run stops
-        with a SimulationError when it reaches the budget.
+        with a SimulationError when it reaches the budget. An ``output_file`` in a folder that does not
+        exist, or of an unknown suffix, is a ModelError located at that path.
+
+        Every option is checked before the run with the core's bounds (:mod:`jointplay.options`): a
+        ModelError at ``simulation.<key>`` (``simulation.rtol: must be at least 2.22e-14 ...``); the
+        quantities may be given with units (``max_step="0.1 ms"``).
 
         ``initial``: ``"assembly"`` (default: the description's positions and velocities made consistent with
         the joints, docs/model-files.md "How a run starts") or ``"equilibrium"`` (at rest in the static
@@ -377,13 +382,13 @@ class Model:
         emit(findings)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian, step, spectral_radius)
-        if initial not in ("assembly", "equilibrium"):
+        if initial not in p.INITIAL_STATES:
             raise ModelError([("simulation.initial", f"must be \"assembly\" or \"equilibrium\", got {initial!r}")])
         options["initial"] = initial
         emit(_flexible_advice(spec_snapshot, options))
         emit(_alpha_advice(options))
         emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
-        kind = resultsfile.output_kind(output_file) if output_file is not None else None
+        kind = resultsfile.output_target(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
         channels = core.describe()
@@ -391,6 +396,10 @@ class Model:
                                              options["max_output_bytes"])
         if too_large:
             raise ModelError([("simulation.max_output_bytes", too_large)])
+        if options["formulation"] == "joint_coordinates" and channels.get("joint_coordinates") is None:
+            raise ModelError([("simulation.formulation", "joint_coordinates needs a tree of ideal joints, but "
+                                                         f"{channels.get('absolute_because')}; use \"auto\" or "
+                                                         "\"absolute\"")])
         started = _time.perf_counter()
 
         def make_results(raw: dict) -> Results:
@@ -529,61 +538,14 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
              stabilization, formulation=_SIMULATION.default("formulation"), max_order=None,
              jacobian=_SIMULATION.default("jacobian"), step=None,
              spectral_radius=_SIMULATION.default("spectral_radius")) -> dict:
-    problems = []
+    """The core's options, every check the core makes made first (:func:`jointplay.options.read`)."""
+    from . import options
 
-    def positive(key, value, allow_none=True):
-        if value is None and allow_none:
-            return None
-        if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-            problems.append((f"simulation.{key}", f"must be > 0, got {value!r}"))
-            return None
-        return float(value)
-
-    if not (isinstance(t_end, (int, float)) and math.isfinite(t_end) and t_end > t0):
-        problems.append(("simulation.t_end", f"must be greater than t0 = {t0} s, got {t_end!r}"))
-    key = str(method).lower()
-    if key not in METHODS:
-        problems.append(("simulation.method", f"must be one of {sorted(set(METHODS.values()))}, got {method!r}"))
-    if stabilization not in STABILIZATIONS:
-        problems.append(("simulation.stabilization", f"must be one of {list(STABILIZATIONS)}, got {stabilization!r}"))
-    if formulation not in FORMULATIONS:
-        problems.append(("simulation.formulation", f"must be one of {list(FORMULATIONS)}, got {formulation!r}"))
-    options = {
-        "method": METHODS.get(key, _SIMULATION.default("method")), "rtol": positive("rtol", rtol, False),
-        "atol": None, "max_step": positive("max_step", max_step), "output_step": positive("output_step", output_step),
-        "initial_step": positive("initial_step", initial_step), "min_step": positive("min_step", min_step),
-        "max_steps": None, "stabilization": stabilization, "formulation": formulation,
-    }
-    if not (isinstance(atol, (int, float)) and math.isfinite(atol) and atol >= 0):
-        problems.append(("simulation.atol", f"must be >= 0, got {atol!r}"))
-    else:
-        options["atol"] = float(atol)
-    if jacobian not in p.JACOBIANS:
-        problems.append(("simulation.jacobian", f"must be one of {list(p.JACOBIANS)}, got {jacobian!r}"))
-    options["jacobian"] = jacobian
-    if max_order is not None:
-        most = _SIMULATION["max_order"].le
-        if isinstance(max_order, bool) or not (isinstance(max_order, int) and 1 <= max_order <= most):
-            problems.append(("simulation.max_order", f"must be a whole number from 1 to {most:g}, got {max_order!r}"))
-        else:
-            options["max_order"] = max_order
-    options["step"] = positive("step", step)
-    if options["method"] == "generalized_alpha" and step is None:
-        problems.append(("simulation.step", "generalized_alpha integrates with a fixed nominal step and needs one, "
-                                            "for example step=1e-3 (s); its accuracy is that step's"))
-    if (isinstance(spectral_radius, bool) or not isinstance(spectral_radius, (int, float))
-            or not 0 <= spectral_radius <= 1):
-        problems.append(("simulation.spectral_radius", f"must be from 0 to 1, got {spectral_radius!r}"))
-    else:
-        options["spectral_radius"] = float(spectral_radius)
-    if max_steps is not None:
-        if not (isinstance(max_steps, int) and max_steps > 0):
-            problems.append(("simulation.max_steps", f"must be a positive integer, got {max_steps!r}"))
-        else:
-            options["max_steps"] = max_steps
-    if problems:
-        raise ModelError(problems)
-    return options
+    return options.read(t0, t_end, {
+        "method": method, "rtol": rtol, "atol": atol, "max_step": max_step, "output_step": output_step,
+        "initial_step": initial_step, "min_step": min_step, "max_steps": max_steps, "stabilization": stabilization,
+        "formulation": formulation, "max_order": max_order, "jacobian": jacobian, "step": step,
+        "spectral_radius": spectral_radius})
 
 
 def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None,
@@ -599,8 +561,16 @@ def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float
         sink(times, values, start)
         last[:] = [float(times[-1])]
 
-    raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward,
-                        options.get("initial") == "equilibrium")
+    try:
+        raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward,
+                            options.get("initial") == "equilibrium")
+    except ValueError as exc:  # an option the core refuses that the checks before it missed: still located
+        from .options import core_refusal
+
+        refusal = core_refusal(exc)
+        if refusal is None:
+            raise
+        raise refusal from None
     if len(raw["time"]):
         last[:] = [float(raw["time"][-1])]
     if progress is not None and last:

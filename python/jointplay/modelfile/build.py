@@ -198,11 +198,9 @@ class Builder:
     def relations(self, table: p.Table, t: Strict, where: str) -> None:
         """The bounds between keys of a validated table (``rod_side_area < piston_area``)."""
         for relation in table.relations:
-            value, other = getattr(t, relation.key), getattr(t, relation.other)
-            if value is not None and other is not None and not relation.holds(value, other):
-                why = f" ({relation.why})" if relation.why else ""
-                self.problem(join(where, relation.key), f"must be {p.RELATIONS[relation.op]} {relation.other} = "
-                                                        f"{_shown(other)}{why}, got {_shown(value)}")
+            found = relation.violation(lambda key: getattr(t, key, None), lambda key, value: _shown(value, table[key]))
+            if found is not None:
+                self.problem(join(where, found[0]), found[1])
 
     # sections --------------------------------------------------------------
 
@@ -750,6 +748,10 @@ class Builder:
         table = self.validate(s.SimulationTable, self.table("simulation"), "simulation")
         if table is None:
             return
+        self.relations(p.SIMULATION, table, "simulation")
+        if table.method == "generalized_alpha" and table.step is None:
+            self.problem("simulation.step", 'generalized_alpha integrates with a fixed nominal step and needs one, '
+                                            'for example step = "1 ms"; its accuracy is that step\'s')
         self.simulation = {k: (float(v) if isinstance(v, float) else v)
                            for k, v in table.model_dump(exclude_none=True).items()}
 
@@ -790,9 +792,13 @@ def _text(value: float) -> str:
     return f"{value * 1e3:.6g} mm"
 
 
-def _shown(value: Any) -> str:
-    """A validated quantity as the user wrote it."""
-    return value.text if isinstance(value, Q) else f"{value:g}"
+def _shown(value: Any, param: p.Param | None = None) -> str:
+    """A validated quantity as the user wrote it (a value not written by the user, such as a default the core
+    sets, in the SI unit of ``param``)."""
+    if isinstance(value, Q):
+        return value.text
+    unit = p.unit(param) if param is not None else ""
+    return f"{value:g} {unit}" if unit else f"{value:g}"
 
 
 def _rigid_motion(t: Strict) -> dict:

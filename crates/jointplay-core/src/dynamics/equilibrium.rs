@@ -15,10 +15,12 @@
 //! follow their volumes from the assembled state ([`ForceElement::static_states`]).
 //! Newton with a Jacobian by forward differences in `q` (exact in `lambda`),
 //! each step the least-squares, minimum-norm solution (singular value
-//! decomposition: redundant joints and unloaded directions take no step) and
-//! halved until the residual falls. A load with a part that no stiffness or
-//! joint can carry (a free body under gravity) leaves a least-squares
-//! residual: there is no equilibrium, and the error names the body.
+//! decomposition: redundant joints and unloaded directions take no step),
+//! the loads applied in increments where Newton does not converge at once.
+//! A clearance joint's journal is first held, then placed against its bore
+//! along its load, then released ([`equilibrium`]). A load with a part that no
+//! stiffness or joint can carry (a free body under gravity) leaves a
+//! least-squares residual: there is no equilibrium, and the error names the body.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -95,7 +97,7 @@ pub fn equilibrium(model: &Model, t0: f64, options: &EquilibriumOptions, ws: &mu
     // clearance joints: held at their assembled eccentricity first, which gives the load on each journal;
     // then held where that load presses it into its bore, at the contact law's static penetration; then free
     let locked = solve(model, all, t0, &start, options, ws)?;
-    let placed = resting_journals(model, &locked, ws);
+    let placed = resting_journals(model, t0, &locked, ws);
     let resting = solve(&placed, all, t0, &locked.state, options, ws)?;
     let mut free = solve(model, model.n_dynamic_constraints, t0, &resting.state, options, ws)?;
     free.iterations += locked.iterations + resting.iterations;
@@ -144,7 +146,7 @@ fn solve(model: &Model, n_constraints: usize, t0: f64, from: &State, options: &E
 /// at the penetration where the contact law's elastic force carries it (at
 /// rest the damping and friction terms vanish). The load is read from the
 /// lock's reaction in the `locked` equilibrium; an unloaded journal stays.
-fn resting_journals(model: &Model, locked: &Equilibrium, ws: &mut Workspace) -> Model {
+fn resting_journals(model: &Model, t: f64, locked: &Equilibrium, ws: &mut Workspace) -> Model {
     let mut placed = model.clone();
     let q = locked.state.coordinates();
     for k in model.n_dynamic_constraints..model.constraints.len() {
@@ -155,7 +157,7 @@ fn resting_journals(model: &Model, locked: &Equilibrium, ws: &mut Workspace) -> 
         }) else {
             continue;
         };
-        let force = lock_force_on_journal(model, k, q, &locked.multipliers, ws);
+        let force = lock_force_on_journal(model, k, t, q, &locked.multipliers, ws);
         let magnitude = force.norm();
         if !(magnitude > 0.0 && magnitude.is_finite()) {
             continue;
@@ -169,15 +171,15 @@ fn resting_journals(model: &Model, locked: &Equilibrium, ws: &mut Workspace) -> 
     placed
 }
 
-/// The force [N] the assembly lock `k` exerts on its journal at positions `q`
+/// The force [N] the assembly lock `k` exerts on its journal at `(t, q)`
 /// with the multipliers `multipliers`: the virtual work of `-Phi_q^T lambda`
 /// of the lock's rows in a translation of the journal's body.
-fn lock_force_on_journal(model: &Model, k: usize, q: &[f64], multipliers: &[f64], ws: &mut Workspace) -> Vec2 {
+fn lock_force_on_journal(model: &Model, k: usize, t: f64, q: &[f64], multipliers: &[f64], ws: &mut Workspace) -> Vec2 {
     let ConstraintKind::PointCoincidence(lock) = &model.constraints[k].kind else { return Vec2::zeros() };
     let Some(address) = model.layout.body(lock.second.body) else { return Vec2::zeros() };
     let rows = model.row_offsets[model.constraints.len()];
     update_frames(model, q, &vec![0.0; model.layout.nv], &mut ws.frames);
-    linearise_constraints(model, model.constraints.len(), 0.0, ws);
+    linearise_constraints(model, model.constraints.len(), t, ws);
     let mut lambda = vec![0.0; rows];
     let own = model.row_offsets[k]..model.row_offsets[k + 1];
     lambda[own.clone()].copy_from_slice(&multipliers[own]);
