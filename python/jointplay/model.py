@@ -149,7 +149,7 @@ class Model:
                      "about the centre of mass, approximate initial position, angle and velocities; named points "
                      "in body coordinates (``points={\"A\": (\"25 mm\", 0)}``).")
     add_beam = _adds(p.BEAM, "beams", positional=3, summary="A flexible link: a geometrically exact planar beam from "
-                     "``start`` to ``end`` [m], straight and unstressed at the start; ``section`` from "
+                     "``start`` to ``end`` [m], straight and unstressed as described (a run starts it in the strain its loads give it); ``section`` from "
                      ":mod:`jointplay.sections` (``sections.rectangle(\"10 mm\", \"20 mm\")``) and ``material`` "
                      "(``sections.material(\"207 GPa\", \"7850 kg/m^3\", poisson_ratio=0.3)``) unless the section "
                      "is given by its resultants; ``elements`` or ``element_length``; named points by arclength "

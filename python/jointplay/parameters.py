@@ -691,7 +691,7 @@ MODAL_FRAMES = ("chord", "clamped")
 _RIGID_START = "none: the rigid motion the assembled mechanism gives the body, found as a rigid link's velocities are"
 
 BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reissner) beam, straight and unstressed "
-             "at the start, divided into elements of equal length; its named points are `start`, `end` and those of "
+             "as described (a run starts it in the strain its loads give it), divided into elements of equal length; its named points are `start`, `end` and those of "
              "`points` (docs/theory/beam.md).", (
     Param("start", "vector", "approximate initial position of the first end", of="length",
           example='a point, e.g. ["0 mm", "0 mm"]'),

@@ -59,15 +59,16 @@ def test_a_flexible_rod_without_velocities_starts_in_the_rigid_rods_motion(kind)
     v = check["initial_velocities"]
     # the crank's 3 coordinates, the slider's 3, then the rod's
     rod = v[6:]
+    # (the rod starts in its quasi-static strain, which shortens it by its axial strain, 1.7e-4 at 8.2 kN: the rates differ from the unstrained rod's by that much)
     if kind == "beam":
         nodes = rod.reshape(-1, 3)
         s = np.linspace(0.0, ROD, len(nodes))
-        np.testing.assert_allclose(nodes[:, 0], 0.0, atol=1e-9)
-        np.testing.assert_allclose(nodes[:, 1], OMEGA * CRANK * (1.0 - s / ROD), rtol=1e-9, atol=1e-9)
-        np.testing.assert_allclose(nodes[:, 2], -OMEGA * CRANK / ROD, rtol=1e-9)
+        np.testing.assert_allclose(nodes[:, 0], 0.0, atol=1e-3)
+        np.testing.assert_allclose(nodes[:, 1], OMEGA * CRANK * (1.0 - s / ROD), atol=1e-3)
+        np.testing.assert_allclose(nodes[:, 2], -OMEGA * CRANK / ROD, rtol=1e-3)
     else:
         # the frame's origin at A, the frame turning with the rod, no modal rate
-        np.testing.assert_allclose(rod[:3], [0.0, OMEGA * CRANK, -OMEGA * CRANK / ROD], rtol=1e-9, atol=1e-9)
+        np.testing.assert_allclose(rod[:3], [0.0, OMEGA * CRANK, -OMEGA * CRANK / ROD], rtol=1e-3, atol=1e-3)
         np.testing.assert_allclose(rod[3:], 0.0, atol=1e-9)
 
 
@@ -90,16 +91,28 @@ def test_given_velocities_that_contradict_the_joints_are_refused_naming_the_body
     assert "leave the velocities out" in message
 
 
-def test_the_flexible_rod_has_no_velocity_spike_at_the_start():
-    """Before the rigid-motion start the rod's inner nodes started at rest while its ends moved with the crank
-    and slider: a 479 kN spike in the crank bearing against the rigid mechanism's 8.3 kN. Now the start carries
-    only the rod's elastic settling: it starts unstrained while the rigid rod carries its inertial load at once,
-    so the peak in the first millisecond is the rigid one plus that settling (measured: 11.3 kN against 8.25 kN,
-    +37 %), and from 0.5 ms on the two mechanisms agree within 3 % of the rigid peak."""
-    rigid_run, flexible_run = run(slider_crank("rigid")), run(slider_crank("beam"))
+@pytest.mark.parametrize("kind", ["beam", "modal"])
+def test_the_flexible_rod_has_no_start_transient(kind):
+    """Before the flexible start the rod's inner nodes started at rest while its ends moved with the crank and
+    slider: a 479 kN spike in the crank bearing against the rigid mechanism's 8.3 kN. Starting in the rigid
+    motion alone left an elastic settling, the rod unstrained while the rigid rod carries its inertial load at
+    once: +37 % in the first millisecond. Started also in its quasi-static strain, the flexible rod's crank
+    bearing force stays within 1 % of the rigid one's over the first millisecond (measured 0.002 % at t = 0)."""
+    rigid_run, flexible_run = run(slider_crank("rigid")), run(slider_crank(kind))
     rigid_peak = np.max(np.abs(rigid_run["O.fx"]))
     assert rigid_peak == pytest.approx(8253, rel=1e-3)
-    assert np.max(np.abs(flexible_run["O.fx"])) < 1.5 * rigid_peak
-    later = rigid_run.time >= 5e-4
-    difference = np.interp(rigid_run.time[later], flexible_run.time, flexible_run["O.fx"]) - rigid_run["O.fx"][later]
-    assert np.max(np.abs(difference)) < 0.03 * rigid_peak
+    assert np.max(np.abs(flexible_run["O.fx"])) == pytest.approx(rigid_peak, rel=0.01)
+    assert flexible_run["O.fx"][0] == pytest.approx(rigid_run["O.fx"][0], rel=1e-4)
+    difference = np.interp(rigid_run.time, flexible_run.time, flexible_run["O.fx"]) - rigid_run["O.fx"]
+    assert np.max(np.abs(difference)) < 0.01 * rigid_peak
+
+
+def test_the_rod_starts_stretched_by_the_load_it_carries():
+    """The beam rod's quasi-static strain at the start: the axial force of its section at the crank pin carries
+    what the rigid rod's pin carries along the rod (x, the rod along x at the start), within 2 % (the
+    section's force is recovered from the strains of a 4-element mesh)."""
+    model = slider_crank("beam")
+    model.add_strain_gauge("E", "rod.start", fibre=0.0)
+    first = run(model, 1e-5)
+    rigid_run = run(slider_crank("rigid"), 1e-5)
+    assert abs(first["E.axial_force"][0]) == pytest.approx(abs(rigid_run["A.fx"][0]), rel=0.02)

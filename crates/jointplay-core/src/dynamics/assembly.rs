@@ -2,9 +2,11 @@
 //! constraints (driver equations included, so driven coordinates are held
 //! at their prescribed values) with every clearance joint locked at its
 //! initial eccentricity, then the velocities of that locked (ideal)
-//! mechanism, every flexible body in a rigid motion (`rigid_motion_start.rs`).
+//! mechanism, every flexible body in a rigid motion (`rigid_motion_start.rs`)
+//! and in the strain that carries its loads there (`quasi_static_start.rs`).
 
 use super::projection::{project_positions, project_velocities, velocity_residuals};
+use super::quasi_static_start::strain_quasi_statically;
 use super::rigid_motion_start::{needs_rigid_motion_start, start_in_rigid_motion};
 use super::state::State;
 use super::{Model, Workspace};
@@ -44,6 +46,9 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
                 "the mechanism is locked: no velocities satisfy its joints and drivers together (residual {after:.3e} m/s or rad/s remains); a driver fights a joint, or the joints leave no freedom to move"
             ),
         });
+    }
+    if needs_rigid_motion_start(model) {
+        strain_quasi_statically(model, t0, &mut q, &mut qdot, &model.initial_element_states, ws)?;
     }
     let mut y = Vec::with_capacity(model.layout.len());
     y.extend_from_slice(&q);

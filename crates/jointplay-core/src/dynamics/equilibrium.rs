@@ -274,14 +274,14 @@ fn not_converged(t: f64, reached: f64, force: f64, iterations: usize) -> Simulat
 /// first (each scaled by its largest entry: a beam's axial and bending
 /// stiffnesses differ by 1e7 and more, which would otherwise drop its bending
 /// directions as if they were singular).
-struct Linearisation {
+pub(super) struct Linearisation {
     svd: nalgebra::SVD<f64, nalgebra::Dyn, nalgebra::Dyn>,
     row_scales: Vec<f64>,
     column_scales: Vec<f64>,
 }
 
 impl Linearisation {
-    fn of(jacobian: &DMatrix<f64>) -> Self {
+    pub(super) fn of(jacobian: &DMatrix<f64>) -> Self {
         let mut scaled = jacobian.clone();
         let row_scales: Vec<f64> = scaled.row_iter().map(|r| if r.amax() > 0.0 { r.amax() } else { 1.0 }).collect();
         for (i, s) in row_scales.iter().enumerate() {
@@ -295,7 +295,7 @@ impl Linearisation {
     }
 
     /// The least-squares `dx` of `J dx = -f` of smallest norm in the equilibrated unknowns.
-    fn solve(&self, f: &DVector<f64>) -> DVector<f64> {
+    pub(super) fn solve(&self, f: &DVector<f64>) -> DVector<f64> {
         let rhs = DVector::from_iterator(f.len(), f.iter().zip(&self.row_scales).map(|(v, s)| -v / s));
         let largest = self.svd.singular_values.max();
         let mut step = self.svd.solve(&rhs, RANK_TOLERANCE * largest.max(f64::MIN_POSITIVE)).unwrap_or_else(|_| DVector::zeros(f.len()));

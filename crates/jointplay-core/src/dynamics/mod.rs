@@ -6,6 +6,7 @@
 
 mod assembly;
 mod equilibrium;
+mod quasi_static_start;
 mod rigid_motion_start;
 mod brent;
 mod channels;

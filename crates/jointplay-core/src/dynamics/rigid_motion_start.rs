@@ -67,6 +67,50 @@ pub(crate) fn start_in_rigid_motion(model: &Model, t: f64, q: &[f64], qdot: &mut
     Err(contradiction(model, t, qdot, &freed, &held))
 }
 
+/// Corrects `qdot` onto the joints at `(t, q)` with every flexible body, held
+/// ones too, moving rigidly: after the start's positions moved by a strain,
+/// the rigid motion found (or given and checked) at the assembled positions
+/// is adjusted to them by the order of that strain.
+pub(crate) fn follow_rigid_motion(model: &Model, t: f64, q: &[f64], qdot: &mut [f64], ws: &mut Workspace) {
+    correct(model, t, q, qdot, ws, true);
+}
+
+/// The free motions, at positions `q`, of the mechanism with every flexible
+/// body rigid: the rigid motions `T w` with `Phi_q T w = 0` (`w` spanning the
+/// null space of `Phi_q T`, its columns equilibrated), as velocity-coordinate vectors.
+pub(crate) fn free_rigid_motions(model: &Model, t: f64, q: &[f64], ws: &mut Workspace) -> Vec<Vec<f64>> {
+    let n = model.constraints.len();
+    let rows = model.row_offsets[n];
+    velocity_residuals(model, n, t, q, &vec![0.0; model.layout.nv], ws);
+    let columns = columns(model, q, true);
+    let mut a = constrained_rates(model, rows, &columns, ws);
+    let scales: Vec<f64> = columns.iter().map(|c| c.rates.iter().fold(0.0_f64, |m, r| m.max(r.abs())).max(f64::MIN_POSITIVE)).collect();
+    for (k, scale) in scales.iter().enumerate() {
+        a.column_mut(k).scale_mut(1.0 / scale);
+    }
+    let gram = a.transpose() * &a;
+    let eigen = gram.symmetric_eigen();
+    let largest = eigen.eigenvalues.amax().max(f64::MIN_POSITIVE);
+    let mut motions = Vec::new();
+    for (k, value) in eigen.eigenvalues.iter().enumerate() {
+        // (squared singular values: 1e-16 is a singular value of 1e-8 of the largest)
+        if rows > 0 && *value > FREE_MOTION_TOLERANCE * largest {
+            continue;
+        }
+        let mut motion = vec![0.0; model.layout.nv];
+        for ((column, scale), w) in columns.iter().zip(&scales).zip(eigen.eigenvectors.column(k).iter()) {
+            for (m, r) in motion[model.layout.bodies[column.body].v_range()].iter_mut().zip(&column.rates) {
+                *m += w / scale * r;
+            }
+        }
+        motions.push(motion);
+    }
+    motions
+}
+
+/// Eigenvalue of `(Phi_q T)^T (Phi_q T)`, relative to the largest, below which a rigid motion is free [-].
+const FREE_MOTION_TOLERANCE: f64 = 1e-16;
+
 /// `qdot += T w` with the correction `w` of the module's doc (`free_held`: the
 /// held bodies move rigidly too); leaves `qdot` as it is when nothing is constrained.
 fn correct(model: &Model, t: f64, q: &[f64], qdot: &mut [f64], ws: &mut Workspace, free_held: bool) {
