@@ -251,3 +251,18 @@ def test_a_channel_declaring_more_samples_than_memory_holds_is_refused_when_read
     assert problems_of(lambda: results["bar.x"]) == [
         (str(path), "channel 'bar.x' declares 2147483648 values (16 GiB), above the memory budget of 1 GiB for "
                     "reading a file")]
+
+
+def test_a_non_finite_number_in_a_spec_is_located_by_element_name():
+    spec = pendulum().to_spec()
+    spec["bodies"][0]["mass"] = float("nan")
+    spec["bodies"][0]["points"][0]["position"] = [float("inf"), 0.0]
+    assert problems_of(lambda: jp.Model.from_spec(spec).compile()) == [
+        ("bodies.bar.mass", "must be a finite number, got nan"),
+        ("bodies.bar.points.O.position[0]", "must be a finite number, got inf")]
+
+
+def test_saving_a_model_into_a_missing_folder_names_the_path(tmp_path):
+    target = tmp_path / "missing" / "pendulum.toml"
+    assert problems_of(lambda: pendulum().save(target)) == [
+        (str(target), f"cannot write the model: the folder '{target.parent}' does not exist")]

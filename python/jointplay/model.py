@@ -291,6 +291,9 @@ class Model:
         """Compiles the description (cached until the next change); raises ModelError, located by element
         name (``joints.B.clearance``, not the core's ``joints[3].clearance``)."""
         if self._core is None:
+            non_finite = _non_finite(self._spec)
+            if non_finite:
+                raise ModelError(non_finite)
             core, problems = _core.compile_model(self.to_json())
             if problems:
                 from .modelfile import core_location
@@ -453,10 +456,31 @@ class Model:
         return to_toml(self, header=header)
 
     def save(self, path) -> None:
-        """Writes the model to a TOML model file."""
+        """Writes the model to a TOML model file; a ModelError naming ``path`` when it cannot be written there."""
         from pathlib import Path
 
-        Path(path).write_text(self.to_toml(), encoding="utf-8")
+        target = Path(path)
+        if not target.parent.is_dir():
+            raise ModelError([(str(target), f"cannot write the model: the folder '{target.parent}' does not exist")])
+        if target.is_dir():
+            raise ModelError([(str(target), "cannot write the model: it is a folder")])
+        target.write_text(self.to_toml(), encoding="utf-8")
+
+
+def _non_finite(value: Any, where: str = "") -> list[tuple[str, str]]:
+    """Every NaN or infinite number of a description given as plain data (``Model.from_spec``), located by
+    element name where the entry has one (``bodies.crank.mass``)."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return [(where or "model", f"must be a finite number, got {value!r}")]
+    if isinstance(value, dict):
+        return [p for key, item in value.items() for p in _non_finite(item, f"{where}.{key}" if where else key)]
+    if isinstance(value, (list, tuple)):
+        found = []
+        for k, item in enumerate(value):
+            name = item.get("name") if isinstance(item, dict) else None
+            found += _non_finite(item, f"{where}.{name}" if isinstance(name, str) else f"{where}[{k}]")
+        return found
+    return []
 
 
 def _flexible_advice(spec: dict, options: dict) -> list:
