@@ -390,7 +390,8 @@ def test_csv_has_time_and_one_column_per_channel_with_units(tmp_path):
 
 
 def test_save_refuses_an_unknown_suffix(tmp_path):
-    with pytest.raises(ValueError, match=r"^unknown results format '.txt': use .nc, .nc4 or .h5 for NetCDF-4, "
+    # a ModelError (a ValueError) located at the user's path
+    with pytest.raises(ValueError, match=r"r\.txt: unknown results format '.txt': use .nc, .nc4 or .h5 for NetCDF-4, "
                                          r".csv for CSV$"):
         synthetic(1, 3).save(tmp_path / "r.txt")
     assert list(tmp_path.iterdir()) == []

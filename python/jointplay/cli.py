@@ -18,6 +18,7 @@ from rich.console import Console
 from rich.table import Table
 
 from . import __version__
+from .display import format_time, print_table, table, time_unit
 from .errors import JointplayWarning, ModelError, SimulationError
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
@@ -88,6 +89,8 @@ def _open(path: Path):
         raise _bad_input(f"{path}: no such results file", [])
     try:
         return open_results(path)
+    except ModelError as exc:  # located at the path: not a results file, or declaring more than memory holds
+        raise _bad_input(str(exc), []) from None
     except Exception as exc:  # h5py / xarray raise many types for a file that is not ours
         raise _bad_input(f"{path}: not a jointplay results file ({type(exc).__name__}: {exc})", []) from None
 
@@ -156,23 +159,20 @@ def _printed_warnings():
 
 def _count(n: int) -> str:
     """``1612`` -> ``1 612``."""
-    return f"{n:,}".replace(",", " ")
-
-
-def _ms(t: float | None) -> str:
-    return "" if t is None else f"{t * 1e3:.4g} ms"
+    return f"{int(n):,}".replace(",", " ")
 
 
 def _summary_title(name: str, s: dict) -> str:
-    """``flores: 25 samples saved (output step 1 ms); peaks and extrema from all 1 832 accepted steps``."""
+    """``flores: 25 samples saved (output step 1 ms) up to 24 ms; peaks and extrema from all 1 832 accepted
+    steps``; times in the units that fit them."""
     step = s.get("output_step")
-    saved = f"{_count(s['samples'])} samples saved " + (f"(output step {step * 1e3:.4g} ms)" if step
+    saved = f"{_count(s['samples'])} samples saved " + (f"(output step {format_time(step)})" if step
                                                          else "(a sample every accepted step)")
     if s["extrema_source"] == "accepted steps":
         source = f"peaks and extrema from all {_count(s['steps'])} accepted steps"
     else:
         source = "peaks and extrema from the saved samples (results file written before they were tracked at every step)"
-    end = f" up to {s['t_end'] * 1e3:.4g} ms"
+    end = f" up to {format_time(s['t_end'])}"
     return f"{name + ': ' if name else ''}{saved}{end}; {source}"
 
 
@@ -191,7 +191,7 @@ def _fmt(value: float, unit: str = "") -> str:
 
 def _beam_table(spec: dict, described: dict, frequencies: dict) -> Table:
     """Each beam's mesh and its lowest natural frequencies, unstressed (free-free, and clamped at its start)."""
-    t = Table("beam", "length", "mass", "elements", "nodes", "free-free (Hz)", "clamped at start (Hz)",
+    t = table("beam", "length", "mass", "elements", "nodes", "free-free (Hz)", "clamped at start (Hz)",
               title="flexible links: mesh and lowest bending frequencies, unstressed")
     for b in spec["beams"]:
         d = described[b["name"]]
@@ -207,7 +207,7 @@ def _beam_table(spec: dict, described: dict, frequencies: dict) -> Table:
 def _modal_table(spec: dict, described: dict) -> Table:
     """Each modal body's reduction and the lowest frequencies of the reduced body held at its frame's reference
     conditions; the first is the spin above which a linear modal body diverges."""
-    t = Table("modal body", "from", "mass", "nodes", "interface", "frame", "modes", "damping", "held (Hz)",
+    t = table("modal body", "from", "mass", "nodes", "interface", "frame", "modes", "damping", "held (Hz)",
               title="modal bodies: Craig-Bampton reduction; lowest frequencies held at the frame's reference "
                     "conditions (the first: the spin limit)")
     for b in spec["modal_bodies"]:
@@ -266,7 +266,7 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
         raise _bad_input(f"{model}: the initial configuration cannot be assembled", problems) from None
     q0 = info["initial_coordinates"]
     out.print(f"[bold]{spec['name']}[/]  ({model})")
-    bodies = Table("body", "mass", "inertia", "x (mm)", "y (mm)", "angle (deg)", title="bodies, assembled at t0")
+    bodies = table("body", "mass", "inertia", "x (mm)", "y (mm)", "angle (deg)", title="bodies, assembled at t0")
     described = {b["name"]: b for b in info["bodies"]}
     for b in spec["bodies"]:
         first, _ = described[b["name"]]["coordinates"]
@@ -274,29 +274,29 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
         bodies.add_row(b["name"], _fmt(b["mass"], "kg"), _fmt(b["inertia"], "kg m^2"),
                        f"{x * 1e3:.3f}", f"{y * 1e3:.3f}", f"{math.degrees(phi):.3f}")
     if spec["bodies"]:
-        out.print(bodies)
+        print_table(out, bodies)
     if spec.get("beams"):
-        out.print(_beam_table(spec, described, info["beam_frequencies"]))
+        print_table(out, _beam_table(spec, described, info["beam_frequencies"]))
     if spec.get("modal_bodies"):
-        out.print(_modal_table(spec, described))
-    joints = Table("joint or driver", "kind", "first body", "second body", "equations", title="constraints")
+        print_table(out, _modal_table(spec, described))
+    joints = table("joint or driver", "kind", "first body", "second body", "equations", title="constraints")
     for e in info["elements"]:
         if e["kind"] != "AssemblyLock":  # clearance joints are held only while assembling
             joints.add_row(e["name"], _words(e["kind"]), e["first"], e["second"], str(e["equations"]))
-    out.print(joints)
+    print_table(out, joints)
     clearance = [j for j in spec["joints"] if j["type"] == "clearance_revolute"]
     if clearance:
-        t = Table("clearance joint", "bearing", "journal", "bore radius", "clearance", "contact", "friction",
+        t = table("clearance joint", "bearing", "journal", "bore radius", "clearance", "contact", "friction",
                   title="clearance joints")
         for j in clearance:
             t.add_row(j["name"], j["bearing"], j["journal"], f"{j['bearing_radius'] * 1e3:g} mm",
                       f"{j['clearance'] * 1e3:g} mm", j["contact"]["law"], j["friction"]["law"])
-        out.print(t)
+        print_table(out, t)
     if spec["forces"]:
-        t = Table("force element", "type", "acts on", "details", title="force elements")
+        t = table("force element", "type", "acts on", "details", title="force elements")
         for f in spec["forces"]:
             t.add_row(f["name"], f["type"], _acts_on(f), _force_details(f))
-        out.print(t)
+        print_table(out, t)
     dof = info["degrees_of_freedom"]
     elastic = sum(b["coordinates"][1] - 3 for b in info["bodies"] if b["kind"] in ("beam", "modal"))
     flexible = {"beam": "beams", "modal": "modal bodies"}
@@ -417,19 +417,34 @@ def _output_path(output: Path) -> Path:
     return output
 
 
+def progress_time(t: float, end: float) -> str:
+    """``t = 26.7 / 100 s``: the simulated time and the end time in the unit that fits the end time."""
+    unit, seconds = time_unit(end)
+    return f"t = {t / seconds:.4g} / {end / seconds:.4g} {unit}"
+
+
+def progress_bar(console: Console):
+    """The progress bar of a run: ``simulating ━━━━━━━ t = 12 / 24 ms (3.1 s elapsed, about 3.0 s left)``
+    (the simulated time in the unit that fits the end time; the time left estimated from the recent
+    rate of progress). Update its task's ``t`` field with :func:`progress_time`."""
+    from rich.progress import BarColumn, Progress, TextColumn
+
+    from .display import WallTimeColumn
+
+    return Progress(TextColumn("simulating"), BarColumn(), TextColumn("{task.fields[t]}"), WallTimeColumn(),
+                    console=console, transient=True)
+
+
 def _simulate(m, end: float, options: dict, quiet: bool):
+    """Runs ``m`` to ``end`` [s], with :func:`progress_bar` on stderr unless ``quiet``."""
     if quiet:
         return m.simulate(end, **options)
-    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
-
-    t0 = options.get("t0", 0.0)
-    columns = [TextColumn("simulating"), BarColumn(), TextColumn("t = {task.fields[t]} / {task.fields[end]} ms"),
-               TimeElapsedColumn()]
-    with Progress(*columns, console=err, transient=True) as bar:
-        task = bar.add_task("run", total=end - t0, t=f"{t0 * 1e3:.3g}", end=f"{end * 1e3:.4g}")
+    t0 = options.get("t0", 0.0) or 0.0
+    with progress_bar(err) as bar:
+        task = bar.add_task("run", total=end - t0, t=progress_time(t0, end))
 
         def progress(t: float) -> None:
-            bar.update(task, completed=t - t0, t=f"{t * 1e3:.4g}")
+            bar.update(task, completed=t - t0, t=progress_time(t, end))
 
         return m.simulate(end, progress=progress, **options)
 
@@ -441,54 +456,58 @@ def print_summary(results) -> None:
     s = results.summary()
     out.print(_summary_title(results.spec.get("name", "") if results.spec else "", s))
     tracked = s["extrema_source"] == "accepted steps"
-    peaks = Table("quantity", "peak |value|", "at")
+
+    def at(t: float | None) -> str:  # a time of the run, in the unit of the run's length
+        return format_time(t, s["t_end"])
+
+    peaks = table("quantity", "peak |value|", "at")
     for name, value in s["point_accelerations"].items():
-        at = s["point_acceleration_times"].get(name)
-        peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"), _ms(at) if tracked else "(samples)")
+        when = s["point_acceleration_times"].get(name)
+        peaks.add_row(f"acceleration of point {name}", _fmt(value, "m/s^2"), at(when) if tracked else "(samples)")
     for name, value in [*s["peak_forces"].items(), *s["peak_pressures"].items()]:
-        peaks.add_row(name, _fmt(value, results.unit(name)), _ms(s["peak_times"].get(name)))
-    out.print(peaks)
+        peaks.add_row(name, _fmt(value, results.unit(name)), at(s["peak_times"].get(name)))
+    print_table(out, peaks)
     if s["clearance_joints"]:
         lubricated = any("min_film" in c for c in s["clearance_joints"].values())
         columns = ("clearance joint", "impacts", "time in contact", "max penetration")
-        t = Table(*columns, *(("min film", "peak film pressure") if lubricated else ()))
+        t = table(*columns, *(("min film", "peak film pressure") if lubricated else ()))
         for name, c in s["clearance_joints"].items():
             contact = f"{100 * c['contact_fraction']:.1f} %"
             if tracked:
-                contact += f" ({c['contact_time'] * 1e3:.4g} ms)"
+                contact += f" ({at(c['contact_time'])})"
             penetration = f"{c['max_penetration'] * 1e6:.3g} um"
             if tracked and c.get("max_penetration_time") is not None:
-                penetration += f" at {_ms(c['max_penetration_time'])}"
+                penetration += f" at {at(c['max_penetration_time'])}"
             cells = [name, str(c["impacts"]), contact, penetration]
             if lubricated and c.get("min_film") is not None:
                 film = f"{c['min_film'] * 1e6:.3g} um"
                 if tracked and c.get("min_film_time") is not None:
-                    film += f" at {_ms(c['min_film_time'])}"
+                    film += f" at {at(c['min_film_time'])}"
                 pressure = _fmt(c.get("peak_film_pressure"), "Pa")
                 if tracked and c.get("peak_film_pressure_time") is not None:
-                    pressure += f" at {_ms(c['peak_film_pressure_time'])}"
+                    pressure += f" at {at(c['peak_film_pressure_time'])}"
                 cells += [film, pressure]
             elif lubricated:
                 cells += ["-", "-"]
             t.add_row(*cells)
-        out.print(t)
+        print_table(out, t)
     st = s["statistics"]
-    t = Table("integrator", "value")
+    t = table("integrator", "value")
     for key in ("accepted_steps", "rejected_steps", "rhs_evaluations", "events", "restarts"):
         if key in st:
-            t.add_row(key.replace("_", " "), str(st[key]))
+            t.add_row(key.replace("_", " "), _count(st[key]))
     for key in ("jacobian_evaluations", "jacobian_rhs_evaluations", "jacobian_force_evaluations",
                 "factorizations"):  # implicit method only
         if st.get(key):
-            t.add_row(key.replace("_", " "), str(st[key]))
+            t.add_row(key.replace("_", " "), _count(st[key]))
     for key in ("smallest_step", "largest_step"):
         if key in st:
-            t.add_row(key.replace("_", " "), _fmt(st[key], "s"))
+            t.add_row(key.replace("_", " "), format_time(st[key]))
     inner = (results.extrema or {}).get("inner_evaluations")
     if inner is not None:  # the cost of finding the peaks between steps
-        t.add_row("evaluations for peaks inside steps", str(inner))
-    t.add_row("wall time", _fmt(s["wall_time"], "s"))
-    out.print(t)
+        t.add_row("evaluations for peaks inside steps", _count(inner))
+    t.add_row("wall time", format_time(s["wall_time"]) or "-")
+    print_table(out, t)
 
 
 # plot, compare ---------------------------------------------------------------
@@ -496,6 +515,18 @@ def print_summary(results) -> None:
 ChannelOption = Annotated[list[str], typer.Option("--channel", "-c", help="Channel to draw, e.g. slider.ax "
                                                   "(repeatable; default: the key channels).")]
 FormatOption = Annotated[str, typer.Option("--format", "-f", help="Image format: png or svg.")]
+
+
+def _note_stopped(runs: list, paths: list[Path]) -> None:
+    """``note: out.partial.nc: run stopped at t = ... s: <cause>`` for each run that stopped early
+    (its figures say the same)."""
+    from .plots import stopped_note
+
+    for run, path in zip(runs, paths):
+        note = stopped_note(run)
+        if note:
+            out.print("[yellow]note:[/] ", end="")
+            out.print(f"{path}: {note}", markup=False)
 
 
 def _check_format(fmt: str) -> str:
@@ -525,6 +556,7 @@ def plot(results: Annotated[Path, typer.Argument(help="Results file written by `
     fmt = _check_format(fmt)
     r = _open(results)
     _crank_check(crank, [r], [results])
+    _note_stopped([r], [results])
     output = _figure_folder("-o", output or results.with_name(f"{results.stem}_figures"))
     try:
         paths = standard_figures(r, output, crank=crank, fmt=fmt, channels=channel or None)
@@ -553,7 +585,7 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
     mechanism. Writes one figure per channel and prints the peak of each
     channel in each run.
     """
-    from .compare import compare_figures, default_compare_channels, peak_table
+    from .compare import compare_figures, default_compare_channels, nothing_to_compare, peak_table
 
     fmt = _check_format(fmt)
     runs = [_open(p) for p in results]
@@ -561,7 +593,10 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
         raise _bad_input(f"--label: give one label per results file ({len(results)}), got {len(label)}", [])
     labels = label or [p.stem for p in results]
     _crank_check(crank, runs, results)
+    _note_stopped(runs, results)
     names = channel or default_compare_channels(runs)
+    if not names:
+        raise _bad_input(f"nothing to compare: {nothing_to_compare(runs, labels)}", [])
     for name in names:
         if not any(name in run for run in runs):
             try:
@@ -575,16 +610,17 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
         raise _bad_input(f"--channel: {exc.args[0]}", []) from None
     except OSError as exc:
         raise _bad_input(f"-o {output}: cannot write the figures ({exc.strerror or exc})", []) from None
-    table = Table("channel", "unit", *labels,
+    peaks = table("channel", "unit", *labels,
                   title="peak |value| over every accepted step ((samples): over the saved samples only)")
     for row in peak_table(runs, names):
-        table.add_row(*row)
-    out.print(table)
+        peaks.add_row(*row)
+    print_table(out, peaks)
     for path in paths:
         out.print(f"wrote {path}")
 
 
 from . import cli_bearing  # noqa: E402,F401  (registers `jointplay bearing`; imports `app` from here)
+from . import cli_static  # noqa: E402,F401  (registers `jointplay static`)
 
 
 def main() -> None:

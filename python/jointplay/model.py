@@ -149,7 +149,7 @@ class Model:
                      "about the centre of mass, approximate initial position, angle and velocities; named points "
                      "in body coordinates (``points={\"A\": (\"25 mm\", 0)}``).")
     add_beam = _adds(p.BEAM, "beams", positional=3, summary="A flexible link: a geometrically exact planar beam from "
-                     "``start`` to ``end`` [m], straight and unstressed at the start; ``section`` from "
+                     "``start`` to ``end`` [m], straight and unstressed as described (a run starts it in the strain its loads give it); ``section`` from "
                      ":mod:`jointplay.sections` (``sections.rectangle(\"10 mm\", \"20 mm\")``) and ``material`` "
                      "(``sections.material(\"207 GPa\", \"7850 kg/m^3\", poisson_ratio=0.3)``) unless the section "
                      "is given by its resultants; ``elements`` or ``element_length``; named points by arclength "
@@ -291,6 +291,9 @@ class Model:
         """Compiles the description (cached until the next change); raises ModelError, located by element
         name (``joints.B.clearance``, not the core's ``joints[3].clearance``)."""
         if self._core is None:
+            non_finite = _non_finite(self._spec)
+            if non_finite:
+                raise ModelError(non_finite)
             core, problems = _core.compile_model(self.to_json())
             if problems:
                 from .modelfile import core_location
@@ -347,7 +350,7 @@ class Model:
                  stabilization: str = _SIMULATION.default("stabilization"),
                  formulation: str = _SIMULATION.default("formulation"), t0: float = _SIMULATION.default("t0"),
                  progress: Callable[[float], None] | None = None, output_file: str | os.PathLike | None = None,
-                 max_output_bytes: int | str | None = None) -> Results:
+                 max_output_bytes: int | str | None = None, initial: str = "assembly") -> Results:
         """Assembles consistent initial conditions at ``t0`` and integrates to ``t_end`` [s].
 
         ``method``: ``"dopri5"`` (adaptive Dormand-Prince 5(4), contact onsets located by dense
@@ -379,7 +382,16 @@ class Model:
         in memory and written as CSV at the end. ``max_output_bytes`` (bytes, or ``"2 GiB"``): budget of
         samples x channels x 8 bytes, by default 2 GiB with a NetCDF file and 1 GiB in memory; a run on an
         ``output_step`` grid that cannot fit is refused before it starts (ModelError), any other run stops
-        with a SimulationError when it reaches the budget.
+        with a SimulationError when it reaches the budget. An ``output_file`` in a folder that does not
+        exist, or of an unknown suffix, is a ModelError located at that path.
+
+        Every option is checked before the run with the core's bounds (:mod:`jointplay.options`): a
+        ModelError at ``simulation.<key>`` (``simulation.rtol: must be at least 2.22e-14 ...``); the
+        quantities may be given with units (``max_step="0.1 ms"``).
+
+        ``initial``: ``"assembly"`` (default: the description's positions and velocities made consistent with
+        the joints, docs/model-files.md "How a run starts") or ``"equilibrium"`` (at rest in the static
+        equilibrium at ``t0``, :meth:`equilibrium`).
 
         Raises :class:`~jointplay.errors.SimulationError` (with ``.results`` up to the failure)
         when the run stops early.
@@ -390,10 +402,13 @@ class Model:
         emit(findings)
         options = _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step, min_step,
                            max_steps, stabilization, formulation, max_order, jacobian, step, spectral_radius)
+        if initial not in p.INITIAL_STATES:
+            raise ModelError([("simulation.initial", f"must be \"assembly\" or \"equilibrium\", got {initial!r}")])
+        options["initial"] = initial
         emit(_flexible_advice(spec_snapshot, options))
         emit(_alpha_advice(options))
         emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
-        kind = resultsfile.output_kind(output_file) if output_file is not None else None
+        kind = resultsfile.output_target(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
         channels = core.describe()
@@ -401,6 +416,10 @@ class Model:
                                              options["max_output_bytes"])
         if too_large:
             raise ModelError([("simulation.max_output_bytes", too_large)])
+        if options["formulation"] == "joint_coordinates" and channels.get("joint_coordinates") is None:
+            raise ModelError([("simulation.formulation", "joint_coordinates needs a tree of ideal joints, but "
+                                                         f"{channels.get('absolute_because')}; use \"auto\" or "
+                                                         "\"absolute\"")])
         started = _time.perf_counter()
 
         def make_results(raw: dict) -> Results:
@@ -423,6 +442,18 @@ class Model:
             raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
         return results
 
+    def equilibrium(self, t0: float = _SIMULATION.default("t0"), *, tolerance: float = 1e-10,
+                    max_iterations: int = 100):
+        """The static equilibrium at ``t0``: the mechanism at rest under gravity, springs, loads, preloads and
+        closed hydraulic chambers, its drivers held at their values at ``t0``; a
+        :class:`jointplay.statics.Equilibrium` with the positions, the residual and every channel there (joint
+        reactions included). ``tolerance``: largest force residual relative to the largest load.
+        Raises :class:`~jointplay.errors.SimulationError` when there is none (a free body under gravity), naming
+        the body (docs/theory/static-equilibrium.md)."""
+        from .statics import equilibrium
+
+        return equilibrium(self, t0, tolerance, max_iterations)
+
     # model files -------------------------------------------------------------
 
     @property
@@ -443,10 +474,31 @@ class Model:
         return to_toml(self, header=header)
 
     def save(self, path) -> None:
-        """Writes the model to a TOML model file."""
+        """Writes the model to a TOML model file; a ModelError naming ``path`` when it cannot be written there."""
         from pathlib import Path
 
-        Path(path).write_text(self.to_toml(), encoding="utf-8")
+        target = Path(path)
+        if not target.parent.is_dir():
+            raise ModelError([(str(target), f"cannot write the model: the folder '{target.parent}' does not exist")])
+        if target.is_dir():
+            raise ModelError([(str(target), "cannot write the model: it is a folder")])
+        target.write_text(self.to_toml(), encoding="utf-8")
+
+
+def _non_finite(value: Any, where: str = "") -> list[tuple[str, str]]:
+    """Every NaN or infinite number of a description given as plain data (``Model.from_spec``), located by
+    element name where the entry has one (``bodies.crank.mass``)."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return [(where or "model", f"must be a finite number, got {value!r}")]
+    if isinstance(value, dict):
+        return [p for key, item in value.items() for p in _non_finite(item, f"{where}.{key}" if where else key)]
+    if isinstance(value, (list, tuple)):
+        found = []
+        for k, item in enumerate(value):
+            name = item.get("name") if isinstance(item, dict) else None
+            found += _non_finite(item, f"{where}.{name}" if isinstance(name, str) else f"{where}[{k}]")
+        return found
+    return []
 
 
 def _assembly_problems(notes: list, spec: dict) -> list:
@@ -537,61 +589,14 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
              stabilization, formulation=_SIMULATION.default("formulation"), max_order=None,
              jacobian=_SIMULATION.default("jacobian"), step=None,
              spectral_radius=_SIMULATION.default("spectral_radius")) -> dict:
-    problems = []
+    """The core's options, every check the core makes made first (:func:`jointplay.options.read`)."""
+    from . import options
 
-    def positive(key, value, allow_none=True):
-        if value is None and allow_none:
-            return None
-        if not (isinstance(value, (int, float)) and math.isfinite(value) and value > 0):
-            problems.append((f"simulation.{key}", f"must be > 0, got {value!r}"))
-            return None
-        return float(value)
-
-    if not (isinstance(t_end, (int, float)) and math.isfinite(t_end) and t_end > t0):
-        problems.append(("simulation.t_end", f"must be greater than t0 = {t0} s, got {t_end!r}"))
-    key = str(method).lower()
-    if key not in METHODS:
-        problems.append(("simulation.method", f"must be one of {sorted(set(METHODS.values()))}, got {method!r}"))
-    if stabilization not in STABILIZATIONS:
-        problems.append(("simulation.stabilization", f"must be one of {list(STABILIZATIONS)}, got {stabilization!r}"))
-    if formulation not in FORMULATIONS:
-        problems.append(("simulation.formulation", f"must be one of {list(FORMULATIONS)}, got {formulation!r}"))
-    options = {
-        "method": METHODS.get(key, _SIMULATION.default("method")), "rtol": positive("rtol", rtol, False),
-        "atol": None, "max_step": positive("max_step", max_step), "output_step": positive("output_step", output_step),
-        "initial_step": positive("initial_step", initial_step), "min_step": positive("min_step", min_step),
-        "max_steps": None, "stabilization": stabilization, "formulation": formulation,
-    }
-    if not (isinstance(atol, (int, float)) and math.isfinite(atol) and atol >= 0):
-        problems.append(("simulation.atol", f"must be >= 0, got {atol!r}"))
-    else:
-        options["atol"] = float(atol)
-    if jacobian not in p.JACOBIANS:
-        problems.append(("simulation.jacobian", f"must be one of {list(p.JACOBIANS)}, got {jacobian!r}"))
-    options["jacobian"] = jacobian
-    if max_order is not None:
-        most = _SIMULATION["max_order"].le
-        if isinstance(max_order, bool) or not (isinstance(max_order, int) and 1 <= max_order <= most):
-            problems.append(("simulation.max_order", f"must be a whole number from 1 to {most:g}, got {max_order!r}"))
-        else:
-            options["max_order"] = max_order
-    options["step"] = positive("step", step)
-    if options["method"] == "generalized_alpha" and step is None:
-        problems.append(("simulation.step", "generalized_alpha integrates with a fixed nominal step and needs one, "
-                                            "for example step=1e-3 (s); its accuracy is that step's"))
-    if (isinstance(spectral_radius, bool) or not isinstance(spectral_radius, (int, float))
-            or not 0 <= spectral_radius <= 1):
-        problems.append(("simulation.spectral_radius", f"must be from 0 to 1, got {spectral_radius!r}"))
-    else:
-        options["spectral_radius"] = float(spectral_radius)
-    if max_steps is not None:
-        if not (isinstance(max_steps, int) and max_steps > 0):
-            problems.append(("simulation.max_steps", f"must be a positive integer, got {max_steps!r}"))
-        else:
-            options["max_steps"] = max_steps
-    if problems:
-        raise ModelError(problems)
-    return options
+    return options.read(t0, t_end, {
+        "method": method, "rtol": rtol, "atol": atol, "max_step": max_step, "output_step": output_step,
+        "initial_step": initial_step, "min_step": min_step, "max_steps": max_steps, "stabilization": stabilization,
+        "formulation": formulation, "max_order": max_order, "jacobian": jacobian, "step": step,
+        "spectral_radius": spectral_radius})
 
 
 def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None,
@@ -607,7 +612,16 @@ def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float
         sink(times, values, start)
         last[:] = [float(times[-1])]
 
-    raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward)
+    try:
+        raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward,
+                            options.get("initial") == "equilibrium")
+    except ValueError as exc:  # an option the core refuses that the checks before it missed: still located
+        from .options import core_refusal
+
+        refusal = core_refusal(exc)
+        if refusal is None:
+            raise
+        raise refusal from None
     if len(raw["time"]):
         last[:] = [float(raw["time"][-1])]
     if progress is not None and last:

@@ -112,22 +112,63 @@ _COMPARE = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operato
 
 @dataclass(frozen=True, eq=False)
 class Relation:
-    """A bound of one key by another key of the same table (``rod_side_area < piston_area``), checked once
-    both are valid; a problem at ``key`` when it fails."""
+    """A bound of one key by another key of the same table (``rod_side_area < piston_area``) or by a fixed
+    number (``rtol >= 2.2e-14``), checked once both are valid; a problem at ``key`` when it fails.
+
+    A key in ``absent`` stands, when not given, for that value (a default the core sets without it being
+    written, such as ``min_step``): the bound is then checked against it and, when only ``other`` was given,
+    reported at ``other`` (the key the user set); otherwise an absent key leaves the bound unchecked."""
 
     key: str
     #: one of :data:`RELATIONS`
     op: str
-    other: str
+    #: the key bounding ``key``, or a number
+    other: str | float
     #: why the bound holds, for the message (``"it is the annulus"``)
     why: str = ""
+    #: ``(key, value)``: what an absent key stands for
+    absent: tuple[tuple[str, float], ...] = ()
 
     def holds(self, value: float, other: float) -> bool:
         return _COMPARE[self.op](value, other)
 
     def text(self) -> str:
         """``rod_side_area < piston_area (it is the annulus)``, for the reference."""
-        return f"`{self.key}` {self.op} `{self.other}`" + (f" ({self.why})" if self.why else "")
+        other = f"`{self.other}`" if isinstance(self.other, str) else f"{self.other:.3g}"
+        notes = [self.why] if self.why else []
+        notes += [f"`{key}` not given stands for its default, {value:g}" for key, value in self.absent]
+        return f"`{self.key}` {self.op} {other}" + (f" ({'; '.join(notes)})" if notes else "")
+
+    def violation(self, given: Any, show: Any) -> tuple[str, str] | None:
+        """``(key, message)`` when the bound fails, None when it holds or cannot be checked. ``given(key)``
+        is a key's valid value or None (absent or invalid); ``show(key, value)`` writes a value for the
+        message (as the user wrote it, or with its unit)."""
+        value = given(self.key)
+        other = given(self.other) if isinstance(self.other, str) else self.other
+        absent = dict(self.absent)
+        why = f" ({self.why})" if self.why else ""
+        unset = "(its value when not given" + (f"; {self.why})" if self.why else ")")
+        if value is not None and other is not None:
+            if self.holds(value, other):
+                return None
+            bound = f"{self.other} = {show(self.other, other)}" if isinstance(self.other, str) else f"{other:.3g}"
+            return self.key, f"must be {RELATIONS[self.op]} {bound}{why}, got {show(self.key, value)}"
+        if value is not None and self.other in absent:
+            other = absent[self.other]
+            if self.holds(value, other):
+                return None
+            return self.key, (f"must be {RELATIONS[self.op]} {self.other} = {show(self.other, other)} {unset}, "
+                              f"got {show(self.key, value)}")
+        if other is not None and self.key in absent:
+            value = absent[self.key]
+            if self.holds(value, other):
+                return None
+            return self.other, (f"must be {RELATIONS[_REVERSED[self.op]]} {self.key} = {show(self.key, value)} "
+                                f"{unset}, got {show(self.other, other)}")
+        return None
+
+
+_REVERSED = {"<": ">", "<=": ">=", ">": "<", ">=": "<="}
 
 
 @dataclass(frozen=True, eq=False)
@@ -646,8 +687,11 @@ VARIANTS = {"section": BEAM_SECTIONS}
 ELEMENT_ORDERS = ("linear", "quadratic")
 MODAL_FRAMES = ("chord", "clamped")
 
+#: Default of a flexible body's initial velocities (docs/model-files.md, "How a run starts").
+_RIGID_START = "none: the rigid motion the assembled mechanism gives the body, found as a rigid link's velocities are"
+
 BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reissner) beam, straight and unstressed "
-             "at the start, divided into elements of equal length; its named points are `start`, `end` and those of "
+             "as described (a run starts it in the strain its loads give it), divided into elements of equal length; its named points are `start`, `end` and those of "
              "`points` (docs/theory/beam.md).", (
     Param("start", "vector", "approximate initial position of the first end", of="length",
           example='a point, e.g. ["0 mm", "0 mm"]'),
@@ -666,8 +710,10 @@ BEAM = Table("beams", "A flexible link: a geometrically exact planar (Simo-Reiss
     Param("damping_time", "time", "retardation time tau of strain-rate (Kelvin-Voigt) damping: each stress resultant "
           "gains tau times its rate; a mode of circular frequency w gets the damping ratio tau w / 2", 0.0, ge=0,
           why="undamped unless chosen"),
-    Param("velocity", "vector", "approximate initial velocity of the first end", (0.0, 0.0), of="velocity"),
-    Param("angular_velocity", "angular velocity", "approximate initial angular velocity, as a rigid link", 0.0),
+    Param("velocity", "vector", "initial velocity of the first end; with `angular_velocity`, the rigid motion the "
+          "beam starts in, held and checked against the joints", None, of="velocity", default_text=_RIGID_START),
+    Param("angular_velocity", "angular velocity", "initial angular velocity, as a rigid link (see `velocity`)", None,
+          default_text=_RIGID_START),
     Param("points", "arclengths", 'named points by arclength from the first end: `points = { E = "75 mm" }`', {}),
     Param("free", "flag", "allow a beam that no joint or force element refers to (otherwise an error)", False,
           in_spec=False),
@@ -735,9 +781,11 @@ MODAL_BODY = Table("modal_bodies", "A flexible link as a modal body: a floating 
     Param("damping_time", "time", "retardation time tau of stiffness-proportional damping `tau K`, added to the "
           "modal damping: a beam's strain-rate damping of the same `damping_time`, linearised (mode n gets the "
           "ratio tau w_n / 2)", 0.0, ge=0, why="undamped unless chosen"),
-    Param("velocity", "vector", "initial velocity of the frame's origin (the first interface node)", (0.0, 0.0),
-          of="velocity"),
-    Param("angular_velocity", "angular velocity", "initial angular velocity of the frame", 0.0),
+    Param("velocity", "vector", "initial velocity of the frame's origin (the first interface node); with "
+          "`angular_velocity`, the rigid motion the body starts in (modal rates zero), held and checked against the "
+          "joints", None, of="velocity", default_text=_RIGID_START),
+    Param("angular_velocity", "angular velocity", "initial angular velocity of the frame (see `velocity`)", None,
+          default_text=_RIGID_START),
     Param("free", "flag", "allow a modal body that no joint or force element refers to (otherwise an error)", False,
           in_spec=False),
 ))
@@ -760,8 +808,17 @@ METHODS = ("dopri5", "adams", "bdf", "generalized_alpha")
 METHOD_ALIASES = (("rk45", "dopri5"), ("dormand_prince", "dopri5"), ("adams_pc", "adams"), ("ndf", "bdf"),
                   ("generalised_alpha", "generalized_alpha"))
 STABILIZATIONS = ("projection", "baumgarte", "none")
+#: How a run starts: from the assembled description, or at rest in the static equilibrium.
+INITIAL_STATES = ("assembly", "equilibrium")
 JACOBIANS = ("auto", "finite_difference", "structured")
 FORMULATIONS = ("auto", "absolute", "joint_coordinates")
+#: Smallest relative tolerance the core accepts: 100 machine epsilons, below which its error estimate is
+#: dominated by rounding (``MIN_RTOL`` of crates/jointplay-core/src/integrate/options.rs).
+MIN_RTOL = 100 * 2.220446049250313e-16
+#: Smallest step when ``min_step`` is not given [s]: far below any contact time scale, above the rounding of t
+#: (the core's default, ``IntegratorOptions::default``).
+DEFAULT_MIN_STEP = 1e-14
+_NOT_GIVEN_MIN_STEP = (("min_step", DEFAULT_MIN_STEP),)
 
 SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Model.simulate(**model.simulation)`; "
                    "all optional.", (
@@ -778,7 +835,8 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
           "summary's peaks and extrema come from every accepted step whatever it is", None, gt=0,
           default_text="every accepted step"),
     Param("initial_step", "time", "first step", None, gt=0, default_text="automatic"),
-    Param("min_step", "time", "smallest step", None, gt=0, default_text="automatic"),
+    Param("min_step", "time", "smallest step; a step the control would make smaller stops the run", None, gt=0,
+          default_text=f"{DEFAULT_MIN_STEP:g} (far below any contact time scale, above the rounding of t)"),
     Param("max_steps", "count", "most attempted (accepted + rejected) steps; a run that exceeds it stops with an "
           "error naming this key, keeping what was computed", None, default_text="10 000 000 (set by the core)"),
     Param("max_order", "count", "highest order of the implicit method (`bdf`), 1 to 5: orders 1 and 2 are A-stable, "
@@ -801,12 +859,23 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
           "tree (every clearance joint cuts the loop it closes; no constraint equations to solve), else absolute "
           "coordinates with constraints; `absolute` always uses the latter, `joint_coordinates` refuses a model "
           "with a closed loop of ideal joints", "auto", of=FORMULATIONS),
+    Param("initial", "choice", "how the run starts: `assembly`, the description's positions and velocities made "
+          "consistent with the joints (a flexible body in the rigid motion the mechanism gives it), or `equilibrium`, "
+          "at rest in the static equilibrium at `t0` (`jointplay static`; docs/model-files.md, \"How a run starts\")",
+          "assembly", of=INITIAL_STATES),
     Param("max_output_bytes", "size", 'budget of samples x channels x 8 bytes, a whole number of bytes or `"500 MB"`, '
           '`"2 GiB"`: checked before the run when `output_step` makes the sample count known, otherwise the run stops '
           "when it reaches it, keeping what was computed", None,
           default_text=f"{format_size(DEFAULT_MAX_FILE_BYTES)} with a results file, "
                        f"{format_size(DEFAULT_MAX_MEMORY_BYTES)} in memory"),
-), sparse=True)
+), sparse=True, relations=(
+    Relation("rtol", ">=", MIN_RTOL, "100 machine epsilons: below it the error estimate is rounding noise"),
+    Relation("min_step", "<", "max_step", "the step control works between them", absent=_NOT_GIVEN_MIN_STEP),
+    Relation("initial_step", ">=", "min_step", "a first step below the smallest step stops the run at once",
+             absent=_NOT_GIVEN_MIN_STEP),
+    Relation("step", ">=", "min_step", "a step below the smallest step stops the run at once",
+             absent=_NOT_GIVEN_MIN_STEP),
+))
 
 
 #: The sections of a model file, in the order they are written; the tables of each, by variant.

@@ -1,6 +1,6 @@
 """The standard figures of a run, written to PNG or SVG files.
 
-- time histories of chosen channels (one panel each, shared time axis in ms);
+- time histories of chosen channels (one panel each, shared time axis in the unit that fits the run);
 - the journal-centre orbit of each clearance joint inside its clearance circle
   (eccentricity in mm, circle of radius c);
 - the contact force of each clearance joint against the crank angle
@@ -8,6 +8,11 @@
 - the deformed shape of each beam at chosen times, its deformation (from the
   rigid motion that best fits its nodes) magnified by a factor the figure
   states; and the histories of each strain gauge.
+
+Every figure of a run that stopped early (a ``.partial.nc``) says so in red
+above its axes: ``run stopped at t = 0.0123 s: <cause>``. Titles are broken
+between words to fit the figure's width. Times are in the unit that fits the
+run's length (:func:`jointplay.display.time_unit`).
 
 Figures are built with matplotlib's object API on the Agg canvas: no display
 is needed and no global pyplot state is touched.
@@ -21,7 +26,9 @@ from pathlib import Path
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
 
+from .display import format_time, time_unit
 from .results import Results
 
 FORMATS = ("png", "svg")
@@ -37,6 +44,55 @@ def _figure(width: float = 7.0, height: float = 4.0) -> Figure:
 def _save(fig: Figure, path: Path) -> Path:
     fig.savefig(path, dpi=130)
     return path
+
+
+def wrap_to_width(fig: Figure, text: str, fontsize: float, fraction: float = 0.96) -> str:
+    """``text`` with each line broken between words so that it is at most ``fraction`` of the
+    figure's width at ``fontsize`` [pt], measured with the figure's renderer."""
+    renderer = fig.canvas.get_renderer()
+    font = FontProperties(size=fontsize)
+    limit = fraction * fig.bbox.width
+
+    def width(line: str) -> float:
+        return renderer.get_text_width_height_descent(line, font, ismath=False)[0]
+
+    lines = []
+    for paragraph in text.split("\n"):
+        line = ""
+        for word in paragraph.split(" "):
+            trial = f"{line} {word}" if line else word
+            if line and width(trial) > limit:
+                lines.append(line)
+                line = word
+            else:
+                line = trial
+        lines.append(line)
+    return "\n".join(lines)
+
+
+def stopped_note(results: Results, label: str | None = None) -> str | None:
+    """``"run stopped at t = 0.0123 s: <cause>"`` for results of a run that stopped early (a
+    ``.partial.nc``), else None; ``label`` names the run among several."""
+    if results.error is None:
+        return None
+    error = results.error
+    when = error.get("time")
+    if when is None and results.time.size:
+        when = float(results.time[-1])
+    at = f" at t = {float(when):.6g} s" if when is not None else ""
+    cause = str(error.get("message") or error.get("kind") or "unknown cause")
+    return f"{'run ' + label if label else 'run'} stopped{at}: {cause}"
+
+
+def set_titles(fig: Figure, title: str, notes: Sequence[str | None] = (), fontsize: float = 9) -> None:
+    """The figure's title (wrapped to its width) and, above the axes in red, the note of each run
+    that stopped early."""
+    fig.suptitle(wrap_to_width(fig, title, fontsize), fontsize=fontsize)
+    stopped = [note for note in notes if note]
+    if stopped:
+        top = max(fig.axes, key=lambda ax: ax.get_position().y1)
+        # the axes sit right of their y labels: the note, centred on them, kept to 0.72 of the width
+        top.set_title(wrap_to_width(fig, "\n".join(stopped), 8, 0.72), fontsize=8, color="tab:red")
 
 
 def figure_folder(out_dir) -> Path:
@@ -98,13 +154,16 @@ def crank_angle_deg(results: Results, crank: str) -> np.ndarray:
     return np.degrees(np.unwrap(results[f"{crank}.angle"]))
 
 
-def _time_scale(results: Results) -> tuple[float, str]:
-    """Seconds for runs longer than 2 s, milliseconds otherwise: (factor, unit)."""
-    return (1.0, "s") if results.time.size and results.time[-1] > 2.0 else (1e3, "ms")
+def _time_scale(*runs: Results) -> tuple[float, str]:
+    """The unit of time that fits the longest of ``runs`` (µs, ms, s, min or h): (factor from
+    seconds, unit)."""
+    end = max((float(np.max(np.abs(r.time[[0, -1]]))) for r in runs if r.time.size), default=0.0)
+    unit, seconds = time_unit(end)
+    return 1.0 / seconds, unit
 
 
 def time_histories(results: Results, channels: Sequence[str], path: Path, label: str | None = None) -> Path:
-    """One panel per channel against time [ms, or s for runs longer than 2 s]: the saved samples, and a dot at
+    """One panel per channel against time (in the unit that fits the run): the saved samples, and a dot at
     the peak tracked over every accepted step (:attr:`Results.extrema`), which coarse samples can miss."""
     fig = _figure(7.5, 1.9 * len(channels) + 0.8)
     axes = fig.subplots(len(channels), 1, sharex=True, squeeze=False)[:, 0]
@@ -121,7 +180,7 @@ def time_histories(results: Results, channels: Sequence[str], path: Path, label:
         ax.grid(alpha=0.3)
     axes[-1].set_xlabel(f"time [{unit}]")
     note = sampling_note(results) + ("; dots: peaks over every accepted step" if marked else "")
-    fig.suptitle(f"{label or _title(results)}\n{note}", fontsize=9)
+    set_titles(fig, f"{label or _title(results)}\n{note}", [stopped_note(results)])
     return _save(fig, path)
 
 
@@ -148,7 +207,7 @@ def sampling_note(results: Results) -> str:
     """What the curves are: ``"1 001 samples saved every 1 ms"`` or ``"a sample at each of 1 832 accepted steps"``."""
     n = f"{len(results):,}".replace(",", " ")
     step = (results.options or {}).get("output_step")
-    return f"{n} samples saved every {step * 1e3:.4g} ms" if step else f"{n} samples, one per accepted step"
+    return f"{n} samples saved every {format_time(step)}" if step else f"{n} samples, one per accepted step"
 
 
 def orbit(results: Results, joint: str, path: Path) -> Path:
@@ -173,7 +232,7 @@ def orbit(results: Results, joint: str, path: Path) -> Path:
     ax.set_ylabel(f"{joint}.ey [mm]")
     ax.legend(fontsize=7, loc="upper right")
     ax.grid(alpha=0.3)
-    ax.set_title(f"{_title(results)}: journal-centre orbit in {joint}", fontsize=9)
+    set_titles(fig, f"{_title(results)}: journal-centre orbit in {joint}", [stopped_note(results)])
     return _save(fig, path)
 
 
@@ -189,10 +248,10 @@ def force_vs_crank(results: Results, joint: str, crank: str, path: Path) -> Path
         ax.plot(np.interp(peak[0], results.time, angle), peak[1], "o", ms=4, color="tab:red",
                 label="peak over every accepted step")
         ax.legend(fontsize=7, loc="upper right")
-    ax.set_xlabel(f"crank angle ({crank}.angle) [deg]; {sampling_note(results)}")
+    ax.set_xlabel(wrap_to_width(fig, f"crank angle ({crank}.angle) [deg]; {sampling_note(results)}", 10))
     ax.set_ylabel(f"{joint}.fn [{results.unit(f'{joint}.fn')}]")
     ax.grid(alpha=0.3)
-    ax.set_title(f"{_title(results)}: contact force in {joint}", fontsize=9)
+    set_titles(fig, f"{_title(results)}: contact force in {joint}", [stopped_note(results)])
     return _save(fig, path)
 
 
@@ -253,9 +312,9 @@ def deformed_shapes(results: Results, beam: dict, path: Path, times: Sequence[fl
     ax.set_ylabel("y [m]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7)
-    ax.set_title(f"{_title(results)}: beam {beam['name']}, nodes at the saved samples nearest the times; deformation "
-                 f"from the best-fit rigid motion (grey) x {magnify:.3g}\n(largest deformation "
-                 f"{largest * 1e3:.3g} mm)", fontsize=8)
+    set_titles(fig, f"{_title(results)}: beam {beam['name']}, nodes at the saved samples nearest the times\n"
+                    f"deformation from the best-fit rigid motion (grey) x {magnify:.3g} (largest deformation "
+                    f"{largest * 1e3:.3g} mm)", [stopped_note(results)])
     return _save(fig, path)
 
 

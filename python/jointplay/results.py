@@ -195,11 +195,12 @@ class Results:
     def save(self, path) -> Path:
         """Writes the results to ``path``: NetCDF-4 for ``.nc``, ``.nc4``, ``.h5`` (read back by
         :func:`open_results`), CSV for ``.csv`` (``time`` and one column per channel, header
-        ``name [unit]``); ValueError for any other suffix. The file is written under a temporary
+        ``name [unit]``); a ModelError (a ValueError) located at ``path`` for any other suffix or a folder
+        that does not exist. The file is written under a temporary
         name and renamed into place when complete, so a good file at ``path`` is never left broken."""
-        from .resultsfile import ResultsWriter, output_kind, rows_per_block, write_csv
+        from .resultsfile import ResultsWriter, output_target, rows_per_block, write_csv
 
-        if output_kind(path) == "csv":
+        if output_target(path) == "csv":
             return write_csv(self, path)
         writer = ResultsWriter(path, self._names, self._units, self._descriptions)
         try:
@@ -369,13 +370,23 @@ def _attr_dict(attrs: dict, prefix: str) -> dict:
 def open_results(path) -> Results:
     """Results from a file written by :meth:`Results.save`, ``Model.simulate(output_file=...)`` or
     ``jointplay run``; the channels of a file in the current layout are read on access. Files written
-    by earlier versions (through xarray) are read whole."""
-    from .resultsfile import FileChannels, is_streamed_layout, read_file
+    by earlier versions (through xarray) are read whole. A path that is not such a file (missing, a
+    folder, a model file, an HDF5 file of another program) or a file declaring more values than
+    :data:`~jointplay.resultsfile.DEFAULT_MAX_MEMORY_BYTES` holds raises ModelError located at ``path``."""
+    from .errors import ModelError
+    from .resultsfile import FileChannels, is_streamed_layout, read_file, results_source
 
-    if not is_streamed_layout(path):
-        return _open_legacy(path)
-    time, names, units, descriptions, attrs = read_file(path)
-    results = _from_attributes(time, names, units, descriptions, FileChannels(path, names), attrs)
+    source = results_source(path)
+    try:
+        if not is_streamed_layout(source):
+            return _open_legacy(source)
+        time, names, units, descriptions, attrs = read_file(source)
+        results = _from_attributes(time, names, units, descriptions, FileChannels(source, names), attrs)
+    except ModelError:
+        raise
+    except (OSError, KeyError, ValueError, TypeError) as exc:  # an HDF5 file, but not one jointplay wrote
+        what = str(exc.args[0]) if isinstance(exc, KeyError) and exc.args else f"{exc}"
+        raise ModelError([(str(path), f"is not a jointplay results file ({what})")]) from None
     results.path = Path(path)
     return results
 
@@ -384,7 +395,10 @@ def _open_legacy(path) -> Results:
     """Results from a NetCDF file written through xarray/h5netcdf (before the streamed layout)."""
     import xarray as xr
 
+    from .resultsfile import check_declared
+
     with xr.open_dataset(path, engine="h5netcdf") as ds:
+        check_declared(path, "the file", (max(1, ds.nbytes // 8),))
         ds.load()
         names = [str(n) for n in ds.data_vars]
         attrs = {key: (value.tolist() if isinstance(value, np.ndarray) else value) for key, value in ds.attrs.items()}

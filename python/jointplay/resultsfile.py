@@ -54,6 +54,10 @@ _FACTORS = {None: 1, "B": 1, "kB": 10**3, "MB": 10**6, "GB": 10**9, "TB": 10**12
             "kiB": 2**10, "KiB": 2**10, "MiB": 2**20, "GiB": 2**30, "TiB": 2**40}
 
 
+#: Largest size the core counts (an unsigned 64-bit number of bytes).
+MAX_SIZE = 2**64 - 1
+
+
 def parse_size(raw: Any) -> int:
     """A number of bytes from a whole number or a string such as ``"500 MB"`` or ``"2 GiB"``;
     raises ValueError naming the value."""
@@ -62,7 +66,7 @@ def parse_size(raw: Any) -> int:
     if isinstance(raw, (int, float)):
         if not (np.isfinite(raw) and raw > 0):
             raise ValueError(f"must be a size > 0 bytes, got {raw!r}")
-        return int(raw)
+        return _at_most_max(int(raw), raw)
     match = _SIZE.match(raw) if len(raw) < 40 else None
     if match is None or match.group(2) not in _FACTORS:
         raise ValueError(f'must be a size such as "500 MB" or "2 GiB" (units B, kB, MB, GB, TB, KiB, MiB, GiB, '
@@ -70,6 +74,12 @@ def parse_size(raw: Any) -> int:
     value = int(float(match.group(1)) * _FACTORS[match.group(2)])
     if value <= 0:
         raise ValueError(f"must be a size > 0 bytes, got {raw!r}")
+    return _at_most_max(value, raw)
+
+
+def _at_most_max(value: int, raw: Any) -> int:
+    if value > MAX_SIZE:
+        raise ValueError(f"must be at most 2^64 - 1 bytes (16 EiB, the largest size the core counts), got {raw!r}")
     return value
 
 
@@ -102,6 +112,65 @@ def output_kind(path: str | os.PathLike) -> str:
         return "csv"
     raise ValueError(f"unknown results format {suffix or '(no suffix)'!r}: use .nc, .nc4 or .h5 for NetCDF-4, "
                      ".csv for CSV")
+
+
+def output_target(path: str | os.PathLike) -> str:
+    """The format (``"netcdf"`` or ``"csv"``) of a results file to be written at ``path``, checked first: a
+    known suffix, a folder that exists, not a folder itself. Raises ModelError located at the user's path."""
+    from .errors import ModelError
+
+    target = Path(path)
+    if target.is_dir():
+        raise ModelError([(str(path), "is a folder, not a results file (give a file name such as run.nc)")])
+    try:
+        kind = output_kind(target)
+    except ValueError as exc:
+        raise ModelError([(str(path), str(exc))]) from None
+    folder = target.parent
+    if not folder.is_dir():
+        what = "is a file, not a folder" if folder.exists() else "does not exist"
+        raise ModelError([(str(path), f"cannot write the results: the folder {str(folder)!r} {what}")])
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise ModelError([(str(path), f"cannot write the results: no permission to write into {str(folder)!r}")])
+    return kind
+
+
+def results_source(path: str | os.PathLike) -> Path:
+    """``path`` checked before it is read as a results file: an existing HDF5 (NetCDF-4) file. Raises
+    ModelError located at the user's path (a TOML model file, a CSV file, a folder each get a message)."""
+    import h5py
+
+    from .errors import ModelError
+
+    source = Path(path)
+    if source.is_dir():
+        raise ModelError([(str(path), "is a folder, not a results file")])
+    if not source.is_file():
+        raise ModelError([(str(path), "no such results file")])
+    try:
+        hdf5 = h5py.is_hdf5(source)
+    except OSError as exc:
+        raise ModelError([(str(path), f"cannot be read: {exc.strerror or exc}")]) from None
+    if not hdf5:
+        suffix = source.suffix.lower()
+        hint = {".toml": ": it is a model file (TOML); jointplay.load() reads it and `jointplay run` simulates it",
+                ".csv": ": CSV results are for other programs; open_results reads the NetCDF-4 files (.nc) that "
+                        "jointplay writes"}.get(suffix, "")
+        raise ModelError([(str(path), f"is not a jointplay results file (not a NetCDF-4/HDF5 file){hint}")])
+    return source
+
+
+def check_declared(path: str | os.PathLike, what: str, shape: tuple[int, ...], itemsize: int = 8,
+                   budget: int = DEFAULT_MAX_MEMORY_BYTES) -> None:
+    """ModelError at ``path`` when ``what`` of a file declares more than ``budget`` bytes of values: checked
+    before they are read (a file may declare a size far beyond what it holds)."""
+    from .errors import ModelError
+
+    size = math.prod(int(n) for n in shape) * itemsize
+    if size > budget:
+        dims = " x ".join(str(int(n)) for n in shape)
+        raise ModelError([(str(path), f"{what} declares {dims} values ({format_size(size)}), above the memory "
+                                      f"budget of {format_size(budget)} for reading a file")])
 
 
 class ResultsWriter:
@@ -332,7 +401,9 @@ class FileChannels:
         import h5py
 
         with h5py.File(self.path, "r") as f:
-            return np.asarray(f[variable_name(self.names[k])][()], dtype=float)
+            dataset = f[variable_name(self.names[k])]
+            check_declared(self.path, f"channel {self.names[k]!r}", dataset.shape)
+            return np.asarray(dataset[()], dtype=float)
 
     def block(self, start: int, stop: int) -> np.ndarray:
         """Values of every channel for samples ``start:stop``, shape (channels, samples)."""
@@ -357,6 +428,7 @@ def read_file(path: str | os.PathLike) -> tuple[np.ndarray, list[str], list[str]
     import h5py
 
     with h5py.File(path, "r") as f:
+        check_declared(path, "time", f["time"].shape)
         time = np.asarray(f["time"][()], dtype=float)
         variables = [name for name in f if name != "time"]
         names = [_text(f[name].attrs.get("channel", name)) for name in variables]
@@ -390,7 +462,8 @@ def check_budget(t0: float, t_end: float, output_step: float | None, n_channels:
     size = samples * n_channels * 8
     if size <= budget:
         return None
-    return (f"the run would write {samples} samples x {n_channels} channels x 8 bytes = {format_size(size)}, "
+    count = f"{samples}" if samples < 10**12 else f"{samples:.3g}"
+    return (f"the run would write {count} samples x {n_channels} channels x 8 bytes = {format_size(size)}, "
             f"above max_output_bytes = {format_size(budget)}; raise max_output_bytes, set a coarser output_step "
             "or a shorter t_end")
 

@@ -117,5 +117,8 @@ def test_an_undamped_l_frame_spinning_and_vibrating_in_free_flight_keeps_its_ene
     r = m.simulate(0.5, method="dopri5", rtol=1e-9, atol=1e-11, output_step=0.01)
     energy, kinetic = r["system.energy"], r["system.kinetic_energy"]
     assert np.ptp(energy) < 1e-9 * energy[0]  # seen 2e-12
-    assert np.ptp(energy - kinetic) > 1e-4 * energy[0]  # it did vibrate: the spin loads the frame
+    # the spin loads the frame: it starts in that strain (its quasi-static strain, docs/theory/planar-formulation.md)
+    # and keeps a strain energy of some 4.5e-4 of the whole, vibrating about it (ptp 2.4e-3 J seen)
+    assert (energy - kinetic).min() > 1e-4 * energy[0]
+    assert np.ptp(energy - kinetic) > 1e-5 * energy[0]
     assert start[2] == pytest.approx(20.0)

@@ -123,6 +123,26 @@ pub enum SimulationError {
         /// Largest residual after the iteration [m or rad].
         residual: f64,
     },
+    /// The mechanism has no static equilibrium near its assembled configuration.
+    #[error("no static equilibrium at t = {time:.6e} s: {element} has {cause}")]
+    NoEquilibrium {
+        /// Time [s].
+        time: f64,
+        /// The body whose load is not carried.
+        element: String,
+        /// What is unbalanced.
+        cause: String,
+    },
+    /// Initial velocities given for a flexible body contradict its joints.
+    #[error("the initial velocities given for {element} contradict its joints and drivers at t = {time:.6e} s: {cause}")]
+    ContradictoryVelocities {
+        /// Time [s].
+        time: f64,
+        /// The body (or bodies) whose given velocities the joints contradict.
+        element: String,
+        /// What the joints need instead.
+        cause: String,
+    },
     /// A contact penetrated further than the sanity bound allows.
     #[error("penetration {penetration:.3e} m in {element} at t = {time:.6e} s exceeds the bound {bound:.3e} m; the contact is too soft or the step too large")]
     ExcessivePenetration {
@@ -220,6 +240,8 @@ impl SimulationError {
             | Self::NonFinite { time, .. }
             | Self::SingularConfiguration { time, .. }
             | Self::ConstraintViolation { time, .. }
+            | Self::ContradictoryVelocities { time, .. }
+            | Self::NoEquilibrium { time, .. }
             | Self::ExcessivePenetration { time, .. }
             | Self::ImplausibleStart { time, .. }
             | Self::InvalidInput { time, .. }
@@ -238,6 +260,8 @@ impl SimulationError {
             Self::NonFinite { element, .. }
             | Self::SingularConfiguration { element, .. }
             | Self::ConstraintViolation { element, .. }
+            | Self::ContradictoryVelocities { element, .. }
+            | Self::NoEquilibrium { element, .. }
             | Self::ExcessivePenetration { element, .. }
             | Self::ImplausibleStart { element, .. }
             | Self::FilmModel { element, .. }

@@ -184,6 +184,26 @@ impl CoreModel {
         Ok(out)
     }
 
+    /// The static equilibrium at `t0` (drivers held), or an error record.
+    fn equilibrium<'py>(&self, py: Python<'py>, t0: f64, force_tolerance: f64, max_iterations: usize) -> PyResult<Bound<'py, PyDict>> {
+        let model = Arc::clone(&self.model);
+        let options = dynamics::EquilibriumOptions { force_tolerance, max_iterations, ..Default::default() };
+        let result = py.detach(move || guarded(|| dynamics::equilibrium(&model, t0, &options, &mut Workspace::new(&model))))?;
+        let out = PyDict::new(py);
+        match result {
+            Ok(found) => {
+                out.set_item("coordinates", PyArray1::from_slice(py, found.state.coordinates()))?;
+                out.set_item("element_states", PyArray1::from_slice(py, self.model.layout.split(&found.state.y).2))?;
+                out.set_item("force_residual", found.force_residual)?;
+                out.set_item("constraint_residual", found.constraint_residual)?;
+                out.set_item("iterations", found.iterations)?;
+                out.set_item("error", py.None())?;
+            }
+            Err(e) => out.set_item("error", conv::simulation_error(py, &e)?)?,
+        }
+        Ok(out)
+    }
+
     /// Assembles at `t0` and simulates to `t_end` in the calling thread with the GIL released.
     /// About every [`WATCH_INTERVAL`] the core takes the GIL back for a moment: it calls
     /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run at
@@ -191,7 +211,9 @@ impl CoreModel {
     /// stops the run and is raised here. With `sink`, the samples go to `sink(times, values, start)`
     /// in chunks of about 4 MiB while the run goes on (see [`PythonSink`]) and the returned
     /// `time` and `values` are empty; an exception in `sink` stops the run and is raised here.
-    #[pyo3(signature = (t0, t_end, options, progress=None, sink=None))]
+    /// With `from_equilibrium` the run starts at rest in the static equilibrium at `t0`.
+    #[pyo3(signature = (t0, t_end, options, progress=None, sink=None, from_equilibrium=false))]
+    #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
         py: Python<'py>,
@@ -200,6 +222,7 @@ impl CoreModel {
         options: &Bound<'py, PyDict>,
         progress: Option<Py<PyAny>>,
         sink: Option<Py<PyAny>>,
+        from_equilibrium: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let options = conv::simulation_options(options)?;
         let model = Arc::clone(&self.model);
@@ -216,8 +239,13 @@ impl CoreModel {
         let run = py.detach(|| {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
-                let mut state = dynamics::assemble(&model, t0, &mut ws).map_err(|e| e)?;
-                let notes = dynamics::assembly_notes(&model, t0, state.coordinates(), &mut ws);
+                let mut state = if from_equilibrium {
+                    dynamics::equilibrium(&model, t0, &dynamics::EquilibriumOptions::default(), &mut ws)?.state
+                } else {
+                    dynamics::assemble(&model, t0, &mut ws)?
+                };
+                // (an equilibrium start moves the bodies on purpose: nothing to note)
+                let notes = if from_equilibrium { Vec::new() } else { dynamics::assembly_notes(&model, t0, state.coordinates(), &mut ws) };
                 Ok((dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&*watched), sink), notes))
             })
         })?;

@@ -44,6 +44,9 @@ def read_document(path: str | Path) -> dict:
 
 def _text(data: bytes, where: str) -> str:
     """The UTF-8 text of a model file; a binary file (NUL bytes, not UTF-8) is a ModelError."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        _raise(where, "is UTF-16 text (it starts with a UTF-16 byte-order mark); a model file is TOML text in "
+                      "UTF-8: save it as UTF-8")
     nul = data.find(b"\x00")
     if nul >= 0:
         _raise(where, f"is a binary file (a NUL byte at offset {nul}), not a TOML model file")
@@ -56,10 +59,40 @@ def _text(data: bytes, where: str) -> str:
 
 def parse_text(text: str, where: str = "model file") -> dict:
     """TOML text to a dict; a syntax error is a ModelError naming the line."""
+    if text.startswith("\ufeff"):
+        _raise(where, "starts with a UTF-8 byte-order mark (BOM, the bytes EF BB BF), which TOML does not allow; "
+                      "save the file as UTF-8 without BOM")
     try:
-        return tomllib.loads(text)
+        doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         return _raise(where, f"is not valid TOML: {exc}")
+    except RecursionError:
+        return _raise(where, f"is nested too deeply to be read: arrays or inline tables inside one another hundreds "
+                             f"of levels deep (a model file needs at most {MAX_DEPTH})")
+    check_depth(doc, where)
+    return doc
+
+
+#: Most levels of tables and arrays inside one another in a model file; the deepest a model needs is about 6
+#: (``modal_bodies.link.matrices.mass.values[k]``).
+MAX_DEPTH = 32
+
+
+def check_depth(doc: Any, where: str = "model file") -> None:
+    """ModelError when tables and arrays in ``doc`` are nested more than :data:`MAX_DEPTH` levels deep (the
+    readers after this one recurse through them), naming the key where it goes too deep."""
+    stack: list[tuple[Any, int, tuple]] = [(doc, 0, ())]
+    while stack:
+        node, depth, path = stack.pop()
+        if depth > MAX_DEPTH:
+            from .fields import join
+
+            _raise(join(*path[:3]) or where, f"holds tables and arrays nested more than {MAX_DEPTH} levels deep; a "
+                                             "model file needs at most a few levels")
+        if isinstance(node, dict):
+            stack.extend((value, depth + 1, (*path, key)) for key, value in node.items())
+        elif isinstance(node, list):
+            stack.extend((value, depth + 1, (*path, k)) for k, value in enumerate(node))
 
 
 def _raise(location: str, message: str):
@@ -88,8 +121,10 @@ def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check:
     ``base`` (default: the working folder)."""
     from ..model import Model
 
+    check_depth(doc, "the model")
     if overrides:
         doc = apply_overrides(doc, overrides)
+        check_depth(doc, "the model")
     builder = Builder(doc, default_name=name, base=base).run()
     spec, simulation = builder.result()
     model = Model.from_spec(spec)
@@ -100,6 +135,7 @@ def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check:
         model.compile()
     except ModelError as exc:
         raise ModelError([Problem(core_location(p.location, spec), p.message) for p in exc.problems]) from None
+    _check_formulation(model)
     if check:
         try:
             model._assembled()
@@ -120,6 +156,17 @@ def assembly_error(exc: SimulationError, spec: dict) -> ModelError:
     problems = [Problem(where, exc.cause)]
     problems += [Problem(p.location, f"(plausibility, may explain the above) {p.message}") for p in found]
     return ModelError(problems)
+
+
+def _check_formulation(model) -> None:
+    """``[simulation] formulation = "joint_coordinates"`` needs a tree of ideal joints (the core refuses it at
+    the start of a run otherwise)."""
+    if model.simulation.get("formulation") != "joint_coordinates":
+        return
+    described = model.compile().describe()
+    if described.get("joint_coordinates") is None:
+        _raise("simulation.formulation", "joint_coordinates needs a tree of ideal joints, but "
+                                         f"{described.get('absolute_because')}; use \"auto\" or \"absolute\"")
 
 
 def to_toml(model, header: str | None = None) -> str:

@@ -198,11 +198,9 @@ class Builder:
     def relations(self, table: p.Table, t: Strict, where: str) -> None:
         """The bounds between keys of a validated table (``rod_side_area < piston_area``)."""
         for relation in table.relations:
-            value, other = getattr(t, relation.key), getattr(t, relation.other)
-            if value is not None and other is not None and not relation.holds(value, other):
-                why = f" ({relation.why})" if relation.why else ""
-                self.problem(join(where, relation.key), f"must be {p.RELATIONS[relation.op]} {relation.other} = "
-                                                        f"{_shown(other)}{why}, got {_shown(value)}")
+            found = relation.violation(lambda key: getattr(t, key, None), lambda key, value: _shown(value, table[key]))
+            if found is not None:
+                self.problem(join(where, found[0]), found[1])
 
     # sections --------------------------------------------------------------
 
@@ -462,7 +460,7 @@ class Builder:
         section, mesh = geometry
         return {"name": name, "start": [float(v) for v in t.start], "end": [float(v) for v in t.end],
                 "section": section, "mesh": mesh, "damping_time": float(t.damping_time),
-                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity),
+                **_rigid_motion(t),
                 "points": stations}
 
     def beam_geometry(self, where: str, t: Strict, raw: dict,
@@ -560,7 +558,7 @@ class Builder:
                 "points": [point(station) for station in points], "frame": t.frame,
                 "normal_modes": t.normal_modes, "damping_ratio": float(t.damping_ratio),
                 "damping_time": float(t.damping_time),
-                "velocity": [float(v) for v in t.velocity], "angular_velocity": float(t.angular_velocity)}
+                **_rigid_motion(t)}
 
     def modal_beam(self, where: str, t: Strict, raw: dict, named: tuple[list[dict], list[dict]]) -> dict | None:
         """The core's structure of a modal body reduced from a beam; None after adding problems."""
@@ -756,6 +754,10 @@ class Builder:
         table = self.validate(s.SimulationTable, self.table("simulation"), "simulation")
         if table is None:
             return
+        self.relations(p.SIMULATION, table, "simulation")
+        if table.method == "generalized_alpha" and table.step is None:
+            self.problem("simulation.step", 'generalized_alpha integrates with a fixed nominal step and needs one, '
+                                            'for example step = "1 ms"; its accuracy is that step\'s')
         self.simulation = {k: (float(v) if isinstance(v, float) else v)
                            for k, v in table.model_dump(exclude_none=True).items()}
 
@@ -796,7 +798,17 @@ def _text(value: float) -> str:
     return f"{value * 1e3:.6g} mm"
 
 
-def _shown(value: Any) -> str:
-    """A validated quantity as the user wrote it."""
-    return value.text if isinstance(value, Q) else f"{value:g}"
+def _shown(value: Any, param: p.Param | None = None) -> str:
+    """A validated quantity as the user wrote it (a value not written by the user, such as a default the core
+    sets, in the SI unit of ``param``)."""
+    if isinstance(value, Q):
+        return value.text
+    unit = p.unit(param) if param is not None else ""
+    return f"{value:g} {unit}" if unit else f"{value:g}"
 
+
+def _rigid_motion(t: Strict) -> dict:
+    """A flexible body's initial rigid motion as the core reads it: each key None where it was not given (neither
+    given: the rigid motion the mechanism gives the body at assembly)."""
+    return {"velocity": None if t.velocity is None else [float(v) for v in t.velocity],
+            "angular_velocity": None if t.angular_velocity is None else float(t.angular_velocity)}

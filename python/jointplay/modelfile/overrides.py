@@ -49,6 +49,9 @@ def _value(text: str) -> Any:
         return tomllib.loads(f"v = {text}")["v"]
     except tomllib.TOMLDecodeError:
         return tomllib.loads(f"v = {json.dumps(text)}")["v"]
+    except RecursionError:
+        raise ModelError([Problem(f"--set {text[:40]}", "is nested too deeply to be read (arrays or inline tables "
+                                                        "inside one another hundreds of levels deep)")]) from None
 
 
 def apply_overrides(doc: dict, overrides: list[str] | dict[str, Any]) -> dict:

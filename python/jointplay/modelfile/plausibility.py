@@ -262,7 +262,7 @@ def model_speed(spec: dict, size: float) -> float:
     speeds = [function_rate(d["function"]) * (size if kinds.get(d["joint"]) == "revolute" else 1.0)
               for d in spec.get("drivers", [])]
     for b in spec.get("bodies", []) + spec.get("beams", []) + spec.get("modal_bodies", []):
-        speeds += [math.hypot(*b["velocity"]), abs(b["angular_velocity"]) * size]
+        speeds += [math.hypot(*(b.get("velocity") or (0.0, 0.0))), abs(b.get("angular_velocity") or 0.0) * size]
     speeds.append(math.sqrt(2.0 * math.hypot(*spec.get("gravity", (0.0, 0.0))) * size))
     return max(speeds, default=0.0)
 
@@ -305,7 +305,7 @@ def _nothing_moves(spec: dict) -> list[Problem]:
         return []
     if any(spec.get("gravity", (0.0, 0.0))):
         return []
-    if any(any(b["velocity"]) or b["angular_velocity"] for b in moving):
+    if any(any(b.get("velocity") or ()) or b.get("angular_velocity") for b in moving):
         return []
     return [Problem("model", "nothing moves the mechanism: no driver, force element, gravity or initial velocity; "
                              "the run will show it at rest")]

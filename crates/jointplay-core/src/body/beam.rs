@@ -176,13 +176,20 @@ impl BeamBody {
     /// first node moving at `velocity` [m/s], the beam turning at `angular_velocity` [rad/s].
     pub fn rigid_velocities(&self, velocity: Vec2, angular_velocity: f64) -> Vec<f64> {
         let q = self.reference_coordinates();
-        let origin = Vec2::new(q[0], q[1]);
         let mut v = vec![0.0; q.len()];
-        for (k, node) in q.chunks_exact(3).enumerate() {
-            let u = velocity + perp(Vec2::new(node[0], node[1]) - origin) * angular_velocity;
-            v[3 * k..3 * k + 3].copy_from_slice(&[u.x, u.y, angular_velocity]);
-        }
+        Self::rigid_motion_velocities(&q, velocity, angular_velocity, &mut v);
         v
+    }
+
+    /// Nodal velocities `v` of the beam at nodal positions `q` moving as a rigid
+    /// body: the first node at `velocity` [m/s], every section turning at
+    /// `angular_velocity` [rad/s] (node `k`: `velocity + omega x (r_k - r_0)`, `omega`).
+    pub fn rigid_motion_velocities(q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]) {
+        let origin = Vec2::new(q[0], q[1]);
+        for (node, rates) in q.chunks_exact(3).zip(v.chunks_exact_mut(3)) {
+            let u = velocity + perp(Vec2::new(node[0], node[1]) - origin) * angular_velocity;
+            rates.copy_from_slice(&[u.x, u.y, angular_velocity]);
+        }
     }
 
     /// The section at `arclength` [m] along the unstressed beam from its first end.

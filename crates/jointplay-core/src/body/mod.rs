@@ -311,6 +311,38 @@ impl BodyKind {
         }
     }
 
+    /// The velocity coordinates `v` of the body at positions `q` moving as a
+    /// rigid body: its reference point (a rigid body's centre of mass, a beam's
+    /// first node, a modal body's frame origin) at `velocity` [m/s], turning at
+    /// `angular_velocity` [rad/s], undeformed in rate (a modal body's modal rates zero).
+    pub fn rigid_motion_velocities(&self, q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]) {
+        match self {
+            Self::PlanarRigid(_) => v.copy_from_slice(&[velocity.x, velocity.y, angular_velocity]),
+            Self::Beam(_) => BeamBody::rigid_motion_velocities(q, velocity, angular_velocity, v),
+            Self::Modal(_) => {
+                v.fill(0.0);
+                v[..3].copy_from_slice(&[velocity.x, velocity.y, angular_velocity]);
+            }
+        }
+    }
+
+    /// The velocity-dependent part of the accelerations of the velocity
+    /// coordinates `a` in a rigid motion at angular velocity `angular_velocity`
+    /// [rad/s] at positions `q`, the part [`Self::rigid_motion_velocities`] of
+    /// the accelerations does not span: a beam's nodes' centripetal
+    /// accelerations `-omega^2 (r_k - r_0)`; none for a rigid body and for a
+    /// modal body, whose frame coordinates take the rigid motion whole [m/s^2].
+    pub fn rigid_motion_bias_accelerations(&self, q: &[f64], angular_velocity: f64, a: &mut [f64]) {
+        a.fill(0.0);
+        if let Self::Beam(_) = self {
+            let (x0, y0) = (q[0], q[1]);
+            for (node, out) in q.chunks_exact(3).zip(a.chunks_exact_mut(3)) {
+                out[0] = -angular_velocity * angular_velocity * (node[0] - x0);
+                out[1] = -angular_velocity * angular_velocity * (node[1] - y0);
+            }
+        }
+    }
+
     /// Moves the positions `q` by the velocity-coordinate increment `dv` (a
     /// position correction `q + dv` where `nq == nv`).
     #[inline]

@@ -2,9 +2,12 @@
 //! constraints (driver equations included, so driven coordinates are held
 //! at their prescribed values) with every clearance joint locked at its
 //! initial eccentricity, then the velocities of that locked (ideal)
-//! mechanism.
+//! mechanism, every flexible body in a rigid motion (`rigid_motion_start.rs`)
+//! and in the strain that carries its loads there (`quasi_static_start.rs`).
 
 use super::projection::{project_positions, project_velocities, velocity_residuals};
+use super::quasi_static_start::strain_quasi_statically;
+use super::rigid_motion_start::{needs_rigid_motion_start, start_in_rigid_motion};
 use super::state::State;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
@@ -28,12 +31,19 @@ pub fn assemble(model: &Model, t0: f64, ws: &mut Workspace) -> Result<State, Sim
     project_positions(model, all, t0, &mut q, ASSEMBLY_TOLERANCE, ASSEMBLY_ITERATIONS, ws)?;
     super::assembly_checks::settle_start(model, t0, &mut q, ws)?;
     let (before, _) = velocity_residuals(model, all, t0, &q, &qdot, ws);
-    project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
+    if needs_rigid_motion_start(model) {
+        start_in_rigid_motion(model, t0, &q, &mut qdot, ws)?;
+    } else {
+        project_velocities(model, all, t0, &q, &mut qdot, ASSEMBLY_TOLERANCE, ws)?;
+    }
     // dependent equations that contradict each other (a driver against a weld) leave a residual
     // no velocity removes: the mechanism is locked
     let (after, row) = velocity_residuals(model, all, t0, &q, &qdot, ws);
     if after > LOCKED_VELOCITY_RESIDUAL * (1.0 + before) {
         return Err(super::conditioning::velocity_failure(model, t0, &q, after, row, ws));
+    }
+    if needs_rigid_motion_start(model) {
+        strain_quasi_statically(model, t0, &mut q, &mut qdot, &model.initial_element_states, ws)?;
     }
     let mut y = Vec::with_capacity(model.layout.len());
     y.extend_from_slice(&q);

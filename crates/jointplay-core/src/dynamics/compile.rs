@@ -6,7 +6,7 @@ use std::collections::HashMap;
 use super::channels::{Channel, ChannelInfo, ChannelRead, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use super::frame::{perp, BodyIndex, Frame, Marker, Vec2};
-use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
+use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
 use crate::body::{BodyKind, MassBlock, ModalNodeSite, PlanarRigidBody, Site};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
@@ -35,6 +35,16 @@ use modal::build_modal_body;
 /// Default bound on penetration as a fraction of the journal radius: far
 /// beyond elastic contact of metals, so reaching it means a wrong input.
 const MAX_PENETRATION_FRACTION_OF_RADIUS: f64 = 0.05;
+
+/// A flexible body's initial rigid motion from its description: the velocity of
+/// its reference point [m/s] and its angular velocity [rad/s] (a missing one
+/// zero), and whether either was given (then it is held at assembly) or the
+/// mechanism's rigid motion is to be found.
+fn given_rigid_motion(velocity: Option<[f64; 2]>, angular_velocity: Option<f64>) -> (Vec2, f64, VelocityStart) {
+    let start = if velocity.is_some() || angular_velocity.is_some() { VelocityStart::Given } else { VelocityStart::RigidMotion };
+    let [vx, vy] = velocity.unwrap_or([0.0; 2]);
+    (Vec2::new(vx, vy), angular_velocity.unwrap_or(0.0), start)
+}
 
 /// Compiles a model description; returns every problem found.
 pub fn compile(spec: &ModelSpec) -> Result<Model, ModelErrors> {
@@ -134,7 +144,7 @@ impl<'s> Compiler<'s> {
             self.model.layout.push_body(&kind);
             self.model.initial_coordinates.extend([b.position[0], b.position[1], b.angle]);
             self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity]);
-            self.model.bodies.push(Body { name: b.name.clone(), kind });
+            self.model.bodies.push(Body { name: b.name.clone(), kind, velocity_start: VelocityStart::Approximate });
             for (i, p) in b.points.iter().enumerate() {
                 self.add_point(index, &b.name, &p.name, p.position, format!("{loc}.points[{i}]"));
             }
@@ -156,10 +166,11 @@ impl<'s> Compiler<'s> {
         self.body_index.insert(&b.name, index);
         let n_modes = built.body.n_modes();
         self.model.initial_coordinates.extend(built.pose.iter().copied().chain(std::iter::repeat_n(0.0, n_modes)));
-        self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity].into_iter().chain(std::iter::repeat_n(0.0, n_modes)));
+        let (velocity, angular_velocity, velocity_start) = given_rigid_motion(b.velocity, b.angular_velocity);
+        self.model.initial_velocities.extend([velocity.x, velocity.y, angular_velocity].into_iter().chain(std::iter::repeat_n(0.0, n_modes)));
         let kind = BodyKind::Modal(Box::new(built.body));
         self.model.layout.push_body(&kind);
-        self.model.bodies.push(Body { name: b.name.clone(), kind });
+        self.model.bodies.push(Body { name: b.name.clone(), kind, velocity_start });
         for (name, node, location) in built.interface.into_iter().chain(built.points) {
             let marker = self.section_marker(index, Site::ModalNode(ModalNodeSite { node: node as u32 }), Vec2::zeros());
             self.name_point(&b.name, &name, marker, location);
@@ -174,11 +185,12 @@ impl<'s> Compiler<'s> {
         let index = BodyIndex(self.model.bodies.len() + 1);
         self.body_index.insert(&b.name, index);
         self.model.initial_coordinates.extend(beam.reference_coordinates());
-        self.model.initial_velocities.extend(beam.rigid_velocities(Vec2::new(b.velocity[0], b.velocity[1]), b.angular_velocity));
+        let (velocity, angular_velocity, velocity_start) = given_rigid_motion(b.velocity, b.angular_velocity);
+        self.model.initial_velocities.extend(beam.rigid_velocities(velocity, angular_velocity));
         let length = beam.length;
         let kind = BodyKind::Beam(beam);
         self.model.layout.push_body(&kind);
-        self.model.bodies.push(Body { name: b.name.clone(), kind });
+        self.model.bodies.push(Body { name: b.name.clone(), kind, velocity_start });
         let named = [("start", 0.0, format!("{loc}.start")), ("end", length, format!("{loc}.end"))];
         let described = b.points.iter().enumerate().map(|(i, p)| (p.name.as_str(), p.arclength, format!("{loc}.points[{i}]")));
         for (name, arclength, location) in named.into_iter().chain(described) {

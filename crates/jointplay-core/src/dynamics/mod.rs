@@ -6,6 +6,9 @@
 
 mod assembly;
 mod assembly_checks;
+mod equilibrium;
+mod quasi_static_start;
+mod rigid_motion_start;
 mod brent;
 mod channels;
 mod compile;
@@ -34,6 +37,7 @@ mod workspace;
 
 pub use assembly::assemble;
 pub use assembly_checks::{assembly_notes, AssemblyNote};
+pub use equilibrium::{equilibrium, Equilibrium, EquilibriumOptions};
 pub use channels::ChannelInfo;
 pub use compile::compile;
 pub use constraint_jacobian::{JacobianBlock, JacobianPattern, MarkerColumns};
@@ -42,7 +46,7 @@ pub use joint_coordinates::{Formulation, JointTree};
 pub use layout::{BodyAddress, StateLayout};
 pub use extrema_summary::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
-pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge};
+pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
 pub use progress::Progress;
 pub use redundancy::{constraint_rank, ConstraintRank};
 pub use simulate::{simulate, simulate_with_sink, Diagnostics, SimulationOptions, SimulationOutcome};

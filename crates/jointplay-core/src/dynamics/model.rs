@@ -17,6 +17,24 @@ pub struct Body {
     pub name: String,
     /// Kind and mass properties.
     pub kind: BodyKind,
+    /// How its initial velocities are found at assembly.
+    pub velocity_start: VelocityStart,
+}
+
+/// How assembly finds a body's initial velocities
+/// (`docs/theory/planar-formulation.md`, "Initial conditions").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VelocityStart {
+    /// The description's velocities are approximate: corrected onto the joints
+    /// by the smallest change in the mass metric (a rigid body, whose every
+    /// velocity is a rigid motion).
+    Approximate,
+    /// A flexible body with no velocities given: it starts in the rigid motion
+    /// the assembled mechanism gives it, found as a rigid link's velocities are.
+    RigidMotion,
+    /// A flexible body whose rigid motion was given: held as given, and the
+    /// assembly fails, naming the body, if the joints contradict it.
+    Given,
 }
 
 /// What an element owning constraint equations is.

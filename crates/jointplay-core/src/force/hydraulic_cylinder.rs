@@ -86,6 +86,19 @@ impl CylinderActuator {
         }
     }
 
+    /// The states `z` of closed chambers brought from the states `reference` at
+    /// the attachments' placement `reference_frames` to the placement `frames`:
+    /// each pressure follows its chamber's volume, `p = p0 - beta ln(V / V0)`
+    /// (no inflow, the liquid's mass kept); the bristle deflection is kept.
+    pub fn closed_states(&self, reference_frames: &[Frame], frames: &[Frame], reference: &[f64], z: &mut [f64]) {
+        let g = self.cylinder.geometry();
+        let (from, to) = (g.volumes(self.line(reference_frames).stroke), g.volumes(self.line(frames).stroke));
+        let beta = self.cylinder.bulk_modulus();
+        z.copy_from_slice(reference);
+        z[0] = crate::hydraulic::chamber::closed_pressure(reference[0], from.0, to.0, beta);
+        z[1] = crate::hydraulic::chamber::closed_pressure(reference[1], from.1, to.1, beta);
+    }
+
     /// Whether the state is inside the range of the law (stroke within [0, S],
     /// pressures above the floor); checked at every accepted step.
     pub fn check(&self, frames: &[Frame], z: &[f64]) -> Result<(), CylinderFault> {

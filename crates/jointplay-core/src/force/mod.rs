@@ -158,6 +158,16 @@ impl ForceElement {
         }
     }
 
+    /// The continuous states at rest in the placement `frames`, from the states
+    /// `reference` at the placement `reference_frames` (a static analysis): a
+    /// cylinder's chambers closed, its pressures following their volumes.
+    pub fn static_states(&self, reference_frames: &[Frame], frames: &[Frame], reference: &[f64], z: &mut [f64]) {
+        match self {
+            Self::HydraulicCylinder(e) => e.closed_states(reference_frames, frames, reference, z),
+            _ => z.copy_from_slice(reference),
+        }
+    }
+
     /// Number of event functions (located by the integrator where they cross zero upwards).
     pub fn n_events(&self) -> usize {
         match self {

@@ -52,7 +52,7 @@ fn residual(c: &ConstraintKind, q: &[f64], t: f64) -> Vec<f64> {
 
 /// Two planar rigid bodies, laid out in order (three velocity coordinates each).
 fn bodies() -> Vec<Body> {
-    (0..2).map(|k| Body { name: format!("b{k}"), kind: BodyKind::PlanarRigid(PlanarRigidBody::new(1.0 + k as f64, 0.1)) }).collect()
+    (0..2).map(|k| Body { name: format!("b{k}"), kind: BodyKind::PlanarRigid(PlanarRigidBody::new(1.0 + k as f64, 0.1)), velocity_start: crate::dynamics::VelocityStart::Approximate }).collect()
 }
 
 /// The pattern of the primitive's rows: a block per non-ground marker, over its body's three coordinates.

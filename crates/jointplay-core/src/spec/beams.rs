@@ -19,10 +19,14 @@ pub struct BeamSpec {
     pub mesh: BeamMeshSpec,
     /// Retardation time of the strain-rate (Kelvin-Voigt) damping [s]; 0: undamped.
     pub damping_time: f64,
-    /// Approximate initial velocity of the first end [m/s].
-    pub velocity: [f64; 2],
-    /// Approximate initial angular velocity of the beam as a rigid link [rad/s].
-    pub angular_velocity: f64,
+    /// Initial velocity of the first end [m/s]; with `angular_velocity`, the
+    /// rigid motion the beam starts in, held and checked against the joints.
+    /// Neither given: the rigid motion the assembled mechanism gives the beam.
+    #[serde(default)]
+    pub velocity: Option<[f64; 2]>,
+    /// Initial angular velocity of the beam as a rigid link [rad/s] (see `velocity`).
+    #[serde(default)]
+    pub angular_velocity: Option<f64>,
     /// Named points by arclength from the first end (`start` and `end` are named already).
     pub points: Vec<BeamPointSpec>,
 }

@@ -30,10 +30,15 @@ pub struct ModalBodySpec {
     /// Retardation time of stiffness-proportional damping, added to the modal
     /// damping (a beam's strain-rate damping of the same time, linearised) [s].
     pub damping_time: f64,
-    /// Initial velocity of the frame's origin (the first interface node) [m/s].
-    pub velocity: [f64; 2],
-    /// Initial angular velocity of the frame [rad/s].
-    pub angular_velocity: f64,
+    /// Initial velocity of the frame's origin (the first interface node) [m/s];
+    /// with `angular_velocity`, the rigid motion the body starts in (modal
+    /// rates zero), held and checked against the joints. Neither given: the
+    /// rigid motion the assembled mechanism gives the body.
+    #[serde(default)]
+    pub velocity: Option<[f64; 2]>,
+    /// Initial angular velocity of the frame [rad/s] (see `velocity`).
+    #[serde(default)]
+    pub angular_velocity: Option<f64>,
 }
 
 /// The structure a modal body is reduced from.
