@@ -56,7 +56,7 @@ first = "rod.end"
 second = "ground.P"
 [drivers.motor]
 joint = "O"
-function = {{ kind = "constant_speed", rate = "10 rad/s", initial = "90 deg" }}
+function = {{ kind = "constant_speed", rate = "0 rad/s", initial = "90 deg" }}
 """
 
 
