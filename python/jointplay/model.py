@@ -401,6 +401,7 @@ class Model:
             results = make_results(raw)
             if kind == "csv":
                 results.save(output_file if raw["error"] is None else resultsfile.partial_path(output_file))
+        emit(_projection_advice(options, raw.get("diagnostics") or {}))
         if raw["error"] is not None:
             raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
         return results
@@ -453,6 +454,30 @@ def _flexible_advice(spec: dict, options: dict) -> list:
             advice.append(Problem("simulation.stabilization", "a projection after each step strains the beam and "
                                                               "upsets the implicit method's history; use "
                                                               "stabilization=\"baumgarte\""))
+    return advice
+
+
+def _projection_advice(options: dict, diagnostics: dict) -> list:
+    """Warnings after a run whose constraint projection could not work to a tenth of atol
+    (docs/theory/planar-formulation.md, "Projection tolerance"): an atol below the round-off of the
+    coordinates, or a singular position where Newton on the joints stalled above atol."""
+    from .errors import Problem
+
+    tolerance, left = diagnostics.get("projection_tolerance"), diagnostics.get("max_projection_residual", 0.0)
+    atol = options.get("atol")
+    if not tolerance or not left or not atol:  # no projection in this run, or atol 0 (rtol rules)
+        return []
+    advice = []
+    if tolerance > _core.PROJECTION_SHARE * atol * (1 + 1e-12):
+        advice.append(Problem("simulation.atol", f"{atol:g} asks the constraint projection for residuals below "
+                                                 f"{_core.PROJECTION_SHARE * atol:g} m, under the round-off of the "
+                                                 f"coordinates; it works to {tolerance:g} m, so the joints are not "
+                                                 "held to atol"))
+    if left > max(atol, tolerance):
+        advice.append(Problem("simulation.atol", f"the constraint projection left joint residuals up to {left:.2g} m "
+                                                 f"(at t = {diagnostics.get('max_projection_residual_time', math.nan):.6g}"
+                                                 f" s: a singular position, where Newton on the joints stalls), above "
+                                                 f"atol = {atol:g}: the requested accuracy was not met there"))
     return advice
 
 

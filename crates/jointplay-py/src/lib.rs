@@ -247,6 +247,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bearing::steady_bearing, m)?)?;
     bearing::add_constants(m)?;
     m.add("MAX_STRUCTURE_NODES", jointplay_core::body::MAX_STRUCTURE_NODES)?;
+    m.add("PROJECTION_SHARE", dynamics::PROJECTION_SHARE)?;
+    m.add("PROJECTION_FLOOR", dynamics::PROJECTION_FLOOR)?;
+    m.add("PROJECTION_CEILING", dynamics::PROJECTION_CEILING)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
