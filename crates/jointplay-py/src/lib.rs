@@ -36,7 +36,7 @@ struct CoreModel {
 }
 
 /// Wall time between two calls back from a running simulation (progress, signals).
-const WATCH_INTERVAL: Duration = Duration::from_millis(100);
+pub(crate) const WATCH_INTERVAL: Duration = Duration::from_millis(100);
 
 /// One call back from a running simulation (GIL held): `progress(t)`, then pending signals.
 /// False stops the run; an exception other than `KeyboardInterrupt` is kept in `raised`
@@ -184,8 +184,9 @@ impl CoreModel {
 
     /// Assembles at `t0` and simulates to `t_end` in the calling thread with the GIL released.
     /// About every [`WATCH_INTERVAL`] the core takes the GIL back for a moment: it calls
-    /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run at
-    /// the next sample with what was computed kept. An exception raised by `progress` also
+    /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run within
+    /// about that interval (its check is reached from every evaluation and every Reynolds sweep),
+    /// with what was computed kept. An exception raised by `progress` also
     /// stops the run and is raised here. With `sink`, the samples go to `sink(times, values, start)`
     /// in chunks of about 4 MiB while the run goes on (see [`PythonSink`]) and the returned
     /// `time` and `values` are empty; an exception in `sink` stops the run and is raised here.

@@ -153,6 +153,22 @@ pub fn simulate_with_sink(
     progress: Option<&Progress>,
     sink: Option<Box<dyn SampleSink>>,
 ) -> SimulationOutcome {
+    // every long loop of the run (a Reynolds solve included) answers the progress's cancel
+    match progress {
+        Some(progress) => progress.scope(|| run(model, state, t_end, options, Some(progress), sink)),
+        None => run(model, state, t_end, options, None, sink),
+    }
+}
+
+/// [`simulate_with_sink`] inside the progress's scope.
+fn run(
+    model: &Model,
+    state: &mut State,
+    t_end: f64,
+    options: &SimulationOptions,
+    progress: Option<&Progress>,
+    sink: Option<Box<dyn SampleSink>>,
+) -> SimulationOutcome {
     let mut ws = Workspace::new(model);
     let mut trajectory = Trajectory::new(model);
     trajectory.set_max_bytes(options.max_output_bytes);
@@ -214,7 +230,12 @@ pub fn simulate_with_sink(
     }
     diagnostics.impacts = model.clearance_joints().map(|(k, _, _)| state.memory[k].impacts()).collect();
     let extrema = summarize(model, &tracking.tracker, &tracking.channels, &state.memory);
-    let error = result.err().map(|e| name_likely_cause(model, e, &ws));
+    // a cancelled run stops wherever a loop saw it (a Reynolds solve says "interrupted"): say why it stopped
+    let cancelled = progress.is_some_and(Progress::is_cancelled);
+    let error = result.err().map(|e| match cancelled {
+        true => SimulationError::Interrupted { time: if last_accepted.is_nan() { t0 } else { last_accepted } },
+        false => name_likely_cause(model, e, &ws),
+    });
     let formulation = if tree.is_some() { Formulation::JointCoordinates } else { Formulation::Absolute };
     SimulationOutcome { trajectory, statistics, diagnostics, extrema, error, formulation }
 }

@@ -251,6 +251,11 @@ impl OdeSystem for MechanismSystem<'_> {
         // the state of the evaluation the workspace still holds (a sample just recorded
         // there, or a restart at the state just evaluated): reuse it
         if !self.step_end.holds_evaluation(t, y) {
+            // a cancel is answered at the next evaluation, not at the next sample, which
+            // may be many steps away
+            if self.progress.is_some_and(|progress| !progress.poll()) {
+                return Err(SimulationError::Interrupted { time: self.last_accepted });
+            }
             self.step_end.evaluated_at = None;
             self.evaluate(t, y)?;
         }
