@@ -440,16 +440,25 @@ def _plain(value: Any) -> Any:
     return value
 
 
-def check_budget(t0: float, t_end: float, output_step: float | None, n_channels: int, budget: int) -> str | None:
+def check_budget(t0: float, t_end: float, output_step: float | None, n_channels: int, budget: int,
+                 longest_step: float | None = None) -> str | None:
     """A message when a run on the regular grid ``output_step`` would write more than ``budget`` bytes
-    (``(t_end - t0) / output_step + 1`` samples x channels x 8 bytes); None when it fits or the sample
-    count is not known before the run (output at every step: checked while it goes)."""
-    if output_step is None:
+    (``(t_end - t0) / output_step + 1`` samples x channels x 8 bytes), or a run with a sample at every
+    step at least that (steps of at most ``longest_step``: ``max_step``, or generalized-alpha's ``step``);
+    None when it fits or the sample count has no bound before the run (then the run stops when it reaches
+    the budget, and its pace is projected while it goes)."""
+    if output_step is None and longest_step is None:
         return None
-    samples = math.ceil((t_end - t0) / output_step) + 1  # the grid points before t_end, and t_end
+    spacing = output_step if output_step is not None else longest_step
+    samples = math.ceil((t_end - t0) / spacing) + 1  # the grid points (or shortest steps) before t_end, and t_end
     size = samples * n_channels * 8
     if size <= budget:
         return None
+    if output_step is None:
+        return (f"the run would write at least {samples} samples (one at every step, each of at most "
+                f"{longest_step:g} s) x {n_channels} channels x 8 bytes = {format_size(size)}, above "
+                f"max_output_bytes = {format_size(budget)}; set an output_step, raise max_output_bytes or "
+                "shorten t_end")
     return (f"the run would write {samples} samples x {n_channels} channels x 8 bytes = {format_size(size)}, "
             f"above max_output_bytes = {format_size(budget)}; raise max_output_bytes, set a coarser output_step "
             "or a shorter t_end")
