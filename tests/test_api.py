@@ -171,7 +171,7 @@ def test_ctrl_c_stops_a_long_reynolds_solve_from_inside_it():
         calls.append(t)
         raise KeyboardInterrupt
 
-    with pytest.raises(jp.SimulationError) as caught:
+    with pytest.raises(jp.SimulationError) as caught, pytest.warns(jp.JointplayWarning, match="480 x 256"):
         model.simulate(flores.revolutions_to_time(1.0), progress=interrupt)
     assert caught.value.kind == "Interrupted"
     assert calls == [0.0] and caught.value.time == 0.0
