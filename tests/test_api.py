@@ -179,6 +179,27 @@ def test_ctrl_c_stops_a_long_reynolds_solve_from_inside_it():
     assert caught.value.results.statistics["rhs_evaluations"] <= 1
 
 
+def test_ctrl_c_stops_building_a_force_table():
+    # a reynolds_table on a 480 x 64 grid: 2 560 solves of 15 840 nodes, minutes to build when the model
+    # is compiled; SIGINT from a timer stops it from inside a solve (as in the test above)
+    import os
+    import signal
+    import threading
+
+    model = flores.build_model()
+    model.joint("B")["lubrication"] = laws.lubrication("reynolds_table", laws.centipoise(400),
+                                                       n_circumferential=480, n_axial=64)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt, match="compilation interrupted"):
+            model.compile()
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, previous)
+
+
 def test_an_exception_in_the_progress_callback_stops_the_run_and_is_raised():
     calls = []
 

@@ -116,7 +116,12 @@ fn compile_model(py: Python<'_>, spec_json: &str) -> PyResult<(Option<CoreModel>
         Ok(spec) => spec,
         Err(problems) => return Ok((None, Some(problems))),
     };
-    let compiled = py.detach(|| guarded(|| dynamics::compile(&spec)))?;
+    // (a force table is built here: thousands of Reynolds solves, which Ctrl-C stops from inside)
+    let progress = Progress::watched(WATCH_INTERVAL, |_| Python::attach(|py| py.check_signals().is_ok()));
+    let compiled = py.detach(|| progress.scope(|| guarded(|| dynamics::compile(&spec))))?;
+    if progress.is_cancelled() {
+        return Err(PyKeyboardInterrupt::new_err("compilation interrupted"));
+    }
     Ok(match compiled {
         Ok(model) => (Some(CoreModel { model: Arc::new(model) }), None),
         Err(errors) => (None, Some(errors.0.into_iter().map(|e| (e.location, e.message)).collect())),
