@@ -10,14 +10,13 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::{guarded, WATCH_INTERVAL};
-use jointplay_core::dynamics::Progress;
+use crate::{guarded, signal_watch};
 use pyo3::exceptions::PyKeyboardInterrupt;
 
-/// Runs `f` with the GIL released, letting pending signals run about every [`WATCH_INTERVAL`]
+/// Runs `f` with the GIL released, letting pending signals run about every [`crate::WATCH_INTERVAL`]
 /// from inside its Reynolds sweeps: Ctrl-C stops a long solve at once (`KeyboardInterrupt`).
 fn interruptible<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Send) -> PyResult<T> {
-    let progress = Progress::watched(WATCH_INTERVAL, |_| Python::attach(|py| py.check_signals().is_ok()));
+    let progress = signal_watch();
     let run = py.detach(|| progress.scope(|| guarded(f)))?;
     if progress.is_cancelled() {
         return Err(PyKeyboardInterrupt::new_err("Reynolds solve interrupted"));

@@ -38,6 +38,12 @@ struct CoreModel {
 /// Wall time between two calls back from a running simulation (progress, signals).
 pub(crate) const WATCH_INTERVAL: Duration = Duration::from_millis(100);
 
+/// A watcher for a long call outside a simulation (a force table, a bearing solve): every
+/// [`WATCH_INTERVAL`] it lets pending signals run, and Ctrl-C cancels it.
+pub(crate) fn signal_watch() -> Progress {
+    Progress::watched(WATCH_INTERVAL, |_| Python::attach(|py| py.check_signals().is_ok()))
+}
+
 /// One call back from a running simulation (GIL held): `progress(t)`, then pending signals.
 /// False stops the run; an exception other than `KeyboardInterrupt` is kept in `raised`
 /// (an interrupt becomes the run's `Interrupted` error, with the results kept).
@@ -117,7 +123,7 @@ fn compile_model(py: Python<'_>, spec_json: &str) -> PyResult<(Option<CoreModel>
         Err(problems) => return Ok((None, Some(problems))),
     };
     // (a force table is built here: thousands of Reynolds solves, which Ctrl-C stops from inside)
-    let progress = Progress::watched(WATCH_INTERVAL, |_| Python::attach(|py| py.check_signals().is_ok()));
+    let progress = signal_watch();
     let compiled = py.detach(|| progress.scope(|| guarded(|| dynamics::compile(&spec))))?;
     if progress.is_cancelled() {
         return Err(PyKeyboardInterrupt::new_err("compilation interrupted"));
