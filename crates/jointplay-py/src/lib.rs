@@ -197,7 +197,15 @@ impl CoreModel {
     fn equilibrium<'py>(&self, py: Python<'py>, t0: f64, force_tolerance: f64, max_iterations: usize) -> PyResult<Bound<'py, PyDict>> {
         let model = Arc::clone(&self.model);
         let options = dynamics::EquilibriumOptions { force_tolerance, max_iterations, ..Default::default() };
-        let result = py.detach(move || guarded(|| dynamics::equilibrium(&model, t0, &options, &mut Workspace::new(&model))))?;
+        let raised = Arc::new(Mutex::new(None));
+        let watched = {
+            let raised = Arc::clone(&raised);
+            Progress::watched(WATCH_INTERVAL, move |t| Python::attach(|py| poll(py, None, t, &raised)))
+        };
+        let result = py.detach(move || guarded(|| watched.scope(|| dynamics::equilibrium(&model, t0, &options, &mut Workspace::new(&model)))))?;
+        if let Some(error) = raised.lock().map_err(|_| PyRuntimeError::new_err("callback state poisoned"))?.take() {
+            return Err(error);
+        }
         let out = PyDict::new(py);
         match result {
             Ok(found) => {
@@ -249,11 +257,14 @@ impl CoreModel {
         let run = py.detach(|| {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
-                let mut state = if from_equilibrium {
-                    dynamics::equilibrium(&model, t0, &dynamics::EquilibriumOptions::default(), &mut ws)?.state
-                } else {
-                    dynamics::assemble(&model, t0, &mut ws)?
-                };
+                // (the start's Newton loops answer Ctrl-C too)
+                let mut state = watched.scope(|| {
+                    if from_equilibrium {
+                        dynamics::equilibrium(&model, t0, &dynamics::EquilibriumOptions::default(), &mut ws).map(|found| found.state)
+                    } else {
+                        dynamics::assemble(&model, t0, &mut ws)
+                    }
+                })?;
                 Ok(dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&*watched), sink))
             })
         })?;
