@@ -156,6 +156,50 @@ def test_ctrl_c_stops_a_run_and_keeps_what_was_computed():
     assert np.all(np.isfinite(error.results["B.fn"]))
 
 
+def test_ctrl_c_stops_a_long_reynolds_solve_from_inside_it():
+    # issue 32, item 5: a Reynolds grid within the node limit (480 x 256: 61 920 nodes on the half
+    # length) solves in seconds, and a dopri5 step of the lubricated slider-crank takes 8 such solves
+    # (measured: 32 s for the first step). Ctrl-C used to wait for the next sample, after that step;
+    # now every sweep reaches the check. A callback that interrupts at its first call (about 0.1 s
+    # into the run) stops the run inside the first evaluation: at t = 0, with no step taken.
+    model = flores.build_model()
+    model.joint("B")["lubrication"] = laws.lubrication("reynolds_exact", laws.centipoise(400),
+                                                       n_circumferential=480, n_axial=256)
+    calls = []
+
+    def interrupt(t):
+        calls.append(t)
+        raise KeyboardInterrupt
+
+    with pytest.raises(jp.SimulationError) as caught, pytest.warns(jp.JointplayWarning, match="480 x 256"):
+        model.simulate(flores.revolutions_to_time(1.0), progress=interrupt)
+    assert caught.value.kind == "Interrupted"
+    assert calls == [0.0] and caught.value.time == 0.0
+    assert caught.value.results.statistics["accepted_steps"] == 0
+    assert caught.value.results.statistics["rhs_evaluations"] <= 1
+
+
+def test_ctrl_c_stops_building_a_force_table():
+    # a reynolds_table on a 480 x 64 grid: 2 560 solves of 15 840 nodes, minutes to build when the model
+    # is compiled; SIGINT from a timer stops it from inside a solve (as in the test above)
+    import os
+    import signal
+    import threading
+
+    model = flores.build_model()
+    model.joint("B")["lubrication"] = laws.lubrication("reynolds_table", laws.centipoise(400),
+                                                       n_circumferential=480, n_axial=64)
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    timer = threading.Timer(0.3, os.kill, (os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt, match="compilation interrupted"):
+            model.compile()
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, previous)
+
+
 def test_an_exception_in_the_progress_callback_stops_the_run_and_is_raised():
     calls = []
 

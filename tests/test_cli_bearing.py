@@ -137,3 +137,20 @@ def test_chart_alone_needs_no_operating_point(tmp_path):
     assert result.exit_code == 0, result.output
     assert chart.stat().st_size > 10_000 and f"wrote {chart}" in result.output
 
+
+
+def test_the_bearing_tables_never_cut_a_number_in_a_narrow_terminal():
+    from typer.testing import CliRunner
+
+    from jointplay.cli import app
+
+    wide = CliRunner().invoke(app, ["bearing", "--l-over-d", "1", "--eccentricity", "0.6"], env={"COLUMNS": "200"})
+    assert wide.exit_code == 0
+    # (plain tables cut 14 cells with an ellipsis at 30 columns, 26 at 20)
+    for columns in ("40", "30", "20"):
+        narrow = CliRunner().invoke(app, ["bearing", "--l-over-d", "1", "--eccentricity", "0.6"],
+                                    env={"COLUMNS": columns})
+        assert narrow.exit_code == 0
+        assert "…" not in narrow.output
+        for value in ("0.1216", "50.53", "3.233", "4.331", "0.6811", "0.4126"):
+            assert value in wide.output and value in narrow.output

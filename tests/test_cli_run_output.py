@@ -50,11 +50,22 @@ def test_run_budget_option_refuses_a_grid_that_cannot_fit(tmp_path):
     assert "--max-output: must be a size such as" in bad.stderr
 
 
+def test_run_whose_bounded_steps_cannot_fit_the_budget_is_refused_before_it_starts(tmp_path):
+    # a sample at every step of at most 0.1 ms over 24 ms: at least 241 samples x 53 channels x 8 bytes
+    result = invoke("run", DRY, "-o", tmp_path / "r.nc", "--max-output", "100 kB", "-q")
+    assert result.exit_code == 2
+    assert ("simulation.max_output_bytes: the run would write at least 241 samples (one at every step, each of at "
+            "most 0.0001 s) x 53 channels x 8 bytes = 99.8 KiB, above max_output_bytes = 97.7 KiB") in \
+        " ".join(result.stderr.split())
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_run_stopped_by_the_budget_keeps_the_good_file(tmp_path):
     out = tmp_path / "r.nc"
     assert invoke("run", DRY, "-o", out, "--t-end", "1 ms", "-q").exit_code == 0
     before = out.read_bytes()
-    result = invoke("run", DRY, "-o", out, "--max-output", "100 kB", "-q")
+    # (steps of at most 0.1 ms over 24 ms: at least 241 samples, 102 kB, fit; the run's 1 800 steps do not)
+    result = invoke("run", DRY, "-o", out, "--max-output", "200 kB", "-q")
     assert result.exit_code == 1
     assert "simulation failed (OutputBudgetExceeded)" in result.stderr
     assert f"saved to {tmp_path / 'r.partial.nc'} ({out} left as it was)" in result.stderr.replace("\n", "")

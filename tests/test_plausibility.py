@@ -66,6 +66,66 @@ def test_a_bulk_modulus_in_the_wrong_unit_gives_a_warning():
     assert warned(["forces.lift.bulk_modulus=1 GPa"], boom) == []
 
 
+BOOM = ROOT / "examples" / "hydraulic_boom.toml"
+LUBRICATED = ROOT / "examples" / "flores_slider_crank_lubricated.toml"
+
+
+@pytest.mark.parametrize("override, message", [
+    ("joints.B.lubrication.viscosity=1e9 cP",
+     "joints.B.lubrication.viscosity: 1e+06 Pa s (1e+09 cP) is outside the range of lubricants (1e-05 Pa s for air to "
+     "100 Pa s for a cold heavy gear oil; engine oils 0.01-1 Pa s): check the units (1 cP = 1 mPa s)"),
+    ("joints.B.lubrication.viscosity=400 Pa s",  # "400 cP" in the wrong unit
+     "joints.B.lubrication.viscosity: 400 Pa s (4e+05 cP) is outside the range of lubricants (1e-05 Pa s for air to "
+     "100 Pa s for a cold heavy gear oil; engine oils 0.01-1 Pa s): check the units (1 cP = 1 mPa s)"),
+    ("joints.B.lubrication.viscosity=0.004 cP",
+     "joints.B.lubrication.viscosity: 4e-06 Pa s (0.004 cP) is outside the range of lubricants (1e-05 Pa s for air to "
+     "100 Pa s for a cold heavy gear oil; engine oils 0.01-1 Pa s): check the units (1 cP = 1 mPa s)"),
+])
+def test_a_viscosity_outside_the_range_of_lubricants_warns(override, message):
+    assert warned([override], LUBRICATED) == [message]
+
+
+def test_viscosities_of_real_lubricants_do_not_warn():
+    for viscosity in ("0.018 cP", "1 cP", "400 cP", "90 Pa s"):  # air, water, the example's oil, a cold gear oil
+        assert warned([f"joints.B.lubrication.viscosity={viscosity}"], LUBRICATED) == []
+
+
+@pytest.mark.parametrize("override, message", [
+    ("forces.lift.cap_pressure=18.118 GPa",  # "18.118 bar" in the wrong unit
+     "forces.lift.cap_pressure: 1.81e+04 MPa (1.81e+05 bar) is far above the rating of any hydraulic system "
+     "(industrial hydraulics: 35-70 MPa): check the units"),
+    ("forces.lift.rod_pressure=1000 MPa",
+     "forces.lift.rod_pressure: 1e+03 MPa (1e+04 bar) is far above the rating of any hydraulic system "
+     "(industrial hydraulics: 35-70 MPa): check the units"),
+    ("forces.lift.second=ground.O",  # the cylinder from ground point C to ground point O
+     "forces.lift.second: ground.O is on the ground, like the first end ground.C: the element's length never "
+     "changes and its force acts on nothing; attach one end to a moving body"),
+])
+def test_an_implausible_hydraulic_cylinder_warns(override, message):
+    assert warned([override], BOOM) == [message]
+
+
+def test_chamber_pressures_of_real_hydraulics_do_not_warn():
+    assert warned(["forces.lift.cap_pressure=700 bar", "forces.lift.rod_pressure=100 MPa"], BOOM) == []
+
+
+def test_a_lubricant_supply_far_above_any_rating_warns():
+    text = LUBRICATED.read_text(encoding="utf-8")
+    model = jp.load(LUBRICATED, ['joints.B.lubrication.model=reynolds_exact',
+                                 'joints.B.lubrication.groove_supply_pressure=3000 bar'], check=False)
+    assert [str(p) for p in plausibility(model.to_spec())] == [
+        "joints.B.lubrication.groove_supply_pressure: 300 MPa (3e+03 bar) is far above the rating of any hydraulic "
+        "system (industrial hydraulics: 35-70 MPa): check the units"]
+    assert "groove_supply_pressure" not in text
+
+
+def test_a_spring_within_one_body_warns():
+    assert warned(['forces.inner={ type = "spring_damper", first = "rod.A", second = "rod.B", stiffness = "100 N/m", '
+                   'free_length = "170 mm" }']) == [
+        "forces.inner.second: rod.B is on the body rod, like the first end rod.A: the element's length never changes "
+        "and its force acts on nothing; attach one end to a moving body"]
+
+
 def test_springs_far_from_the_other_springs_warn_but_not_against_contacts():
     assert warned(SPRINGS) == ["forces.hard.stiffness: 1e+09 N/m is 1e+07 times the typical value of the springs "
                                "(100 N/m): check the units"]

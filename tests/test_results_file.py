@@ -434,3 +434,57 @@ def test_ctrl_c_during_a_streamed_run_keeps_what_was_computed(tmp_path):
     partial = open_results(tmp_path / "long.partial.nc")
     assert len(partial) > 1000 and np.all(np.diff(partial.time) > 0), "every sample once, in order"
     assert partial.extrema["channels"]["B.fn"]["peak"] > 4e4, "the summary of what was computed is kept"
+
+
+# SIGTERM and killed runs (issue 32, item 5) -------------------------------------
+
+# a long streamed run: prints "started" once its temporary file exists, then runs for minutes
+TERMINATED = """
+import sys, time
+from pathlib import Path
+import jointplay as jp
+m = jp.load(sys.argv[1])
+out = Path(sys.argv[2])
+def progress(t):
+    if any(p.name.endswith(".tmp") for p in out.parent.iterdir()):
+        print("started", flush=True)
+m.simulate(1000.0, output_file=out, progress=progress)
+"""
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="SIGTERM ends a Windows process without a handler")
+def test_sigterm_stops_a_streamed_run_and_removes_its_temporary_file(tmp_path):
+    # SIGTERM (kill, a batch system's time limit) used to end the process at once and leave the
+    # hidden temporary file (500 MB after a long run); now the run stops within its watch interval,
+    # the temporary file is removed and the process exits with 143 (128 + SIGTERM)
+    import signal
+    import subprocess
+
+    out = tmp_path / "long.nc"
+    process = subprocess.Popen([sys.executable, "-c", TERMINATED, str(DRY), str(out)], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    try:
+        assert process.stdout.readline().strip() == "started", process.stderr.read()
+        process.send_signal(signal.SIGTERM)
+        status = process.wait(timeout=60)
+    finally:
+        process.kill()
+    assert status == resultsfile.TERMINATED_STATUS == 143
+    assert leftovers(tmp_path) == [] and not out.exists()
+
+
+def test_temporary_files_of_killed_runs_are_removed_by_the_next_run(tmp_path, dry_model):
+    # SIGKILL cannot be caught: the next run on the same path removes what a writer whose process is
+    # gone left, and leaves the temporaries of live writers (this process) and of other paths alone
+    import subprocess
+
+    gone = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True,
+                          check=True).stdout.strip()
+    stale = tmp_path / f".run.nc.{gone}-0123abcd.tmp"
+    live = resultsfile.temporary_path(tmp_path / "run.nc")
+    other = tmp_path / f".other.nc.{gone}-0123abcd.tmp"
+    for p in (stale, live, other):
+        p.write_bytes(b"partial")
+    dry_model.simulate(1e-4, output_file=tmp_path / "run.nc")
+    assert leftovers(tmp_path) == sorted([live.name, other.name])
+    assert (tmp_path / "run.nc").exists()

@@ -22,6 +22,7 @@ from rich.table import Table
 from . import bearing as _bearing
 from . import parameters as p
 from ._core import MAX_REYNOLDS_GRID_NODES
+from .display import print_table, table
 
 _GRID = f"{p.REYNOLDS_GRID[0]}x{p.REYNOLDS_GRID[1]}"
 from .cli import EXIT_BAD_INPUT, app, err, out
@@ -203,7 +204,7 @@ def _fmt(value: float, scale: float = 1.0) -> str:
 
 def _table(p: _bearing.SteadyBearing) -> Table:
     """The dimensionless operating point (Raimondi and Boyd's variables)."""
-    t = Table("quantity", "symbol", "value",
+    t = table("quantity", "symbol", "value",
               title=f"full journal bearing, L/D = {p.length_over_diameter:g} (Raimondi-Boyd conditions)")
     t.add_row("eccentricity ratio", "eps = e/c", _fmt(p.eccentricity_ratio))
     t.add_row("attitude angle (deg)", "phi", _fmt(math.degrees(p.attitude_angle)))
@@ -220,7 +221,7 @@ def _table(p: _bearing.SteadyBearing) -> Table:
 
 def _dimensional_table(p: _bearing.SteadyBearing) -> Table:
     """The same point for the bearing given (SI values shown in engineering units)."""
-    t = Table("quantity", "symbol", "value", "unit", title="dimensional")
+    t = table("quantity", "symbol", "value", "unit", title="dimensional")
     rows = [
         ("load", "W", p.load, 1e-3, "kN"),
         ("mean pressure", "P = W/(L D)", p.mean_pressure, 1e-6, "MPa"),
@@ -279,9 +280,9 @@ def bearing(
     except ValueError as exc:  # a load outside the range of eccentricity ratios solved
         message = str(exc)
         raise _bad_options([f"--load: {message}" if message.startswith("load ") else message]) from None
-    out.print(_table(point))
+    print_table(out, _table(point))
     if point.load is not None:
-        out.print(_dimensional_table(point))
+        print_table(out, _dimensional_table(point))
     if chart is not None:
         _bearing.chart(inputs.length_over_diameter, chart, n_circumferential=n_t, n_axial=n_a)
         out.print(f"wrote {chart}")

@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from . import _core, resultsfile
+from . import _core, resultsfile, runcost
 from . import parameters as p
 from .errors import ModelError, SimulationError
 from .functions import as_function
@@ -408,12 +408,14 @@ class Model:
         emit(_flexible_advice(spec_snapshot, options))
         emit(_alpha_advice(options))
         emit(_modal_spin_advice(spec_snapshot, self.compile().modal_bending_frequencies()))
+        emit(runcost.reynolds_cost(spec_snapshot, options, t0, float(t_end)))
         kind = resultsfile.output_target(output_file) if output_file is not None else None
         options["max_output_bytes"] = resultsfile.budget_option(max_output_bytes, kind == "netcdf")
         core = self.compile()
         channels = core.describe()
+        longest_step = options.get("step") if options["method"] == "generalized_alpha" else options.get("max_step")
         too_large = resultsfile.check_budget(t0, t_end, options["output_step"], len(channels["names"]),
-                                             options["max_output_bytes"])
+                                             options["max_output_bytes"], longest_step)
         if too_large:
             raise ModelError([("simulation.max_output_bytes", too_large)])
         if options["formulation"] == "joint_coordinates" and channels.get("joint_coordinates") is None:
@@ -437,6 +439,7 @@ class Model:
             results = make_results(raw)
             if kind == "csv":
                 results.save(output_file if raw["error"] is None else resultsfile.partial_path(output_file))
+        emit(_projection_advice(options, raw.get("diagnostics") or {}))
         emit(_assembly_problems(raw.get("assembly_notes", []), spec_snapshot))
         if raw["error"] is not None:
             raise SimulationError(raw["error"], results=results, stage=raw.get("stage", "integration"))
@@ -535,6 +538,30 @@ def _flexible_advice(spec: dict, options: dict) -> list:
     return advice
 
 
+def _projection_advice(options: dict, diagnostics: dict) -> list:
+    """Warnings after a run whose constraint projection could not work to a tenth of atol
+    (docs/theory/planar-formulation.md, "Projection tolerance"): an atol below the round-off of the
+    coordinates, or a singular position where Newton on the joints stalled above atol."""
+    from .errors import Problem
+
+    tolerance, left = diagnostics.get("projection_tolerance"), diagnostics.get("max_projection_residual", 0.0)
+    atol = options.get("atol")
+    if not tolerance or not left or not atol:  # no projection in this run, or atol 0 (rtol rules)
+        return []
+    advice = []
+    if tolerance > _core.PROJECTION_SHARE * atol * (1 + 1e-12):
+        advice.append(Problem("simulation.atol", f"{atol:g} asks the constraint projection for residuals below "
+                                                 f"{_core.PROJECTION_SHARE * atol:g} m, under the round-off of the "
+                                                 f"coordinates; it works to {tolerance:g} m, so the joints are not "
+                                                 "held to atol"))
+    if left > max(atol, tolerance):
+        advice.append(Problem("simulation.atol", f"the constraint projection left joint residuals up to {left:.2g} m "
+                                                 f"(at t = {diagnostics.get('max_projection_residual_time', math.nan):.6g}"
+                                                 f" s: a singular position, where Newton on the joints stalls), above "
+                                                 f"atol = {atol:g}: the requested accuracy was not met there"))
+    return advice
+
+
 def _alpha_advice(options: dict) -> list:
     """A warning when ``step`` is given to a method that controls its own step, and when generalized-alpha's
     output step is not a whole number of its steps: its samples are step ends
@@ -602,18 +629,32 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
 def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None,
          sink: Callable[[np.ndarray, np.ndarray, int], None] | None = None) -> dict:
     """Runs the core in this thread with the GIL released. About ten times a second the core calls
-    ``progress`` and lets pending signals run: on Ctrl-C the run stops at the next sample and what
-    was computed is kept (the error says it was interrupted). With ``sink`` the samples go to
+    ``progress`` and lets pending signals run: on Ctrl-C the run stops within about that time (every
+    evaluation and every Reynolds sweep reach the check) and what was computed is kept (the error says it
+    was interrupted). A run whose pace projects more than an hour to its end is warned of
+    (:class:`runcost.Pace`). With ``sink`` the samples go to
     ``sink(times, values, start)`` in chunks instead of being returned (``start``: index of the first
     sample; a chunk interrupted by Ctrl-C is handed over again with the same ``start``)."""
     last: list[float] = []  # time of the last sample recorded [s], once there is one
+    written = [0]  # samples handed to the sink
+    # the pace of the run, projected to its end (runcost.Pace): with a sample at every step to a file, its size too
+    pace = runcost.Pace(t0, t_end, samples_written=(lambda: written[0]) if sink is not None else None,
+                        budget=options.get("max_output_bytes"))
 
     def forward(times: np.ndarray, values: np.ndarray, start: int) -> None:
         sink(times, values, start)
         last[:] = [float(times[-1])]
+        written[0] = start + len(times)
+        if options.get("output_step") is None:
+            pace.bytes_per_sample = 8 * values.shape[1]
+
+    def watch(t: float) -> None:
+        if progress is not None:
+            progress(t)
+        pace(t)
 
     try:
-        raw = core.simulate(t0, t_end, options, progress, None if sink is None else forward,
+        raw = core.simulate(t0, t_end, options, watch, None if sink is None else forward,
                             options.get("initial") == "equilibrium")
     except ValueError as exc:  # an option the core refuses that the checks before it missed: still located
         from .options import core_refusal

@@ -16,6 +16,7 @@ channels write in about a second (``benches/bench_results_file.py``).
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
 import queue
@@ -101,6 +102,65 @@ def temporary_path(path: str | os.PathLike) -> Path:
     """A fresh hidden name in the folder of ``path``, unique to this writer."""
     path = Path(path)
     return path.with_name(f".{path.name}.{os.getpid()}-{secrets.token_hex(4)}.tmp")
+
+
+#: Exit status of a run stopped by SIGTERM while it wrote a file (128 + 15, as a shell reports it).
+TERMINATED_STATUS = 143
+
+
+@contextlib.contextmanager
+def terminate_as_exit():
+    """While a file is written: SIGTERM (``kill``, a batch system's time limit) raises
+    ``SystemExit(143)`` in the main thread instead of ending the process at once, so that the writer
+    removes its temporary file on the way out (a running simulation sees it within its watch interval).
+    Nothing changes outside the main thread or when the program has a SIGTERM handler of its own."""
+    import signal
+
+    if threading.current_thread() is not threading.main_thread() or signal.getsignal(signal.SIGTERM) != signal.SIG_DFL:
+        yield
+        return
+
+    def terminate(_signum, _frame):
+        raise SystemExit(TERMINATED_STATUS)
+
+    previous = signal.signal(signal.SIGTERM, terminate)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def remove_stale_temporaries(path: str | os.PathLike) -> list[Path]:
+    """Removes the temporary files of ``path`` (hidden ``.NAME.PID-XXXXXXXX.tmp`` beside it, see
+    :func:`temporary_path`) whose writing process is gone: killed with SIGKILL, or the machine stopped.
+    Returns what was removed."""
+    path = Path(path)
+    pattern = re.compile(rf"^\.{re.escape(path.name)}\.(\d+)-[0-9a-f]{{8}}\.tmp$")
+    try:
+        entries = list(path.parent.iterdir())
+    except OSError:
+        return []
+    removed = []
+    for entry in entries:
+        match = pattern.match(entry.name)
+        if match and not _process_alive(int(match.group(1))):
+            with contextlib.suppress(OSError):
+                entry.unlink()
+                removed.append(entry)
+    return removed
+
+
+def _process_alive(pid: int) -> bool:
+    """Whether a process ``pid`` exists (True when that cannot be told)."""
+    if pid == os.getpid() or os.name != "posix":
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True
+    return True
 
 
 def output_kind(path: str | os.PathLike) -> str:
@@ -452,17 +512,26 @@ def _plain(value: Any) -> Any:
     return value
 
 
-def check_budget(t0: float, t_end: float, output_step: float | None, n_channels: int, budget: int) -> str | None:
+def check_budget(t0: float, t_end: float, output_step: float | None, n_channels: int, budget: int,
+                 longest_step: float | None = None) -> str | None:
     """A message when a run on the regular grid ``output_step`` would write more than ``budget`` bytes
-    (``(t_end - t0) / output_step + 1`` samples x channels x 8 bytes); None when it fits or the sample
-    count is not known before the run (output at every step: checked while it goes)."""
-    if output_step is None:
+    (``(t_end - t0) / output_step + 1`` samples x channels x 8 bytes), or a run with a sample at every
+    step at least that (steps of at most ``longest_step``: ``max_step``, or generalized-alpha's ``step``);
+    None when it fits or the sample count has no bound before the run (then the run stops when it reaches
+    the budget, and its pace is projected while it goes)."""
+    if output_step is None and longest_step is None:
         return None
-    samples = math.ceil((t_end - t0) / output_step) + 1  # the grid points before t_end, and t_end
+    spacing = output_step if output_step is not None else longest_step
+    samples = math.ceil((t_end - t0) / spacing) + 1  # the grid points (or shortest steps) before t_end, and t_end
     size = samples * n_channels * 8
     if size <= budget:
         return None
     count = f"{samples}" if samples < 10**12 else f"{samples:.3g}"
+    if output_step is None:
+        return (f"the run would write at least {count} samples (one at every step, each of at most "
+                f"{longest_step:g} s) x {n_channels} channels x 8 bytes = {format_size(size)}, above "
+                f"max_output_bytes = {format_size(budget)}; set an output_step, raise max_output_bytes or "
+                "shorten t_end")
     return (f"the run would write {count} samples x {n_channels} channels x 8 bytes = {format_size(size)}, "
             f"above max_output_bytes = {format_size(budget)}; raise max_output_bytes, set a coarser output_step "
             "or a shorter t_end")
@@ -477,12 +546,13 @@ def write_csv(results, path: str | os.PathLike) -> Path:
     """Writes ``time`` and one column per channel to a CSV file, header ``name [unit]``, block after
     block (a file-backed ``results`` is never read whole); temporary name, then renamed into place."""
     path = Path(path)
+    remove_stale_temporaries(path)
     temporary = temporary_path(path)
     names = results.channels
     header = ",".join(["time [s]", *(f"{name} [{results.unit(name)}]" for name in names)])
     block = rows_per_block(len(names))
     try:
-        with open(temporary, "w", encoding="utf-8", newline="") as f:
+        with terminate_as_exit(), open(temporary, "w", encoding="utf-8", newline="") as f:
             f.write(header + "\n")
             for start in range(0, len(results), block):
                 stop = min(len(results), start + block)
@@ -513,15 +583,18 @@ def stream_run(path: str | os.PathLike, channels: dict, run, make_results):
     """Runs ``run(sink)`` with a :class:`ResultsWriter` on ``path`` as its sink and returns
     ``(results, raw)``: ``make_results(raw)`` with its channels read from the finished file (``path``,
     or :func:`partial_path` when the run stopped early). Any exception (from the run, the sink or an
-    interrupt) removes the temporary file and leaves ``path`` as it was."""
-    writer = ResultsWriter(path, channels["names"], channels["units"], channels["descriptions"])
-    try:
-        raw = run(writer.append)
-        results = make_results(raw)
-        results.time = writer.times()
-        target = writer.finish(results.file_attributes(), complete=raw["error"] is None)
-    except BaseException:
-        writer.abort()
-        raise
+    interrupt) removes the temporary file and leaves ``path`` as it was; so does SIGTERM
+    (:func:`terminate_as_exit`). Temporary files of ``path`` left by killed runs are removed first."""
+    remove_stale_temporaries(path)
+    with terminate_as_exit():
+        writer = ResultsWriter(path, channels["names"], channels["units"], channels["descriptions"])
+        try:
+            raw = run(writer.append)
+            results = make_results(raw)
+            results.time = writer.times()
+            target = writer.finish(results.file_attributes(), complete=raw["error"] is None)
+        except BaseException:
+            writer.abort()
+            raise
     results.read_from(target)
     return results, raw

@@ -239,3 +239,27 @@ def test_first_impact_converges_with_tolerance():
     b = first_impact(simulate_reference(P, t_end=t_end, rtol=1e-9, atol=1e-12))
     assert a["time"] == pytest.approx(b["time"], rel=1e-7)
     assert a["peak_contact_force"] == pytest.approx(b["peak_contact_force"], rel=1e-2)
+
+
+@pytest.mark.parametrize("rtol, atol, column", [(1e-6, 1e-9, 0), (1e-9, 1e-12, 1)])
+def test_the_documented_numbers_are_what_the_reference_gives(rtol, atol, column, default_run):
+    """docs/theory/reference-slider-crank.md, "Observed numbers": each row of its table, as printed there."""
+    from pathlib import Path
+
+    page = (Path(__file__).resolve().parents[2] / "docs" / "theory" / "reference-slider-crank.md").read_text()
+    rows = {}
+    for line in page.split("## Observed numbers")[1].splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 3:
+            rows[cells[0]] = cells[1 + column]
+    r = default_run if column == 0 else simulate_reference(P, rtol=rtol, atol=atol)
+    fi = first_impact(r)
+    assert float(rows["first onset"].split()[0]) == pytest.approx(fi["time"], abs=5e-10)
+    assert rows["onset velocity"] == f"{r.onset_velocities[0]:.3f} m/s"
+    assert rows["first-impact peak F_n"] == f"{fi['peak_contact_force'] / 1e3:.2f} kN"
+    assert rows["contact fraction"] == f"{contact_fraction(r):.3f}"
+    assert rows["impacts"] == str(len(r.impacts))
+    documented_nfev, documented_steps = (int(x.replace(" ", "")) for x in rows["nfev / accepted steps"].split("/"))
+    # (the step counts depend on SciPy's version: a few per mille)
+    assert r.nfev == pytest.approx(documented_nfev, rel=0.01)
+    assert r.n_steps == pytest.approx(documented_steps, rel=0.01)

@@ -36,6 +36,7 @@ pub mod force;
 pub mod friction;
 pub mod hydraulic;
 pub mod integrate;
+pub mod interrupt;
 pub mod joint;
 pub mod linalg;
 pub mod lubrication;

@@ -10,7 +10,19 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use crate::guarded;
+use crate::{guarded, signal_watch};
+use pyo3::exceptions::PyKeyboardInterrupt;
+
+/// Runs `f` with the GIL released, letting pending signals run about every [`crate::WATCH_INTERVAL`]
+/// from inside its Reynolds sweeps: Ctrl-C stops a long solve at once (`KeyboardInterrupt`).
+fn interruptible<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Send) -> PyResult<T> {
+    let progress = signal_watch();
+    let run = py.detach(|| progress.scope(|| guarded(f)))?;
+    if progress.is_cancelled() {
+        return Err(PyKeyboardInterrupt::new_err("Reynolds solve interrupted"));
+    }
+    run.map_err(PyValueError::new_err)
+}
 
 /// Module constants: the size bounds of the core, so that Python checks its
 /// options against the same numbers.
@@ -59,14 +71,11 @@ pub fn reynolds_solve<'py>(
         journal_spin,
         bearing_spin,
     };
-    let run = py.detach(|| {
-        guarded(|| {
-            let mut solver = ReynoldsSolver::new(geometry, o)?;
-            let sol = solver.solve(&kin)?;
-            Ok::<_, String>((solver, sol))
-        })
+    let (solver, sol) = interruptible(py, || {
+        let mut solver = ReynoldsSolver::new(geometry, o)?;
+        let sol = solver.solve(&kin)?;
+        Ok::<_, String>((solver, sol))
     })?;
-    let (solver, sol) = run.map_err(PyValueError::new_err)?;
     let (n_theta, n_half) = solver.field_shape();
     let d = PyDict::new(py);
     d.set_item("force_on_journal", (sol.force_on_journal.x, sol.force_on_journal.y))?;
@@ -108,14 +117,11 @@ pub fn steady_bearing<'py>(
         (Some(r), Some(c), Some(mu)) => Some(BearingGeometry { radius: r, length: 2.0 * r * length_over_diameter, clearance: c, viscosity: mu }),
         _ => None,
     };
-    let run = py.detach(|| {
-        guarded(|| match (eccentricity_ratio, load, geometry, speed) {
-            (Some(eps), None, _, _) => steady::steady_at_eccentricity(length_over_diameter, eps, &o),
-            (None, Some(w), Some(g), Some(n)) => steady::steady_for_load(w, &g, n, &o),
-            _ => Err("give either eccentricity_ratio, or load with radius, clearance, viscosity and speed".to_string()),
-        })
+    let point = interruptible(py, || match (eccentricity_ratio, load, geometry, speed) {
+        (Some(eps), None, _, _) => steady::steady_at_eccentricity(length_over_diameter, eps, &o),
+        (None, Some(w), Some(g), Some(n)) => steady::steady_for_load(w, &g, n, &o),
+        _ => Err("give either eccentricity_ratio, or load with radius, clearance, viscosity and speed".to_string()),
     })?;
-    let point = run.map_err(PyValueError::new_err)?;
     let d = PyDict::new(py);
     put_point(&d, &point)?;
     if let (Some(g), Some(n)) = (geometry, speed) {

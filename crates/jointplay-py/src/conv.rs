@@ -59,7 +59,7 @@ pub fn simulation_options(d: &Bound<'_, PyDict>) -> PyResult<SimulationOptions> 
         o.max_output_bytes = Some(v.extract()?);
     }
     if let Some(v) = get("position_tolerance")? {
-        o.position_tolerance = v;
+        o.position_tolerance = Some(v);
     }
     if let Some(s) = d.get_item("stabilization")? {
         o.stabilization = match s.extract::<String>()?.as_str() {
@@ -134,6 +134,9 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
     diag.set_item("max_penetration", g.max_penetration)?;
     diag.set_item("deep_penetration_steps", g.deep_penetration_steps)?;
     diag.set_item("max_projection_iterations", g.max_projection_iterations)?;
+    diag.set_item("max_projection_residual", g.max_projection_residual)?;
+    diag.set_item("max_projection_residual_time", g.max_projection_residual_time)?;
+    diag.set_item("projection_tolerance", g.projection_tolerance)?;
     diag.set_item("impacts", g.impacts.clone())?;
     out.set_item("diagnostics", diag)?;
     out.set_item("extrema", extrema(py, &o.extrema)?)?;

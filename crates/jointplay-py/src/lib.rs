@@ -36,7 +36,13 @@ struct CoreModel {
 }
 
 /// Wall time between two calls back from a running simulation (progress, signals).
-const WATCH_INTERVAL: Duration = Duration::from_millis(100);
+pub(crate) const WATCH_INTERVAL: Duration = Duration::from_millis(100);
+
+/// A watcher for a long call outside a simulation (a force table, a bearing solve): every
+/// [`WATCH_INTERVAL`] it lets pending signals run, and Ctrl-C cancels it.
+pub(crate) fn signal_watch() -> Progress {
+    Progress::watched(WATCH_INTERVAL, |_| Python::attach(|py| py.check_signals().is_ok()))
+}
 
 /// One call back from a running simulation (GIL held): `progress(t)`, then pending signals.
 /// False stops the run; an exception other than `KeyboardInterrupt` is kept in `raised`
@@ -116,7 +122,12 @@ fn compile_model(py: Python<'_>, spec_json: &str) -> PyResult<(Option<CoreModel>
         Ok(spec) => spec,
         Err(problems) => return Ok((None, Some(problems))),
     };
-    let compiled = py.detach(|| guarded(|| dynamics::compile(&spec)))?;
+    // (a force table is built here: thousands of Reynolds solves, which Ctrl-C stops from inside)
+    let progress = signal_watch();
+    let compiled = py.detach(|| progress.scope(|| guarded(|| dynamics::compile(&spec))))?;
+    if progress.is_cancelled() {
+        return Err(PyKeyboardInterrupt::new_err("compilation interrupted"));
+    }
     Ok(match compiled {
         Ok(model) => (Some(CoreModel { model: Arc::new(model) }), None),
         Err(errors) => (None, Some(errors.0.into_iter().map(|e| (e.location, e.message)).collect())),
@@ -188,7 +199,15 @@ impl CoreModel {
     fn equilibrium<'py>(&self, py: Python<'py>, t0: f64, force_tolerance: f64, max_iterations: usize) -> PyResult<Bound<'py, PyDict>> {
         let model = Arc::clone(&self.model);
         let options = dynamics::EquilibriumOptions { force_tolerance, max_iterations, ..Default::default() };
-        let result = py.detach(move || guarded(|| dynamics::equilibrium(&model, t0, &options, &mut Workspace::new(&model))))?;
+        let raised = Arc::new(Mutex::new(None));
+        let watched = {
+            let raised = Arc::clone(&raised);
+            Progress::watched(WATCH_INTERVAL, move |t| Python::attach(|py| poll(py, None, t, &raised)))
+        };
+        let result = py.detach(move || guarded(|| watched.scope(|| dynamics::equilibrium(&model, t0, &options, &mut Workspace::new(&model)))))?;
+        if let Some(error) = raised.lock().map_err(|_| PyRuntimeError::new_err("callback state poisoned"))?.take() {
+            return Err(error);
+        }
         let out = PyDict::new(py);
         match result {
             Ok(found) => {
@@ -206,8 +225,9 @@ impl CoreModel {
 
     /// Assembles at `t0` and simulates to `t_end` in the calling thread with the GIL released.
     /// About every [`WATCH_INTERVAL`] the core takes the GIL back for a moment: it calls
-    /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run at
-    /// the next sample with what was computed kept. An exception raised by `progress` also
+    /// `progress(t)` (if given) and lets pending signals run, so that Ctrl-C stops the run within
+    /// about that interval (its check is reached from every evaluation and every Reynolds sweep),
+    /// with what was computed kept. An exception raised by `progress` also
     /// stops the run and is raised here. With `sink`, the samples go to `sink(times, values, start)`
     /// in chunks of about 4 MiB while the run goes on (see [`PythonSink`]) and the returned
     /// `time` and `values` are empty; an exception in `sink` stops the run and is raised here.
@@ -239,11 +259,14 @@ impl CoreModel {
         let run = py.detach(|| {
             guarded(|| {
                 let mut ws = Workspace::new(&model);
-                let mut state = if from_equilibrium {
-                    dynamics::equilibrium(&model, t0, &dynamics::EquilibriumOptions::default(), &mut ws)?.state
-                } else {
-                    dynamics::assemble(&model, t0, &mut ws)?
-                };
+                // (the start's Newton loops answer Ctrl-C too)
+                let mut state = watched.scope(|| {
+                    if from_equilibrium {
+                        dynamics::equilibrium(&model, t0, &dynamics::EquilibriumOptions::default(), &mut ws).map(|found| found.state)
+                    } else {
+                        dynamics::assemble(&model, t0, &mut ws)
+                    }
+                })?;
                 // (an equilibrium start moves the bodies on purpose: nothing to note)
                 let notes = if from_equilibrium { Vec::new() } else { dynamics::assembly_notes(&model, t0, state.coordinates(), &mut ws) };
                 Ok((dynamics::simulate_with_sink(&model, &mut state, t_end, &options, Some(&*watched), sink), notes))
@@ -281,6 +304,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(bearing::steady_bearing, m)?)?;
     bearing::add_constants(m)?;
     m.add("MAX_STRUCTURE_NODES", jointplay_core::body::MAX_STRUCTURE_NODES)?;
+    m.add("PROJECTION_SHARE", dynamics::PROJECTION_SHARE)?;
+    m.add("PROJECTION_FLOOR", dynamics::PROJECTION_FLOOR)?;
+    m.add("PROJECTION_CEILING", dynamics::PROJECTION_CEILING)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -37,6 +37,16 @@ warning almost always means a slip:
   a soft return spring beside a steel contact is normal);
 - an onset-velocity floor above the speeds of the model (the floor is meant
   for grazing contacts, far below impact speeds);
+- a lubricant viscosity outside [1e-5, 100] Pa s (air, 0.018 cP, to a cold
+  heavy gear oil, 1e5 cP; engine oils are 10-1000 cP): "400 Pa s" for
+  "400 cP" is a slip of 1000, and a film 1000 times too viscous makes the
+  run very stiff and slow;
+- a pressure above 100 MPa (1000 bar) in a hydraulic chamber at the start
+  or in a lubricant supply: industrial hydraulics are rated to 35-70 MPa, and
+  a MPa/GPa or bar/kPa slip is a factor of 1000 (10 to 100);
+- a force element between two points of one body, or of the ground (a
+  hydraulic cylinder from ground to ground): its force acts on nothing, and
+  its length never changes;
 - a body farther than 100 L from the middle (median) of the bodies and ground
   points;
 - nothing that moves the mechanism (no driver, force, gravity or velocity).
@@ -63,6 +73,8 @@ YOUNGS_RANGE = (1e6, 1.2e12)  # [Pa]
 DENSITY_RANGE = (10.0, 25e3)  # [kg/m^3]
 SLENDERNESS = 2.0
 BULK_MODULUS_RANGE = (1e7, 5e9)  # [Pa]
+VISCOSITY_RANGE = (1e-5, 100.0)  # [Pa s]
+PRESSURE_CEILING = 100e6  # [Pa]
 
 
 def plausibility(spec: dict) -> list[Problem]:
@@ -76,6 +88,9 @@ def plausibility(spec: dict) -> list[Problem]:
     problems += _materials(spec)
     problems += _beams(spec)
     problems += _liquids(spec)
+    problems += _lubricants(spec)
+    problems += _pressures(spec)
+    problems += _idle_forces(spec)
     problems += _stiffnesses(spec)
     problems += _onset_floors(spec, size)
     problems += _far_bodies(spec, size)
@@ -210,6 +225,48 @@ def _liquids(spec: dict) -> list[Problem]:
             out.append(Problem(join("forces", force["name"], "bulk_modulus"),
                                f"{beta:.3g} Pa is outside the range of hydraulic liquids (10 MPa with much entrained "
                                "air to 5 GPa; mineral oil 1.5-1.8 GPa): check the units"))
+    return out
+
+
+def _lubricants(spec: dict) -> list[Problem]:
+    low, high = VISCOSITY_RANGE
+    out = []
+    for joint in _clearance_joints(spec):
+        mu = (joint.get("lubrication") or {}).get("viscosity")
+        if mu is not None and not low <= mu <= high:
+            out.append(Problem(join("joints", joint["name"], "lubrication", "viscosity"),
+                               f"{mu:.3g} Pa s ({mu * 1e3:.3g} cP) is outside the range of lubricants (1e-05 Pa s for "
+                               "air to 100 Pa s for a cold heavy gear oil; engine oils 0.01-1 Pa s): check the units "
+                               "(1 cP = 1 mPa s)"))
+    return out
+
+
+def _pressures(spec: dict) -> list[Problem]:
+    """Chamber pressures at the start and lubricant supply pressures above :data:`PRESSURE_CEILING`."""
+    found = [(join("forces", f["name"], key), f.get(key)) for f in spec["forces"]
+             if f.get("type") == "hydraulic_cylinder" for key in ("cap_pressure", "rod_pressure")]
+    for joint in _clearance_joints(spec):
+        reynolds = (joint.get("lubrication") or {}).get("reynolds") or {}
+        found += [(join("joints", joint["name"], "lubrication", key), reynolds.get(key))
+                  for key in ("ambient_pressure", "groove_supply_pressure")]
+    return [Problem(where, f"{value / 1e6:.3g} MPa ({value / 1e5:.3g} bar) is far above the rating of any hydraulic "
+                           "system (industrial hydraulics: 35-70 MPa): check the units")
+            for where, value in found if value is not None and value > PRESSURE_CEILING]
+
+
+def _idle_forces(spec: dict) -> list[Problem]:
+    """Two-point force elements whose ends are on one body (or both on the ground)."""
+    out = []
+    for force in spec["forces"]:
+        first, second = force.get("first"), force.get("second")
+        if not (isinstance(first, str) and isinstance(second, str)):
+            continue
+        body = first.split(".")[0]
+        if body == second.split(".")[0]:
+            what = "the ground" if body == "ground" else f"the body {body}"
+            out.append(Problem(join("forces", force["name"], "second"),
+                               f"{second} is on {what}, like the first end {first}: the element's length never "
+                               "changes and its force acts on nothing; attach one end to a moving body"))
     return out
 
 

@@ -231,6 +231,9 @@ fn newton(problem: &mut Statics<'_>, mut x: DVector<f64>, options: &EquilibriumO
     let load = problem.load_scale;
     let mut f = problem.residual(&x, ws)?;
     for iteration in 0..=allowed {
+        if !crate::interrupt::keep_going() {
+            return Err(SimulationError::Interrupted { time: problem.t });
+        }
         let (force, constraint) = (f.rows(0, n).amax(), f.rows(n, rows).amax());
         if force <= options.force_tolerance * load && constraint <= options.constraint_tolerance {
             return Ok(Newton::Converged { x, iterations: iteration });
@@ -477,5 +480,30 @@ fn unbalanced(model: &Model, t: f64, left: &DVector<f64>, n: usize) -> Simulatio
         cause: format!(
             "an unbalanced load of {force:.4e} N (or N m) on it that no joint, driver or stiffness carries: a body free to move under gravity or a load, or a mechanism whose degree of freedom no spring or driver holds"
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::interrupt::{scoped, Watch};
+    use std::sync::Arc;
+
+    /// Says stop at once.
+    struct Stop;
+
+    impl Watch for Stop {
+        fn keep_going(&self) -> bool {
+            false
+        }
+    }
+
+    #[test]
+    fn a_cancelled_search_stops_as_interrupted() {
+        // the clearance slider-crank: held, then resting, then free (each stage asks at every iteration)
+        let model = super::super::tests::clearance_slider_crank();
+        let mut ws = Workspace::new(&model);
+        let found = scoped(Arc::new(Stop), || equilibrium(&model, 0.0, &EquilibriumOptions::default(), &mut ws));
+        assert!(matches!(found, Err(SimulationError::Interrupted { time }) if time == 0.0), "{found:?}");
     }
 }

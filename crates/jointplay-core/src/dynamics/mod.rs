@@ -49,7 +49,7 @@ pub use equations::{accelerations, update_frames, Stabilization};
 pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
 pub use progress::Progress;
 pub use redundancy::{constraint_rank, ConstraintRank};
-pub use simulate::{simulate, simulate_with_sink, Diagnostics, SimulationOptions, SimulationOutcome};
+pub use simulate::{simulate, simulate_with_sink, Diagnostics, SimulationOptions, SimulationOutcome, PROJECTION_CEILING, PROJECTION_FLOOR, PROJECTION_SHARE};
 pub use state::{ContactMemory, State};
 pub use trajectory::{SampleSink, Trajectory, CHUNK_BYTES};
 pub use workspace::Workspace;

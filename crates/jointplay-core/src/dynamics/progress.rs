@@ -5,7 +5,9 @@
 //! or check for an interrupt without a second thread).
 
 use std::sync::atomic::{AtomicBool, AtomicU32, AtomicU64, Ordering};
-use std::sync::Mutex;
+use std::sync::{Arc, Mutex};
+
+use crate::interrupt::Watch;
 use std::time::{Duration, Instant};
 
 /// Called with the simulated time [s]; returns false to cancel the run.
@@ -29,6 +31,12 @@ struct Watcher {
 /// Simulated time reached, a cancel flag and an optional watcher.
 #[derive(Default)]
 pub struct Progress {
+    shared: Arc<Shared>,
+}
+
+/// What a [`Progress`] shares with the loops of its run ([`crate::interrupt`]).
+#[derive(Default)]
+struct Shared {
     time_bits: AtomicU64,
     cancel: AtomicBool,
     /// Locked only by the simulating thread (and never contended).
@@ -57,27 +65,56 @@ impl Progress {
     pub fn watched(interval: Duration, callback: impl FnMut(f64) -> bool + Send + 'static) -> Self {
         let now = Instant::now();
         let watcher = Watcher { interval, due: now + interval, callback: Box::new(callback), checked: now, stride: 1 };
-        Self { watcher: Some(Mutex::new(watcher)), ..Self::default() }
+        Self { shared: Arc::new(Shared { watcher: Some(Mutex::new(watcher)), ..Shared::default() }) }
     }
 
     /// Simulated time reached [s].
     pub fn time(&self) -> f64 {
-        f64::from_bits(self.time_bits.load(Ordering::Relaxed))
+        f64::from_bits(self.shared.time_bits.load(Ordering::Relaxed))
     }
 
-    /// Asks the simulation to stop at its next output sample.
+    /// Asks the simulation to stop: at once inside a long loop that asks
+    /// [`crate::interrupt::keep_going`] (a Reynolds solve, the evaluations of a step).
     pub fn cancel(&self) {
-        self.cancel.store(true, Ordering::Relaxed);
+        self.shared.cancel();
     }
 
     /// Whether cancellation was requested.
     pub fn is_cancelled(&self) -> bool {
-        self.cancel.load(Ordering::Relaxed)
+        self.shared.cancel.load(Ordering::Relaxed)
     }
 
     /// Records the simulated time reached [s] and calls the watcher when it is due.
     pub(crate) fn report(&self, time: f64) {
-        self.time_bits.store(time.to_bits(), Ordering::Relaxed);
+        self.shared.time_bits.store(time.to_bits(), Ordering::Relaxed);
+        self.shared.watch(time);
+    }
+
+    /// Calls the watcher when it is due (with the time last reported); false once the run is cancelled.
+    pub fn poll(&self) -> bool {
+        self.shared.keep_going()
+    }
+
+    /// Runs `f` with this progress watching every long loop of the thread ([`crate::interrupt`]).
+    pub fn scope<T>(&self, f: impl FnOnce() -> T) -> T {
+        crate::interrupt::scoped(self.shared.clone(), f)
+    }
+}
+
+impl Watch for Shared {
+    fn keep_going(&self) -> bool {
+        self.watch(f64::from_bits(self.time_bits.load(Ordering::Relaxed)));
+        !self.cancel.load(Ordering::Relaxed)
+    }
+}
+
+impl Shared {
+    fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+
+    /// Calls the watcher with the simulated time [s] when it is due.
+    fn watch(&self, time: f64) {
         let Some(watcher) = &self.watcher else { return };
         if self.countdown.fetch_sub(1, Ordering::Relaxed) > 1 {
             return;
@@ -101,7 +138,6 @@ impl Progress {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::sync::Arc;
 
     /// Reports t, t + 1, ... until the watcher is called; the number of reports it took.
     fn report_until_called(progress: &Progress, seen: &Mutex<Vec<f64>>, t: f64) -> usize {
@@ -127,7 +163,7 @@ mod tests {
             progress.report(k as f64 * 1e-3);
         }
         assert!(seen.lock().unwrap().is_empty(), "not due before the interval has passed");
-        assert!(progress.watcher.as_ref().unwrap().lock().unwrap().stride > 1);
+        assert!(progress.shared.watcher.as_ref().unwrap().lock().unwrap().stride > 1);
         std::thread::sleep(Duration::from_millis(110));
         let reports = report_until_called(&progress, &seen, 1.0);
         assert!(reports <= MAX_STRIDE as usize, "called {reports} reports after it was due");

@@ -19,7 +19,7 @@ const SINGULAR_TOLERANCE_FACTOR: f64 = 1e3;
 use crate::error::SimulationError;
 
 /// Newton on `Phi(q, t) = 0` for the first `n_constraints` constraints.
-/// Returns the number of iterations taken.
+/// Returns the number of iterations taken and the largest |residual| left [m or rad].
 pub(crate) fn project_positions(
     model: &Model,
     n_constraints: usize,
@@ -28,10 +28,10 @@ pub(crate) fn project_positions(
     tolerance: f64,
     max_iterations: usize,
     ws: &mut Workspace,
-) -> Result<usize, SimulationError> {
+) -> Result<(usize, f64), SimulationError> {
     let rows = model.row_offsets[n_constraints];
     if rows == 0 {
-        return Ok(0);
+        return Ok((0, 0.0));
     }
     let mut allowed = max_iterations;
     let mut iteration = 0;
@@ -40,11 +40,8 @@ pub(crate) fn project_positions(
         ws.scratch.fill(0.0);
         update_frames(model, q, &ws.scratch, &mut ws.frames);
         let (largest, row) = constraint_residuals(model, n_constraints, t, ws);
-        if largest <= tolerance {
-            return Ok(iteration);
-        }
-        if singular_stagnation(ws, largest, previous, tolerance) {
-            return Ok(iteration);
+        if largest <= tolerance || singular_stagnation(ws, largest, previous, tolerance) {
+            return Ok((iteration, largest));
         }
         previous = largest;
         if iteration >= allowed || !largest.is_finite() {

@@ -58,6 +58,9 @@ pub(crate) fn strain_quasi_statically(model: &Model, t: f64, q: &mut [f64], qdot
     problem.scale = problem.largest_acceleration(&x, ws).unwrap_or(1.0).max(1.0);
     let rows = model.row_offsets[model.constraints.len()];
     for _ in 0..ITERATIONS {
+        if !crate::interrupt::keep_going() {
+            return Err(SimulationError::Interrupted { time: t });
+        }
         if r.rows(0, rows).amax() <= 1e-12 && r.rows(rows, r.len() - rows).amax() <= TOLERANCE * problem.scale {
             q.copy_from_slice(x.as_slice());
             problem.velocities(q, qdot, ws)?;

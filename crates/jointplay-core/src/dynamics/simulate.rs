@@ -22,8 +22,9 @@ pub struct SimulationOptions {
     /// Drift control.
     pub stabilization: Stabilization,
     /// Largest constraint residual left by the projection [m or rad], and of
-    /// the velocity constraints [m/s or rad/s].
-    pub position_tolerance: f64,
+    /// the velocity constraints [m/s or rad/s]; `None`: follow the integrator's
+    /// tolerances ([`SimulationOptions::projection_tolerance`]).
+    pub position_tolerance: Option<f64>,
     /// Form of the equations of motion (joint coordinates for a tree of ideal joints by default).
     pub formulation: Formulation,
     /// Largest output allowed, samples x channels x 8 [bytes]; `None`: no limit.
@@ -31,14 +32,45 @@ pub struct SimulationOptions {
     pub max_output_bytes: Option<u64>,
 }
 
+/// Largest projection tolerance that follows the integrator's tolerances [m or rad]:
+/// far below clearances of 1 um; a looser atol does not loosen it (a projection
+/// costs one or two Newton iterations whatever its tolerance).
+pub const PROJECTION_CEILING: f64 = 1e-10;
+
+/// Projection tolerance as a share of atol: what a projection moves the state by
+/// stays a tenth of what the step control allows. At the atol itself the moves
+/// near a singular position reach the error estimate, and the steps collapse or the
+/// linkage changes branch (measured on the parallelogram four-bar through its flat
+/// position, `docs/theory/planar-formulation.md`, "Projection tolerance").
+pub const PROJECTION_SHARE: f64 = 0.1;
+
+/// Smallest projection tolerance [m or rad]: about 50 round-offs of coordinates
+/// of order 1 m, below which Newton on the constraints stalls in rounding.
+pub const PROJECTION_FLOOR: f64 = 1e-14;
+
+impl SimulationOptions {
+    /// The projection tolerance [m or rad] used: `position_tolerance` when given, else
+    /// [`PROJECTION_SHARE`] times atol (times rtol x 1 m when atol is 0: coordinates of
+    /// order 1 m), at most [`PROJECTION_CEILING`] and at least [`PROJECTION_FLOOR`].
+    /// (The default atol 1e-9 gives 1e-10, the fixed value of the earlier engine.)
+    pub fn projection_tolerance(&self) -> f64 {
+        if let Some(tolerance) = self.position_tolerance {
+            return tolerance;
+        }
+        let IntegratorOptions { atol, rtol, .. } = self.integrator;
+        let reference = if atol > 0.0 { atol } else { rtol };
+        (PROJECTION_SHARE * reference).min(PROJECTION_CEILING).max(PROJECTION_FLOOR)
+    }
+}
+
 impl Default for SimulationOptions {
-    /// Dormand-Prince at rtol 1e-6, atol 1e-9; projection to 1e-10, far
-    /// below clearances of 1 um and above the round-off of coordinates of order 1 m.
+    /// Dormand-Prince at rtol 1e-6, atol 1e-9; the projection tolerance follows
+    /// atol ([`SimulationOptions::projection_tolerance`]: 1e-10 here).
     fn default() -> Self {
         Self {
             integrator: IntegratorOptions::default(),
             stabilization: Stabilization::Projection,
-            position_tolerance: 1e-10,
+            position_tolerance: None,
             formulation: Formulation::Auto,
             max_output_bytes: None,
         }
@@ -46,7 +78,7 @@ impl Default for SimulationOptions {
 }
 
 /// Run-time observations that are not errors (MuJoCo-style warnings counted, not thrown).
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Diagnostics {
     /// Deepest penetration seen at an accepted step [m].
     pub max_penetration: f64,
@@ -54,8 +86,29 @@ pub struct Diagnostics {
     pub deep_penetration_steps: usize,
     /// Most Newton iterations one projection needed.
     pub max_projection_iterations: usize,
+    /// Largest constraint residual a projection after a step left [m or rad]: at most the
+    /// projection tolerance, except at a singular position, where Newton may stall above it.
+    pub max_projection_residual: f64,
+    /// Time of that projection [s] (NaN without one).
+    pub max_projection_residual_time: f64,
+    /// The projection tolerance of the run [m or rad] ([`SimulationOptions::projection_tolerance`]).
+    pub projection_tolerance: f64,
     /// Contact onsets per clearance joint.
     pub impacts: Vec<usize>,
+}
+
+impl Default for Diagnostics {
+    fn default() -> Self {
+        Self {
+            max_penetration: 0.0,
+            deep_penetration_steps: 0,
+            max_projection_iterations: 0,
+            max_projection_residual: 0.0,
+            max_projection_residual_time: f64::NAN,
+            projection_tolerance: 0.0,
+            impacts: Vec::new(),
+        }
+    }
 }
 
 /// What a simulation returns, successful or not.
@@ -100,13 +153,29 @@ pub fn simulate_with_sink(
     progress: Option<&Progress>,
     sink: Option<Box<dyn SampleSink>>,
 ) -> SimulationOutcome {
+    // every long loop of the run (a Reynolds solve included) answers the progress's cancel
+    match progress {
+        Some(progress) => progress.scope(|| run(model, state, t_end, options, Some(progress), sink)),
+        None => run(model, state, t_end, options, None, sink),
+    }
+}
+
+/// [`simulate_with_sink`] inside the progress's scope.
+fn run(
+    model: &Model,
+    state: &mut State,
+    t_end: f64,
+    options: &SimulationOptions,
+    progress: Option<&Progress>,
+    sink: Option<Box<dyn SampleSink>>,
+) -> SimulationOutcome {
     let mut ws = Workspace::new(model);
     let mut trajectory = Trajectory::new(model);
     trajectory.set_max_bytes(options.max_output_bytes);
     if let Some(sink) = sink {
         trajectory.set_sink(sink);
     }
-    let mut diagnostics = Diagnostics::default();
+    let mut diagnostics = Diagnostics { projection_tolerance: options.projection_tolerance(), ..Diagnostics::default() };
     let t0 = state.time;
     let tree = match joint_tree(model, options.formulation, t0) {
         Ok(tree) => tree,
@@ -161,7 +230,12 @@ pub fn simulate_with_sink(
     }
     diagnostics.impacts = model.clearance_joints().map(|(k, _, _)| state.memory[k].impacts()).collect();
     let extrema = summarize(model, &tracking.tracker, &tracking.channels, &state.memory);
-    let error = result.err().map(|e| name_likely_cause(model, e, &ws));
+    // a cancelled run stops wherever a loop saw it (a Reynolds solve says "interrupted"): say why it stopped
+    let cancelled = progress.is_some_and(Progress::is_cancelled);
+    let error = result.err().map(|e| match cancelled {
+        true => SimulationError::Interrupted { time: if last_accepted.is_nan() { t0 } else { last_accepted } },
+        false => name_likely_cause(model, e, &ws),
+    });
     let error = error.map(|e| super::singular_diagnosis::diagnose_toggle(model, e, t0, state.time, state.coordinates(), &mut ws));
     let formulation = if tree.is_some() { Formulation::JointCoordinates } else { Formulation::Absolute };
     SimulationOutcome { trajectory, statistics, diagnostics, extrema, error, formulation }

@@ -97,3 +97,40 @@ fn a_run_without_steps_has_no_extrema() {
     assert_eq!((joint.impacts, joint.contact_time, joint.max_penetration), (0, 0.0, 0.0));
     assert!(joint.max_eccentricity_ratio.is_nan() && joint.max_penetration_time.is_nan());
 }
+
+#[test]
+fn projection_tolerance_is_a_tenth_of_atol_between_its_floor_and_ceiling() {
+    let with = |rtol: f64, atol: f64| {
+        let mut options = SimulationOptions::default();
+        options.integrator.rtol = rtol;
+        options.integrator.atol = atol;
+        options.projection_tolerance()
+    };
+    // the default atol 1e-9 keeps the earlier fixed 1e-10
+    assert_eq!(SimulationOptions::default().projection_tolerance(), 1e-10);
+    assert_eq!(with(1e-10, 1e-12), 0.1 * 1e-12);
+    assert_eq!(with(1e-8, 1e-10), 0.1 * 1e-10);
+    // a loose atol does not loosen it; an atol below round-off meets the floor
+    assert_eq!(with(1e-3, 1e-6), PROJECTION_CEILING);
+    assert_eq!(with(1e-12, 1e-16), PROJECTION_FLOOR);
+    // atol 0: rtol of coordinates of order 1 m
+    assert_eq!(with(1e-12, 0.0), 0.1 * 1e-12);
+    // given: as given
+    let given = SimulationOptions { position_tolerance: Some(3e-9), ..SimulationOptions::default() };
+    assert_eq!(given.projection_tolerance(), 3e-9);
+}
+
+#[test]
+fn the_run_reports_its_projection_tolerance_and_the_largest_residual_left() {
+    // in absolute coordinates (joint coordinates need no projection)
+    let model = clearance_slider_crank();
+    let mut state = assemble(&model, 0.0, &mut Workspace::new(&model)).unwrap();
+    let options = SimulationOptions { formulation: Formulation::Absolute, ..SimulationOptions::default() };
+    let outcome = simulate(&model, &mut state, 0.002, &options, None);
+    assert!(outcome.error.is_none(), "{:?}", outcome.error);
+    let d = &outcome.diagnostics;
+    assert_eq!(d.projection_tolerance, 1e-10);
+    // a regular slider-crank: every projection meets the tolerance
+    assert!(d.max_projection_residual > 0.0 && d.max_projection_residual <= 1e-10, "{}", d.max_projection_residual);
+    assert!(d.max_projection_residual_time > 0.0 && d.max_projection_residual_time <= 0.002);
+}

@@ -144,9 +144,15 @@ impl MechanismSystem<'_> {
         self.step_end.evaluated_at = None;
         let m = self.model.n_dynamic_constraints;
         let (q, qdot, _) = self.model.layout.split_mut(y);
-        let iterations = project_positions(self.model, m, t, q, self.options.position_tolerance, PROJECTION_ITERATIONS, self.ws)?;
-        self.diagnostics.max_projection_iterations = self.diagnostics.max_projection_iterations.max(iterations);
-        project_velocities(self.model, m, t, q, qdot, self.options.position_tolerance, self.ws)
+        let tolerance = self.diagnostics.projection_tolerance;
+        let (iterations, residual) = project_positions(self.model, m, t, q, tolerance, PROJECTION_ITERATIONS, self.ws)?;
+        let diagnostics = &mut *self.diagnostics;
+        diagnostics.max_projection_iterations = diagnostics.max_projection_iterations.max(iterations);
+        if residual > diagnostics.max_projection_residual {
+            diagnostics.max_projection_residual = residual;
+            diagnostics.max_projection_residual_time = t;
+        }
+        project_velocities(self.model, m, t, q, qdot, tolerance, self.ws)
     }
 }
 
@@ -245,6 +251,11 @@ impl OdeSystem for MechanismSystem<'_> {
         // the state of the evaluation the workspace still holds (a sample just recorded
         // there, or a restart at the state just evaluated): reuse it
         if !self.step_end.holds_evaluation(t, y) {
+            // a cancel is answered at the next evaluation, not at the next sample, which
+            // may be many steps away
+            if self.progress.is_some_and(|progress| !progress.poll()) {
+                return Err(SimulationError::Interrupted { time: self.last_accepted });
+            }
             self.step_end.evaluated_at = None;
             self.evaluate(t, y)?;
         }

@@ -70,7 +70,7 @@ fn slider_crank_kinematics_match_the_closed_form() {
     let period = 2.0 * PI / omega;
     let options = SimulationOptions {
         integrator: IntegratorOptions { output_step: Some(period / 50.0), ..Default::default() },
-        position_tolerance: 1e-12,
+        position_tolerance: Some(1e-12),
         ..Default::default()
     };
     let outcome = simulate(&m, &mut state, period, &options, None);

@@ -208,7 +208,7 @@ fn run(m: &Model, formulation: Formulation) -> crate::dynamics::SimulationOutcom
     let mut ws = Workspace::new(m);
     let mut state = assemble(m, 0.0, &mut ws).unwrap();
     let integrator = IntegratorOptions { rtol: 1e-11, atol: 1e-13, output_step: Some(1e-3), ..Default::default() };
-    let options = SimulationOptions { integrator, position_tolerance: 1e-13, formulation, ..Default::default() };
+    let options = SimulationOptions { integrator, position_tolerance: Some(1e-13), formulation, ..Default::default() };
     let outcome = simulate(m, &mut state, 0.06, &options, None);
     assert!(outcome.error.is_none(), "{formulation:?}: {:?}", outcome.error);
     outcome

@@ -106,8 +106,9 @@ impl ReynoldsSolver {
 
     /// Solves for the film at one state, warm-started from the previous solution.
     ///
-    /// Errors: non-finite input, `|e| >= c` ("film thickness <= 0"), or no
-    /// convergence within `max_iterations` sweeps.
+    /// Errors: non-finite input, `|e| >= c` ("film thickness <= 0"), no
+    /// convergence within `max_iterations` sweeps, or a run cancelled during the
+    /// sweeps ([`crate::interrupt::INTERRUPTED`]).
     pub fn solve(&mut self, kinematics: &FilmKinematics) -> Result<FilmSolution, String> {
         check_kinematics(kinematics)?;
         let c = self.geometry.clearance;
@@ -228,6 +229,11 @@ impl ReynoldsSolver {
             let peak = high - low;
             if change <= o.tolerance * peak.max(1e-9 * scale) {
                 break;
+            }
+            // a run cancelled (Ctrl-C) stops inside a long solve, not after it
+            if !crate::interrupt::keep_going() {
+                self.reset();
+                return Err(crate::interrupt::INTERRUPTED.to_string());
             }
             if iterations >= o.max_iterations || !change.is_finite() {
                 self.reset();

@@ -206,3 +206,28 @@ fn oversized_force_table_is_refused_before_solving() {
     let grid = ForceTableOptions { solver: ReynoldsOptions { n_circumferential: 1 << 20, ..Default::default() }, ..Default::default() };
     assert!(ForceTable::build(1.0, &grid).unwrap_err().starts_with("grid 1048576 x 16 has"));
 }
+
+/// A run cancelled while its Reynolds solve relaxes stops the solve at the next sweep: the
+/// solve asks [`crate::interrupt::keep_going`] once per sweep (here a watcher due at every call,
+/// cancelling at its third), and the warm start is forgotten.
+#[test]
+fn a_cancelled_run_stops_the_solve_at_the_next_sweep() {
+    use crate::dynamics::Progress;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    use std::sync::Arc;
+    use std::time::Duration;
+
+    let calls = Arc::new(AtomicUsize::new(0));
+    let counted = Arc::clone(&calls);
+    let progress = Progress::watched(Duration::ZERO, move |_| counted.fetch_add(1, Ordering::Relaxed) < 2);
+    let o = ReynoldsOptions { n_circumferential: 240, n_axial: 32, tolerance: 1e-12, ..Default::default() };
+    let mut solver = ReynoldsSolver::new(geometry(1.0), o).unwrap();
+    let solved = progress.scope(|| solver.solve(&spinning(0.6, 100.0)));
+    assert_eq!(solved.unwrap_err(), crate::interrupt::INTERRUPTED);
+    assert_eq!(calls.load(Ordering::Relaxed), 3, "three sweeps, one call each");
+    assert!(progress.is_cancelled());
+    assert!(solver.pressure().iter().all(|p| *p == 0.0));
+    // outside the run the same solve converges (it needs hundreds of sweeps)
+    let converged = solver.solve(&spinning(0.6, 100.0)).unwrap();
+    assert!(converged.iterations > 100, "{} sweeps", converged.iterations);
+}
