@@ -627,7 +627,8 @@ def _options(t0, t_end, method, rtol, atol, max_step, output_step, initial_step,
 
 
 def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float], None] | None,
-         sink: Callable[[np.ndarray, np.ndarray, int], None] | None = None) -> dict:
+         sink: Callable[[np.ndarray, np.ndarray, int], None] | None = None,
+         initial_state: np.ndarray | None = None) -> dict:
     """Runs the core in this thread with the GIL released. About ten times a second the core calls
     ``progress`` and lets pending signals run: on Ctrl-C the run stops within about that time (every
     evaluation and every Reynolds sweep reach the check) and what was computed is kept (the error says it
@@ -655,7 +656,8 @@ def _run(core, t0: float, t_end: float, options: dict, progress: Callable[[float
 
     try:
         raw = core.simulate(t0, t_end, options, watch, None if sink is None else forward,
-                            options.get("initial") == "equilibrium")
+                            options.get("initial") == "equilibrium",
+                            None if initial_state is None else [float(v) for v in initial_state])
     except ValueError as exc:  # an option the core refuses that the checks before it missed: still located
         from .options import core_refusal
 

@@ -76,20 +76,28 @@ def equilibrium(model: Model, t0: float, tolerance: float, max_iterations: int) 
     found = core.equilibrium(float(t0), float(tolerance), int(max_iterations))
     if found["error"] is not None:
         raise SimulationError(found["error"], stage="equilibrium")
-    values, units = _channels_at_rest(model, float(t0))
+    values, units = _channels_at_rest(model, float(t0), found)
     return Equilibrium(np.asarray(found["coordinates"]), np.asarray(found["element_states"]),
                        float(found["force_residual"]), float(found["constraint_residual"]), int(found["iterations"]),
                        values, units)
 
 
-def _channels_at_rest(model: Model, t0: float) -> tuple[dict[str, float], dict[str, str]]:
-    """Every channel in the first sample of a run started at the equilibrium (its accelerations are zero there,
-    so the reactions are the static ones)."""
-    import warnings
+def _channels_at_rest(model: Model, t0: float, found: dict) -> tuple[dict[str, float], dict[str, str]]:
+    """Every channel in the first sample of a run started at rest at the equilibrium ``found``, the state the
+    core found handed over as it is (its accelerations are zero there, so the reactions are the static ones)."""
+    from . import resultsfile
+    from .model import _options, _run
+    from .results import Results
 
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # the plausibility warnings of a run belong to runs
-        results = model.simulate(t0 + 1e-9, initial="equilibrium", method="dopri5", output_step=1e-9)
+    q = np.asarray(found["coordinates"], dtype=float)
+    # (at rest: as many velocity coordinates as position coordinates, every body kind today)
+    state = np.concatenate([q, np.zeros(len(q)), np.asarray(found["element_states"], dtype=float)])
+    options = _options(t0, t0 + 1e-9, "dopri5", 1e-6, 1e-9, None, 1e-9, None, None, None, "projection")
+    options["max_output_bytes"] = resultsfile.budget_option(None, False)
+    raw = _run(model.compile(), t0, t0 + 1e-9, options, None, initial_state=state)
+    if raw["error"] is not None:
+        raise SimulationError(raw["error"], stage="equilibrium")
+    results = Results.from_core(raw, spec=model.to_spec(), options=options, wall_time=0.0)
     values = {name: float(results[name][0]) for name in results.channels}
     units = {name: results.unit(name) for name in results.channels}
     return values, units

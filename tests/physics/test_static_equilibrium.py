@@ -221,3 +221,12 @@ def test_a_journal_rests_in_its_bore_at_the_hertz_laws_static_penetration():
     assert found["B.ey"] == pytest.approx(-(clearance + penetration), rel=1e-9)
     assert found["B.ex"] == pytest.approx(0.0, abs=1e-12)
     assert found["B.fn"] == pytest.approx(mass * 9.81, rel=1e-9)
+
+
+def test_the_core_refuses_a_start_state_of_the_wrong_length():
+    from jointplay.model import _options, _run
+
+    options = _options(0.0, 1e-3, "dopri5", 1e-6, 1e-9, None, None, None, None, None, "projection")
+    options["max_output_bytes"] = 1 << 20
+    raw = _run(hanging_mass().compile(), 0.0, 1e-3, options, None, initial_state=np.zeros(2))
+    assert "an initial state of 2 values, the model has 6" in raw["error"]["message"]

@@ -231,8 +231,9 @@ impl CoreModel {
     /// stops the run and is raised here. With `sink`, the samples go to `sink(times, values, start)`
     /// in chunks of about 4 MiB while the run goes on (see [`PythonSink`]) and the returned
     /// `time` and `values` are empty; an exception in `sink` stops the run and is raised here.
-    /// With `from_equilibrium` the run starts at rest in the static equilibrium at `t0`.
-    #[pyo3(signature = (t0, t_end, options, progress=None, sink=None, from_equilibrium=false))]
+    /// With `from_equilibrium` the run starts at rest in the static equilibrium at `t0`; with
+    /// `initial_state` (`[q, v, z]` as the layout orders them) it starts there as given.
+    #[pyo3(signature = (t0, t_end, options, progress=None, sink=None, from_equilibrium=false, initial_state=None))]
     #[allow(clippy::too_many_arguments)]
     fn simulate<'py>(
         &self,
@@ -243,6 +244,7 @@ impl CoreModel {
         progress: Option<Py<PyAny>>,
         sink: Option<Py<PyAny>>,
         from_equilibrium: bool,
+        initial_state: Option<Vec<f64>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let options = conv::simulation_options(options)?;
         let model = Arc::clone(&self.model);
@@ -261,7 +263,13 @@ impl CoreModel {
                 let mut ws = Workspace::new(&model);
                 // (the start's Newton loops answer Ctrl-C too)
                 let mut state = watched.scope(|| {
-                    if from_equilibrium {
+                    if let Some(y) = initial_state {
+                        if y.len() != model.layout.len() {
+                            let message = format!("an initial state of {} values, the model has {}", y.len(), model.layout.len());
+                            return Err(jointplay_core::SimulationError::InvalidInput { time: t0, message });
+                        }
+                        Ok(dynamics::State::new(&model, t0, y))
+                    } else if from_equilibrium {
                         dynamics::equilibrium(&model, t0, &dynamics::EquilibriumOptions::default(), &mut ws).map(|found| found.state)
                     } else {
                         dynamics::assemble(&model, t0, &mut ws)
