@@ -230,3 +230,15 @@ def test_the_core_refuses_a_start_state_of_the_wrong_length():
     options["max_output_bytes"] = 1 << 20
     raw = _run(hanging_mass().compile(), 0.0, 1e-3, options, None, initial_state=np.zeros(2))
     assert "an initial state of 2 values, the model has 6" in raw["error"]["message"]
+
+
+def test_a_cylinder_fed_by_a_flow_is_closed_and_the_user_is_told():
+    spec = pendulum_with_cylinder().to_spec()
+    from jointplay.functions import as_function
+
+    spec["forces"][0]["cap_inflow"] = as_function(1e-6)
+    with pytest.warns(jp.JointplayWarning, match="forces.lift: the static equilibrium closes the cylinder's chambers; "
+                                                 "its inflows are not applied"):
+        found = jp.Model.from_spec(spec).equilibrium()
+    # the same rest as with the chambers closed by the description
+    assert found["bar.angle"] == pytest.approx(pendulum_angle(), abs=1e-9)
