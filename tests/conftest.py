@@ -1,11 +1,11 @@
-"""Shared test set-up: examples and the independent reference model are importable."""
+"""Shared test set-up: examples, the independent reference models and the shared micro-models are importable."""
 
 import os
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-for folder in (ROOT / "examples", ROOT / "tests" / "physics"):
+for folder in (ROOT / "examples", ROOT / "tests" / "physics", ROOT / "tests"):
     if str(folder) not in sys.path:
         sys.path.insert(0, str(folder))
 

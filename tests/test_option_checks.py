@@ -13,6 +13,7 @@ import jointplay as jp
 from jointplay import parameters as p
 from jointplay.cli import app
 from jointplay.model import _options
+from small_models import pendulum
 
 ROOT = Path(__file__).resolve().parents[1]
 #: a closed loop of ideal joints; its [simulation] table has max_step = "0.1 ms" and method = "adams"
@@ -28,14 +29,6 @@ INITIAL_STEP = ("simulation.initial_step: must be at least min_step = 1e-14 s (i
                 "step below the smallest step stops the run at once), got 1e-16 s")
 LOOP = ('simulation.formulation: joint_coordinates needs a tree of ideal joints, but joint "B" closes a loop of ideal '
         'joints; use "auto" or "absolute"')
-
-
-def pendulum() -> jp.Model:
-    m = jp.Model("pendulum", gravity=(0, -9.81))
-    m.add_ground_point("O", (0, 0))
-    m.add_body("bar", mass=1.0, inertia=0.02, position=(0.25, 0), points={"O": (-0.25, 0)})
-    m.add_revolute("pin", "ground.O", "bar.O")
-    return m
 
 
 def simulate_problems(model: jp.Model, **options) -> list[str]:

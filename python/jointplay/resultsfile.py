@@ -131,7 +131,7 @@ def terminate_as_exit():
 
 
 def remove_stale_temporaries(path: str | os.PathLike) -> list[Path]:
-    """Removes the temporary files of ``path`` (hidden ``.NAME.PID-XXXXXXXX.tmp`` beside it, see
+    """Removes the temporary files of ``path`` (hidden ``.NAME.PID-<8 hex digits>.tmp`` beside it, see
     :func:`temporary_path`) whose writing process is gone: killed with SIGKILL, or the machine stopped.
     Returns what was removed."""
     path = Path(path)

@@ -4,7 +4,7 @@
 
 use super::*;
 use crate::dynamics::beam_tests::{model as beam_model, slider_crank as beam_slider_crank};
-use crate::dynamics::tests::slider_crank_spec_json;
+use crate::dynamics::tests::{clearance_joint_b_json, slider_crank_spec_json};
 use crate::dynamics::{assemble, compile};
 use crate::spec::ModelSpec;
 
@@ -40,14 +40,7 @@ fn beam_between_crank_and_ground(reach: f64) -> Model {
 fn clearance_slider_crank_spec(lock: bool) -> serde_json::Value {
     let mut spec = slider_crank_spec_json();
     spec["gravity"] = serde_json::json!([0.0, -9.81]);
-    spec["joints"][2] = serde_json::json!({
-        "type": "clearance_revolute", "name": "B", "bearing": "slider.B", "journal": "rod.B",
-        "bearing_radius": 0.01, "clearance": 0.0005, "length": 0.04,
-        "bearing_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
-        "journal_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
-        "contact": {"law": "lankarani_nikravesh", "restitution": 0.9}, "stiffness": {"law": "hertz_cylinder"},
-        "friction": {"law": "none"}, "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": lock,
-        "onset_velocity_floor": 1e-4, "max_penetration": null, "lubrication": null});
+    spec["joints"][2] = clearance_joint_b_json(serde_json::json!({"law": "none"}), lock);
     spec["drivers"][0]["function"] = serde_json::json!({"kind": "constant_rate", "initial": 0.0, "rate": 5000.0 * std::f64::consts::PI / 30.0});
     spec
 }

@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::dynamics::conditioning::relative_smallest_singular_value;
-use crate::dynamics::tests::slider_crank_spec_json;
+use crate::dynamics::tests::{clearance_joint_b_json, slider_crank_spec_json};
 use crate::dynamics::{assemble, compile, simulate, SimulationOptions};
 use crate::spec::ModelSpec;
 
@@ -19,14 +19,7 @@ pub(crate) fn slider_pushed_through_dead_centre(clearance: bool) -> Model {
     spec["bodies"][1]["angle"] = serde_json::json!((-0.05f64).atan2(x));
     spec["bodies"][2]["position"] = serde_json::json!([x, 0.0]);
     if clearance {
-        spec["joints"][2] = serde_json::json!({
-            "type": "clearance_revolute", "name": "B", "bearing": "slider.B", "journal": "rod.B",
-            "bearing_radius": 0.01, "clearance": 0.0005, "length": 0.04,
-            "bearing_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
-            "journal_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
-            "contact": {"law": "lankarani_nikravesh", "restitution": 0.9}, "stiffness": {"law": "hertz_cylinder"},
-            "friction": {"law": "none"}, "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": true,
-            "onset_velocity_floor": 1e-4, "max_penetration": null, "lubrication": null});
+        spec["joints"][2] = clearance_joint_b_json(serde_json::json!({"law": "none"}), true);
     }
     spec["drivers"] = serde_json::json!([{"name": "push", "joint": "guide", "function": {"kind": "constant_rate", "initial": x, "rate": 1.0}}]);
     let spec: ModelSpec = serde_json::from_value(spec).expect("valid spec");

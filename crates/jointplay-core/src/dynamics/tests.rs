@@ -397,20 +397,25 @@ fn compile_reports_every_problem_with_its_location() {
 
 
 
-/// The Flores slider-crank with the dry clearance joint between rod and
-/// slider (Lankarani-Nikravesh, Ambrosio friction), crank at 5000 rpm.
-pub(super) fn clearance_slider_crank() -> Model {
-    let mut spec = slider_crank_spec_json();
-    spec["gravity"] = serde_json::json!([0.0, -9.81]);
-    spec["joints"][2] = serde_json::json!({
+/// The Flores dry clearance joint B between rod and slider (bore 10 mm, clearance 0.5 mm, steel,
+/// Lankarani-Nikravesh contact at restitution 0.9) with `friction`, held at assembly when `lock`.
+pub(super) fn clearance_joint_b_json(friction: serde_json::Value, lock: bool) -> serde_json::Value {
+    serde_json::json!({
         "type": "clearance_revolute", "name": "B", "bearing": "slider.B", "journal": "rod.B",
         "bearing_radius": 0.01, "clearance": 0.0005, "length": 0.04,
         "bearing_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
         "journal_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
         "contact": {"law": "lankarani_nikravesh", "restitution": 0.9}, "stiffness": {"law": "hertz_cylinder"},
-        "friction": {"law": "ambrosio", "coefficient": 0.01, "v0": 1e-4, "v1": 1e-3},
-        "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": true, "onset_velocity_floor": 1e-4,
-        "max_penetration": null, "lubrication": null});
+        "friction": friction, "initial_eccentricity": [0.0, 0.0], "lock_at_assembly": lock,
+        "onset_velocity_floor": 1e-4, "max_penetration": null, "lubrication": null})
+}
+
+/// The Flores slider-crank with the dry clearance joint between rod and
+/// slider (Lankarani-Nikravesh, Ambrosio friction), crank at 5000 rpm.
+pub(super) fn clearance_slider_crank() -> Model {
+    let mut spec = slider_crank_spec_json();
+    spec["gravity"] = serde_json::json!([0.0, -9.81]);
+    spec["joints"][2] = clearance_joint_b_json(serde_json::json!({"law": "ambrosio", "coefficient": 0.01, "v0": 1e-4, "v1": 1e-3}), true);
     spec["drivers"][0]["function"] = serde_json::json!({"kind": "constant_rate", "initial": 0.0, "rate": 5000.0 * PI / 30.0});
     model(&spec.to_string())
 }
