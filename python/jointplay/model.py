@@ -285,6 +285,22 @@ class Model:
         """The description as JSON text."""
         return json.dumps(self._spec, allow_nan=True)
 
+    # pickling: by the description --------------------------------------------
+
+    #: What a pickle leaves out: the compiled core (not picklable; compiled again on first use, from the same
+    #: description, so the copy runs the same) and the snapshot made for results (made again from the description).
+    _UNPICKLED = ("_core", "_run_inputs")
+
+    def __getstate__(self) -> dict[str, Any]:
+        """The description and what a model file added (``simulation``, ``description``, ``source_file``),
+        without the compiled core: ``pickle.dumps(model)`` works for a compiled model (a process pool, Dask)."""
+        return {key: value for key, value in self.__dict__.items() if key not in self._UNPICKLED}
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        self.__dict__.update(state)
+        for key in self._UNPICKLED:
+            self.__dict__[key] = None
+
     # compile, check, simulate -----------------------------------------------
 
     def compile(self):

@@ -99,6 +99,10 @@ _HERTZ_UNITS = {"hertz", "kilohertz", "megahertz"}
 #: Longest quantity text read [characters] and longest unit text: far above any real quantity, small
 #: enough to read at once.
 MAX_TEXT, MAX_UNIT_TEXT = 1000, 100
+#: Distinct unit texts whose parse is kept (:func:`_parsed_units`).
+_CACHED_UNITS = 512
+#: Distinct quantity texts whose SI value is kept (:func:`_text_to_si`).
+_CACHED_TEXTS = 4096
 _NUMBER = re.compile(r"[+-]?(?:(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?|nan|inf(?:inity)?)", re.IGNORECASE)
 # unit names, spaces, * and /, parentheses, ^ or ** with an exponent of at most two digits, "1/" as in "1/s"
 _UNIT_TEXT = re.compile(r"(?:\s+|[^\W\d]+|(?:\^|\*\*)\s*[+-]?\d{1,2}(?!\d)|\*|/|\(|\)|%|1(?=\s*/))*")
@@ -217,13 +221,27 @@ def _quantity(value: float, unit: str, text: str):
     if len(unit) > MAX_UNIT_TEXT or not _UNIT_TEXT.fullmatch(unit) or _POWER_OF_POWER.search(unit):
         raise UnitError(unreadable)
     try:
-        units = registry().parse_units(unit)
+        units = _parsed_units(unit)
     except pint.UndefinedUnitError as exc:
         names = exc.unit_names if isinstance(exc.unit_names, (list, tuple)) else [exc.unit_names]
         raise UnitError(f"has an unknown unit {', '.join(map(repr, names))}, got {_quoted(text)}") from None
     except Exception:  # pint's parser raises many types (DefinitionSyntaxError, TypeError...)
         raise UnitError(unreadable) from None
     return registry().Quantity(value, units)
+
+
+@lru_cache(maxsize=_CACHED_UNITS)
+def _parsed_units(unit: str):
+    """pint's reading of a unit text, kept: the parser costs about 0.1 ms a call, and a model file
+    repeats a few units (``mm``, ``kg``) many times. (A text pint refuses raises each time, as it is
+    not kept.)"""
+    return registry().parse_units(unit)
+
+
+@lru_cache(maxsize=len(KINDS) + 64)
+def _si_target(si: str):
+    """A quantity of one SI unit ``si`` of a kind (``""``: dimensionless), the target of conversions."""
+    return registry().Quantity(1, si) if si else registry().Quantity(1, "")
 
 
 def parse(text: str):
@@ -266,15 +284,26 @@ def to_si(raw: object, kind: str | Kind) -> float:
         raise UnitError(f"must be finite, got {_short(raw)}")
     if isinstance(raw, (int, float)):
         return _bare(float(raw), spec, raw)
+    value, bare = _text_to_si(raw, spec)
+    return _bare(value, spec, raw) if bare else value
+
+
+@lru_cache(maxsize=_CACHED_TEXTS)
+def _text_to_si(raw: str, spec: Kind) -> tuple[float, bool]:
+    """``(value, bare)``: a quantity text in the SI unit of ``spec`` (``bare`` False), or the number of a
+    text without a unit (``bare`` True, read by :func:`_bare` under the file's declared units). Kept per
+    text and kind, as pint's arithmetic costs tens of microseconds a value and a model file (or a study
+    loading it again) repeats its values; the value is pint's, so a kept one is the same to the last bit.
+    A text that is refused raises each time (a raise is not kept)."""
     q = parse(raw)
     if not _unit_names(q):  # a number written as a string: a bare number
-        return _bare(float(q.magnitude), spec, raw)
+        return float(q.magnitude), True
     if not math.isfinite(q.magnitude):
         raise UnitError(f"must be finite, got {format_value(raw)}")
     value = _convert(q, spec, raw)
     if not math.isfinite(value):
         raise UnitError(f"must be finite, got {format_value(raw)} (beyond the range of numbers once in SI units)")
-    return value
+    return value, False
 
 
 def _bare(value: float, spec: Kind, raw: object) -> float:
@@ -312,7 +341,7 @@ def _convert(q, spec: Kind, raw: str) -> float:
     if not spec.angular and spec.name != "frequency" and names & _ANGLE_UNITS:
         raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), "
                         f"got an angular quantity {_quoted(raw)}")
-    target = registry().Quantity(1, spec.si) if spec.si else registry().Quantity(1, "")
+    target = _si_target(spec.si)
     if q.dimensionality != target.dimensionality:
         raise UnitError(f"must be {_article(spec.name)} (e.g. \"{spec.example}\"), got {_quoted(raw)}, "
                         f"which is {describe_dimension(q)}")

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import difflib
 import math
+from functools import lru_cache
 from typing import Annotated, Any
 
 from pydantic import BaseModel, ConfigDict, PlainValidator, ValidationError
@@ -170,7 +171,16 @@ def did_you_mean(word: Any, options) -> str:
 
 
 def join(*parts: Any) -> str:
-    """A dotted location; keys that are not plain words are quoted as in TOML."""
+    """A dotted location; keys that are not plain words are quoted as in TOML. (Kept per parts: a model
+    file's reader forms the location of every value before it knows whether a message needs it.)"""
+    try:
+        return _joined(*parts)
+    except TypeError:  # a part that cannot be a key of the cache (a list)
+        return _joined.__wrapped__(*parts)
+
+
+@lru_cache(maxsize=8192, typed=True)
+def _joined(*parts: Any) -> str:
     out = []
     for p in parts:
         if p is None or p == "":
