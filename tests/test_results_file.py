@@ -17,6 +17,7 @@ import jointplay as jp
 from jointplay import resultsfile
 from jointplay.results import Results, open_results
 from jointplay.resultsfile import ResultsWriter, parse_size, partial_path
+from jointplay.resultslayout import CHUNK_SAMPLES
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 DRY = EXAMPLES / "flores_slider_crank_dry.toml"
@@ -85,12 +86,21 @@ def test_a_slash_in_a_channel_name_is_escaped_in_the_file(tmp_path):
     np.testing.assert_array_equal(back["arm/left.y"], results["arm/left.y"])
 
 
-def test_channels_are_compressed_in_chunks(tmp_path):
-    path = synthetic(3, 20000).save(tmp_path / "c.nc")
-    with h5py.File(path) as f:
+def test_saved_channels_are_contiguous_and_compressed_only_on_request(tmp_path):
+    results = synthetic(3, 20000)
+    plain = results.save(tmp_path / "plain.nc")
+    packed = results.save(tmp_path / "packed.nc", compress=True)
+    with h5py.File(plain) as f:
         dataset = f["body1.x"]
-        assert (dataset.compression, dataset.shuffle, dataset.chunks) == ("gzip", True, (resultsfile.CHUNK_SAMPLES,))
-        assert "_streamed_time" not in f
+        assert (dataset.compression, dataset.chunks) == (None, None), "contiguous, uncompressed"
+        assert f.attrs["jointplay_layout"] == resultsfile.LAYOUT
+    with h5py.File(packed) as f:
+        dataset = f["body1.x"]
+        assert (dataset.compression, dataset.shuffle, dataset.chunks) == ("gzip", True, (CHUNK_SAMPLES,))
+    assert packed.stat().st_size < 0.5 * plain.stat().st_size  # values k + j / n share most of their bytes
+    for path in (plain, packed):
+        back = open_results(path)
+        np.testing.assert_array_equal(back["body2.x"], results["body2.x"])
 
 
 def test_file_carries_cf_attributes_and_the_model_description(tmp_path, dry_model):
@@ -176,8 +186,8 @@ print(len(short), len(long), grown_short, (peak() - before) / 1024)
 @pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="reads the peak memory from Linux /proc")
 def test_streamed_run_keeps_its_memory_bounded(tmp_path):
     # 250001 samples x 53 channels = 106 MB of samples, then twice as many: a streamed run holds a few
-    # chunks of them (the core's, the one the background writer compresses, HDF5's chunk cache) and
-    # its times (8 bytes a sample), so its peak memory does not grow with the samples
+    # chunks of them (the core's, the one the background writer copies, the writer's buffer) and its
+    # times (8 bytes a sample), so its peak memory does not grow with the samples
     import subprocess
     import sys
 

@@ -192,26 +192,20 @@ class Results:
             attrs[f"diagnostics_{key}"] = np.asarray(value) if isinstance(value, list) else value
         return attrs
 
-    def save(self, path) -> Path:
+    def save(self, path, *, compress: bool = False) -> Path:
         """Writes the results to ``path``: NetCDF-4 for ``.nc``, ``.nc4``, ``.h5`` (read back by
         :func:`open_results`), CSV for ``.csv`` (``time`` and one column per channel, header
         ``name [unit]``); a ModelError (a ValueError) located at ``path`` for any other suffix or a folder
-        that does not exist. The file is written under a temporary
-        name and renamed into place when complete, so a good file at ``path`` is never left broken."""
-        from .resultsfile import ResultsWriter, output_target, rows_per_block, write_csv
+        that does not exist. The NetCDF channels are stored uncompressed, or with ``compress`` gzip-compressed
+        after the shuffle filter (smaller, several times slower to write; docs/results-file.md). The file is
+        written under a temporary name and renamed into place when complete, so a good file at ``path`` is
+        never left broken."""
+        from .resultsfile import output_target, save_netcdf, write_csv
 
         if output_target(path) == "csv":
             return write_csv(self, path)
-        writer = ResultsWriter(path, self._names, self._units, self._descriptions)
-        try:
-            block = rows_per_block(len(self._names))
-            for start in range(0, self.time.size, block):
-                stop = min(self.time.size, start + block)
-                writer.append(self.time[start:stop], self.channel_block(start, stop).T)
-        except BaseException:
-            writer.abort()
-            raise
-        return writer.finish(self.file_attributes())
+        return save_netcdf(path, self.time, self._names, self._units, self._descriptions, self.channel_block,
+                           self.file_attributes(), compress=compress)
 
     def model_toml(self) -> str:
         """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table."""

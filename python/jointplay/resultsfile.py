@@ -1,8 +1,8 @@
 """Results files: NetCDF-4 (HDF5) written with h5py, streamed while a run goes on, and CSV.
 
 The NetCDF file holds a ``time`` dimension and coordinate and one variable per
-channel on it (``units``, ``long_name``, ``description``), compressed (gzip with
-shuffle) in chunks, and CF-style global attributes. It is written under a
+channel on it (``units``, ``long_name``, ``description``), uncompressed (gzip
+with shuffle on request), and CF-style global attributes. It is written under a
 temporary name in the target folder and renamed into place only when it is
 complete, so that a good file is never replaced by a broken one; a run that
 stopped early goes to ``OUT.partial.nc`` instead (see :func:`partial_path`).
@@ -10,8 +10,9 @@ stopped early goes to ``OUT.partial.nc`` instead (see :func:`partial_path`).
 Why h5py and not ``xarray.to_netcdf``: attaching the ``time`` dimension to each
 variable one by one and, on reading, an unlimited ``time`` dimension cost time
 quadratic in the number of variables in h5netcdf. Here the dimension lists are
-written once at the end and ``time`` is a fixed-size dimension, so 1000
-channels write in about a second (``benches/bench_results_file.py``).
+written once at the end and ``time`` is a fixed-size dimension, and each
+variable is made by a few low-level HDF5 calls (:mod:`jointplay.resultslayout`):
+about 0.1 ms a channel (``benches/bench_results_file.py``).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from time import sleep
 import re
 import secrets
 from pathlib import Path
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -36,17 +38,19 @@ CSV_SUFFIX = ".csv"
 DEFAULT_MAX_FILE_BYTES = 2 * 1024**3
 #: Largest output of a run kept in memory (no results file) [bytes].
 DEFAULT_MAX_MEMORY_BYTES = 1024**3
-#: Marks files written by this module (``open_results`` reads older files with xarray).
-LAYOUT = "jointplay-netcdf4-v2"
-#: Samples per HDF5 chunk of a channel (32 KiB of float64).
-CHUNK_SAMPLES = 4096
-#: HDF5 chunk cache of each channel while writing [bytes]: two chunks, so that the memory of a streamed
-#: run stays bounded (the default cache of 1 MiB per dataset ends up holding the whole file until closed).
-_CHUNK_CACHE_BYTES = 2 * CHUNK_SAMPLES * 8
-#: Largest buffer of samples a writer gathers before writing them [bytes].
+#: Marks files written by this module (``open_results`` reads older files with xarray): v3 stores the
+#: channels uncompressed (contiguous when the run's length is known), v2 compressed them in chunks.
+LAYOUT = "jointplay-netcdf4-v3"
+#: Layouts whose channels :func:`~jointplay.results.open_results` reads on access (one variable per channel).
+LAYOUTS_READ_ON_ACCESS = ("jointplay-netcdf4-v2", LAYOUT)
+#: Largest block of samples read at once when results are copied [bytes].
 _BUFFER_BYTES = 64 * 2**20
-#: Scratch dataset holding the times while a run streams (``time`` is written at the end).
-_STREAMED_TIME = "_streamed_time"
+#: Largest buffer of samples a streaming writer gathers before writing them [bytes], as large as the
+#: core's chunks: a run of fewer samples (9709 of 53 channels, 679 of 771) is written once, at its end,
+#: as a saved one is; a longer one holds this buffer, the core's chunk and one chunk waiting.
+_WRITE_BUFFER_BYTES = 4 * 2**20
+#: Most samples of a channel in the buffer, and in one chunk of a growing variable (1 MiB).
+_MAX_BUFFER_SAMPLES = 2**17
 #: Wait between two looks at the writer's queue while a chunk is already waiting [s].
 _QUEUE_POLL = 0.002
 
@@ -237,60 +241,43 @@ class ResultsWriter:
     """Streams channels into a NetCDF-4 file: :meth:`append` chunk after chunk, then :meth:`finish`
     with the global attributes (renames into place) or :meth:`abort` (removes the temporary file).
 
-    Appends are gathered in a buffer of one HDF5 chunk (4096 samples) or at most
-    :data:`_BUFFER_BYTES` before they go to the file: each write to a variable costs about 60 us
-    whatever its length, which adds up over thousands of channels written a few samples at a time.
-    Each append is written (and compressed) by a background thread while the caller goes on: the
-    simulation, which runs with the GIL released, computes the next chunk meanwhile. At most one
-    chunk waits while another is written (their copies are the only extra memory), and an error of
+    Appends are gathered in a buffer of at most :data:`_WRITE_BUFFER_BYTES` before they go to the
+    file, one write per channel and buffer (HDF5 costs tens of microseconds a write whatever its
+    length, which adds up over thousands of channels written a few samples at a time). The channels'
+    variables are made at the first write: contiguous, of the run's length, when the whole run fits
+    in the buffer (as :func:`save_netcdf` writes them), otherwise chunked and growing. Each append is
+    copied into the buffer (and full buffers written) by a background thread while the caller goes
+    on: the simulation, which runs with the GIL released, computes the next chunk meanwhile. At most
+    one chunk waits while another is taken (their copies are the only extra memory), and an error of
     a background write is raised by the next call. An append names the index of its first sample:
     the same chunk appended again (after a Ctrl-C interrupted the call) is written once."""
 
-    def __init__(self, path: str | os.PathLike, names: list[str], units: list[str], descriptions: list[str]):
-        import h5py
+    def __init__(self, path: str | os.PathLike, names: list[str], units: list[str], descriptions: list[str],
+                 compress: bool = False):
+        from .resultslayout import FileLayout
 
         self.path = Path(path)
         self.names = list(names)
+        self._attributes = channel_attributes(self.names, units, descriptions)  # checks the names first
+        self._compress = compress
         self.temporary = temporary_path(self.path)
         #: Samples appended (written or buffered).
         self.samples = 0
         self._written = 0
-        self._capacity = max(1, min(CHUNK_SAMPLES, _BUFFER_BYTES // (8 * (len(self.names) + 1))))
-        self._buffer = np.empty((len(self.names) + 1, self._capacity))  # row 0: time; then the channels
+        self._capacity = max(1, min(_MAX_BUFFER_SAMPLES, _WRITE_BUFFER_BYTES // (8 * (len(self.names) + 1))))
+        self._buffer = np.empty((len(self.names), self._capacity))
         self._queue: queue.SimpleQueue = queue.SimpleQueue()  # (first sample, times, values); None ends
         self._write_error: BaseException | None = None
         #: Samples handed to the background writer.
         self._offered = 0
-        #: The times appended, kept in memory as well: the results hold them anyway, and reading them
-        #: back from the file at the end would decompress them again.
+        #: The times appended, kept in memory: the results hold them anyway, and ``time`` is written
+        #: from them at the end.
         self._time_parts: list[np.ndarray] = []
-        self._file = h5py.File(self.temporary, "w", track_order=True, libver=("v108", "latest"),
-                               rdcc_nbytes=_CHUNK_CACHE_BYTES)
-        self._channels: list = []
+        self._channels: list | None = None  # the variables, made at the first write
         self._writer: threading.Thread | None = None
-        try:
-            self._time = self._resizable(_STREAMED_TIME)
-            for name, unit, description in zip(self.names, units, descriptions):
-                self._channels.append(self._channel(name, unit, description))
-        except BaseException:
-            self.abort()
-            raise
+        self._file = FileLayout(self.temporary)
         self._writer = threading.Thread(target=self._write_queued, name="jointplay results writer", daemon=True)
         self._writer.start()
-
-    def _channel(self, name: str, unit: str, description: str):
-        """The variable of one channel, with its attributes."""
-        dataset = self._resizable(variable_name(name))
-        if variable_name(name) != name:
-            dataset.attrs["channel"] = name
-        dataset.attrs["units"] = unit
-        dataset.attrs["long_name"] = description or name
-        dataset.attrs["description"] = description
-        return dataset
-
-    def _resizable(self, name: str):
-        return self._file.create_dataset(name, shape=(0,), maxshape=(None,), dtype="f8", chunks=(CHUNK_SAMPLES,),
-                                         compression="gzip", compression_opts=1, shuffle=True)
 
     def append(self, times: np.ndarray, values: np.ndarray, start: int | None = None) -> None:
         """Appends ``len(times)`` samples, the first of index ``start`` (default: the next one);
@@ -312,14 +299,14 @@ class ResultsWriter:
         self._offered = start + times.size
 
     def _write_queued(self) -> None:
-        """The background writer: writes the queued chunks in order until ``None``."""
+        """The background writer: takes the queued chunks in order until ``None``."""
         while (item := self._queue.get()) is not None:
             start, times, values = item
             if start < self.samples or self._write_error is not None:
                 continue  # taken already (handed over again after an interrupt), or writing failed
             try:
                 self._time_parts.append(times)
-                self._append(times, values)
+                self._append(values)
             except BaseException as exc:  # raised by the next call, in the appending thread
                 self._write_error = exc
 
@@ -329,41 +316,34 @@ class ResultsWriter:
             raise error
 
     def _wait(self) -> None:
-        """Lets the background writer write what is queued and stop, then raises its error if any."""
+        """Lets the background writer take what is queued and stop, then raises its error if any."""
         if self._writer is not None:
             self._queue.put(None)
             self._writer.join()
             self._writer = None
         self._raise_write_error()
 
-    def _append(self, times: np.ndarray, values: np.ndarray) -> None:
-        """Buffers the samples and writes every full buffer."""
-        n = times.size
+    def _append(self, values: np.ndarray) -> None:
+        """Buffers the samples (channel by channel) and writes every full buffer."""
+        n = values.shape[0]
         done = 0
         while done < n:
             held = self.samples - self._written
             take = min(n - done, self._capacity - held)
-            self._buffer[0, held:held + take] = times[done:done + take]
-            self._buffer[1:, held:held + take] = values[done:done + take].T
+            self._buffer[:, held:held + take] = values[done:done + take].T
             self.samples += take
             done += take
             if self.samples - self._written == self._capacity:
-                self._flush()
+                self._flush(final=False)
 
-    def _flush(self) -> None:
-        """Writes the buffered samples to the end of every variable (low-level calls: the high-level
-        ones cost several times more per variable)."""
-        import h5py
-
-        n = self.samples - self._written
-        if n == 0:
-            return
-        memory = h5py.h5s.create_simple((n,))
-        for row, dataset in enumerate([self._time, *self._channels]):
-            dataset.id.set_extent((self.samples,))
-            space = dataset.id.get_space()
-            space.select_hyperslab((self._written,), (n,))
-            dataset.id.write(memory, space, np.ascontiguousarray(self._buffer[row, :n]))
+    def _flush(self, final: bool) -> None:
+        """Writes the buffered samples to the end of every variable, making the variables first at the
+        first write: of the run's length when it is the last write (``final``), growing otherwise."""
+        if self._channels is None:
+            samples = self.samples if final else None
+            self._channels = self._file.channels([variable_name(n) for n in self.names], self._attributes,
+                                                 samples, self._compress, block=self._capacity)
+        self._file.write(self._channels, self._written, self._buffer[:, :self.samples - self._written])
         self._written = self.samples
 
     def times(self) -> np.ndarray:
@@ -374,17 +354,14 @@ class ResultsWriter:
         return self._time_parts[0]
 
     def finish(self, attrs: dict[str, Any], *, complete: bool = True) -> Path:
-        """Writes ``time`` and the dimension lists and attributes, closes the file and renames it to
-        the target path (complete) or to :func:`partial_path` (a run that stopped early). Returns the path."""
+        """Writes the last samples, ``time``, the dimension lists and the global attributes, closes the
+        file and renames it to the target path (complete) or to :func:`partial_path` (a run that stopped
+        early). Returns the path."""
         try:
             self._wait()
-            self._flush()
-            self._write_time()
-            self._attach_dimension()
-            for key, value in attrs.items():
-                if value is not None:
-                    self._file.attrs[key] = _attribute(value)
-            self._file.close()
+            self._flush(final=True)
+            time = self._file.time(self.times(), TIME_ATTRIBUTES)
+            self._file.close_with(time, self._channels, _global_attributes(attrs))
         except BaseException:
             self.abort()
             raise
@@ -403,36 +380,61 @@ class ResultsWriter:
         finally:
             self.temporary.unlink(missing_ok=True)
 
-    def _write_time(self) -> None:
-        """The coordinate ``time`` as a fixed-size dimension (an unlimited one makes readers slow)."""
-        n = self.samples
-        packed = {"chunks": (min(n, CHUNK_SAMPLES),), "compression": "gzip", "compression_opts": 1,
-                  "shuffle": True} if n else {}  # (no chunks in an empty dataset)
-        time = self._file.create_dataset("time", shape=(n,), dtype="f8", **packed)
-        if n:
-            time[:] = self.times()
-        del self._file[_STREAMED_TIME]
-        time.attrs.update({"units": "s", "long_name": "time", "standard_name": "time", "axis": "T",
-                           "description": "time"})
-        time.make_scale("time")
-        time.attrs["_Netcdf4Dimid"] = np.int32(0)
-        self._time = time
 
-    def _attach_dimension(self) -> None:
-        """``DIMENSION_LIST`` of every variable and the ``REFERENCE_LIST`` of ``time``, each written
-        once (``attach_scale`` rewrites the reference list at every call)."""
-        import h5py
+#: Attributes of the coordinate ``time`` (CF).
+TIME_ATTRIBUTES = [("units", "s"), ("long_name", "time"), ("standard_name", "time"), ("axis", "T"),
+                   ("description", "time")]
 
-        reference = h5py.ref_dtype
-        dimension_list = np.empty((1,), dtype=object)
-        dimension_list[0] = np.array([self._time.ref], dtype=reference)
-        for dataset in self._channels:
-            dataset.attrs.create("DIMENSION_LIST", dimension_list, dtype=h5py.vlen_dtype(reference))
-        if self._channels:
-            references = np.empty(len(self._channels), dtype=[("dataset", reference), ("dimension", np.int32)])
-            references["dataset"] = [d.ref for d in self._channels]
-            references["dimension"] = 0
-            self._time.attrs.create("REFERENCE_LIST", references)
+
+def channel_attributes(names: list[str], units: list[str], descriptions: list[str]) -> list[list[tuple[str, str]]]:
+    """The text attributes of each channel's variable, in order: ``channel`` (its name, when the
+    variable's differs), ``units``, ``long_name`` (the description, or the name) and ``description``.
+    Raises ValueError when two channels would have one variable (checked before a file is made)."""
+    variables = [variable_name(name) for name in names]
+    if len(set(variables)) != len(variables):
+        seen: set[str] = set()
+        twice = next(v for v in variables if v in seen or seen.add(v))
+        raise ValueError(f"two channels are named {twice!r}: a results file holds one variable per name")
+    attributes = []
+    for name, variable, unit, description in zip(names, variables, units, descriptions):
+        attrs = [("channel", name)] if variable != name else []
+        attrs += [("units", unit), ("long_name", description or name), ("description", description)]
+        attributes.append(attrs)
+    return attributes
+
+
+def _global_attributes(attrs: dict[str, Any]) -> dict[str, Any]:
+    return {key: _attribute(value) for key, value in attrs.items() if value is not None}
+
+
+def save_netcdf(path: str | os.PathLike, time: np.ndarray, names: list[str], units: list[str],
+                descriptions: list[str], block: Callable[[int, int], np.ndarray], attrs: dict[str, Any],
+                compress: bool = False) -> Path:
+    """Writes a NetCDF-4 results file at ``path``: ``time`` [s], one variable per channel with the
+    values ``block(start, stop)`` gives (channels x samples, asked for block after block of
+    :func:`rows_per_block` samples) and the global attributes ``attrs``. Each channel is a contiguous
+    variable of the run's length, or with ``compress`` chunked and gzip-compressed after the shuffle
+    filter. Written under a temporary name, renamed into place when complete."""
+    from .resultslayout import FileLayout
+
+    path = Path(path)
+    attributes = channel_attributes(names, units, descriptions)
+    temporary = temporary_path(path)
+    layout = FileLayout(temporary)
+    try:
+        n = len(time)
+        channels = layout.channels([variable_name(name) for name in names], attributes, n, compress)
+        rows = rows_per_block(len(names))
+        for start in range(0, n, rows):
+            stop = min(n, start + rows)
+            layout.write(channels, start, block(start, stop))
+        layout.close_with(layout.time(time, TIME_ATTRIBUTES), channels, _global_attributes(attrs))
+        os.replace(temporary, path)
+    except BaseException:
+        layout.close()
+        temporary.unlink(missing_ok=True)
+        raise
+    return path
 
 
 def variable_name(channel: str) -> str:
@@ -480,7 +482,7 @@ def is_streamed_layout(path: str | os.PathLike) -> bool:
 
     with h5py.File(path, "r") as f:
         layout = f.attrs.get("jointplay_layout", "")
-    return (layout.decode() if isinstance(layout, bytes) else str(layout)) == LAYOUT
+    return (layout.decode() if isinstance(layout, bytes) else str(layout)) in LAYOUTS_READ_ON_ACCESS
 
 
 def read_file(path: str | os.PathLike) -> tuple[np.ndarray, list[str], list[str], list[str], dict[str, Any]]:
