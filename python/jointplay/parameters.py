@@ -856,7 +856,7 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
           "`baumgarte` (projection after a step strains a beam and breaks the implicit method's history)",
           "projection", of=STABILIZATIONS),
     Param("formulation", "choice", "form of the equations of motion: `auto` takes joint coordinates where they were "
-          "measured faster, for rigid bodies whose ideal joints form a tree of at most 6 joint coordinates (every "
+          "measured faster, for rigid bodies whose ideal joints form a tree of at most 8 joint coordinates (every "
           "clearance joint cuts the loop it closes; no constraint equations to solve), else absolute coordinates "
           "with constraints (`jointplay check` and the results say which and why; docs/theory/planar-formulation.md, "
           "\"Choosing the formulation\"); `absolute` always uses the latter, `joint_coordinates` refuses a model "

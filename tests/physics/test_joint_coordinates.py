@@ -48,7 +48,7 @@ def test_a_tree_runs_in_joint_coordinates_by_default_and_says_so(runs):
 def test_the_reason_for_the_formulation_is_kept_in_the_results_file(runs, tmp_path):
     # the core's rule says why; a saved and reopened run still says so
     reasons = {f: r.statistics["formulation_reason"] for f, r in runs.items()}
-    assert reasons == {"auto": "the ideal joints form a tree of 2 joint coordinates (at most 6), so no constraint "
+    assert reasons == {"auto": "the ideal joints form a tree of 2 joint coordinates (at most 8), so no constraint "
                                "equation is solved", "absolute": "requested"}
     runs["auto"].save(tmp_path / "run.nc")
     again = jp.open_results(tmp_path / "run.nc")

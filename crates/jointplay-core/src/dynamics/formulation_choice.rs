@@ -14,12 +14,14 @@ use super::Model;
 use crate::body::BodyKind;
 
 /// Most joint coordinates for which `auto` takes joint coordinates: the largest
-/// tree where they were measured faster in every run. Measured (CPU medians of
-/// interleaved rounds, `benches/bench_scaling.py --series rigid_chain --sizes ...`:
-/// a chain of bars pinned end to end, falling 0.1 s, Dormand-Prince), joint over
-/// absolute time 0.82 at 2 coordinates, 0.73 at 4, 0.91 at 6, 1.01 at 8, 1.03 at 10,
-/// 1.31 at 12 and 1.79 at 16 (15 rounds); the two tie at 8.
-pub const MAX_JOINT_COORDINATES: usize = 6;
+/// tree where they never lost. Measured (CPU medians of interleaved rounds,
+/// `benches/bench_scaling.py --series rigid_chain --sizes ... --chain-time T`: a
+/// chain of bars pinned end to end, falling, Dormand-Prince), joint over absolute
+/// time over 1 s (9 rounds): 0.60 at 2 coordinates, 0.50 at 4, 0.71 at 6, 0.78 at
+/// 8, 0.91 at 10, 1.03 at 12, 1.35 at 16; over 0.1 s (15 rounds), where the
+/// per-run costs weigh more: 0.87 at 2, 0.76 at 4, 0.90 at 6, 0.96 at 8, 0.99 at
+/// 10, 1.23 at 12, 1.65 at 16.
+pub const MAX_JOINT_COORDINATES: usize = 8;
 
 /// The formulation a run integrates and a one-line reason for it.
 #[derive(Clone, Debug, PartialEq, Eq)]

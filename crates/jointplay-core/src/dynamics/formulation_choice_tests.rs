@@ -49,21 +49,22 @@ fn auto(m: &Model) -> FormulationChoice {
 fn a_small_tree_of_ideal_joints_runs_in_joint_coordinates_up_to_the_measured_size() {
     let small = auto(&chain(MAX_JOINT_COORDINATES, 0));
     assert_eq!(small.formulation, Formulation::JointCoordinates);
-    assert_eq!(small.reason, "the ideal joints form a tree of 6 joint coordinates (at most 6), so no constraint equation is solved");
+    assert_eq!(small.reason, "the ideal joints form a tree of 8 joint coordinates (at most 8), so no constraint equation is solved");
     let large = auto(&chain(MAX_JOINT_COORDINATES + 1, 0));
     assert_eq!(large.formulation, Formulation::Absolute);
     assert_eq!(
         large.reason,
-        "the tree has 7 joint coordinates, more than 6, where its dense mass matrix costs more than the constraints it removes"
+        "the tree has 9 joint coordinates, more than 8, where its dense mass matrix costs more than the constraints it removes"
     );
 }
 
 #[test]
 fn a_clearance_joint_counts_by_the_coordinates_of_the_body_it_frees() {
-    // the first pin as a clearance joint frees bar0 (3 coordinates) and the four others
-    // keep one each: 7 coordinates, too many, where the 7-bar chain of ideal pins has 7 too
-    assert_eq!(auto(&chain(4, 1)).formulation, Formulation::JointCoordinates);
-    assert!(auto(&chain(5, 1)).reason.starts_with("the tree has 7 joint coordinates"), "{}", auto(&chain(5, 1)).reason);
+    // the first pin as a clearance joint frees bar0 (3 coordinates) and the others keep one
+    // each: 6 bars give 8 coordinates, 7 bars 9, too many, where 7 ideal pins give 7
+    assert_eq!(auto(&chain(6, 1)).formulation, Formulation::JointCoordinates);
+    assert_eq!(auto(&chain(7, 0)).formulation, Formulation::JointCoordinates);
+    assert!(auto(&chain(7, 1)).reason.starts_with("the tree has 9 joint coordinates"), "{}", auto(&chain(7, 1)).reason);
 }
 
 #[test]
@@ -99,7 +100,7 @@ fn a_loop_of_ideal_joints_runs_in_absolute_coordinates_and_refuses_joint_coordin
 fn an_explicit_request_is_kept_whatever_the_rule_would_choose() {
     let large = chain(MAX_JOINT_COORDINATES + 1, 0);
     let asked = choose_formulation(&large, Formulation::JointCoordinates).unwrap();
-    assert_eq!((asked.formulation, asked.reason.as_str()), (Formulation::JointCoordinates, "requested (7 joint coordinates)"));
+    assert_eq!((asked.formulation, asked.reason.as_str()), (Formulation::JointCoordinates, "requested (9 joint coordinates)"));
     let asked = choose_formulation(&chain(2, 0), Formulation::Absolute).unwrap();
     assert_eq!((asked.formulation, asked.reason.as_str()), (Formulation::Absolute, "requested"));
 }
