@@ -14,7 +14,9 @@ use super::Model;
 use crate::body::BodyKind;
 
 /// Most joint coordinates for which `auto` takes joint coordinates: the largest
-/// tree where they never lost. Measured (CPU medians of interleaved rounds,
+/// tree where they were faster in every round of the long runs (0.71-0.80 at 8;
+/// at 10 up to 1.02) and no slower in the short ones (medians 0.96-1.01 at 8 over
+/// four runs). Measured (CPU medians of interleaved rounds,
 /// `benches/bench_scaling.py --series rigid_chain --sizes ... --chain-time T`: a
 /// chain of bars pinned end to end, falling, Dormand-Prince), joint over absolute
 /// time over 1 s (9 rounds): 0.60 at 2 coordinates, 0.50 at 4, 0.71 at 6, 0.78 at
