@@ -96,3 +96,36 @@ def test_spin_up_beam_benchmark_runs_without_exudyn(capsys, monkeypatch):
                                                    "jointplay NDF, 2 linear elements"]
     assert report["verdicts"] == []
     assert "Exudyn rows: skipped, exudyn is not installed" in capsys.readouterr().out
+
+
+def test_scaling_benchmark_quick_mode_runs_every_series_and_fits_exponents(capsys):
+    # exudyn is optional: without it the beam series has jointplay rows only
+    bench = load("bench_scaling")
+    report = bench.main(["--quick", "--markdown"])
+    with_exudyn = importlib.util.find_spec("exudyn") is not None
+    rows = {(r.series, r.size, r.variant): r for r in report["rows"]}
+    beam_codes = ["absolute", *(["Exudyn"] if with_exudyn else [])]
+    assert list(rows) == [
+        *[("rigid_chain", n, f) for n in (2, 4) for f in ("joint_coordinates", "absolute")],
+        *[("clearance_chain", k, f) for k in (1, 2) for f in ("joint_coordinates", "absolute")],
+        *[("beam_mesh", n, code) for n in (2, 4) for code in beam_codes],
+        ("modal_body", 2, "absolute"), ("modal_body", 4, "absolute"), ("breaker", 8, "absolute")]
+    for r in report["rows"]:
+        assert r.case.values("cpu") and r.evaluations() > 0
+    # the rule of auto: a 4-bar chain in joint coordinates, bodies on clearance joints only in absolute ones
+    assert rows[("rigid_chain", 4, "joint_coordinates")].chosen == "yes"
+    assert rows[("clearance_chain", 2, "absolute")].chosen == "yes"
+    assert rows[("clearance_chain", 2, "joint_coordinates")].chosen == "no"
+    # the same model in both forms takes the same evaluations where neither has constraints to solve
+    assert rows[("clearance_chain", 2, "joint_coordinates")].evaluations() == rows[("clearance_chain", 2, "absolute")].evaluations()
+    # the beam rows stay near the reference (mm-level peak deflections of about 0.5 m)
+    assert all(0 <= rows[("beam_mesh", n, code)].tip_error() < 1e-3 for n in (2, 4) for code in beam_codes)
+    assert [(s, v) for s, v, *_ in report["exponents"]] == [
+        ("rigid_chain", "joint_coordinates"), ("rigid_chain", "absolute"), ("clearance_chain", "joint_coordinates"),
+        ("clearance_chain", "absolute"), *[("beam_mesh", code) for code in beam_codes], ("modal_body", "absolute"),
+        ("breaker", "absolute")]
+    out = capsys.readouterr().out
+    assert "| rigid_chain | 4 | joint_coordinates |" in out
+    assert ("Exudyn / jointplay CPU time" in out) == with_exudyn
+    if not with_exudyn:
+        assert "Exudyn rows: skipped, exudyn is not installed" in out

@@ -51,6 +51,8 @@ def test_check_says_which_formulation_the_simulation_uses():
     # the dry joint cuts the slider-crank's loop: a tree of ideal joints, two joint coordinates
     output = " ".join(invoke("check", DRY).output.split())
     assert "formulation (auto): joint coordinates, 2 of them" in output
+    # the reason is the core's rule: a small tree (docs/theory/planar-formulation.md, "Choosing the formulation")
+    assert "because the ideal joints form a tree of 2 joint coordinates (at most 8)" in output
     # the ideal slider-crank is a closed loop of ideal joints
     output = " ".join(invoke("check", IDEAL).output.split())
     assert "formulation (auto): absolute coordinates with constraints, because joint" in output

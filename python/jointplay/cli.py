@@ -309,11 +309,11 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
               + f"constraint equations {info['n_equations']}, "
               f"degrees of freedom {dof} ({2 * len(clearance)} from {len(clearance)} clearance joint(s), "
               + (f"{elastic} elastic of the {flexible_text}, " if elastic else "") + f"{free} not driven)")
-    if info.get("joint_coordinates") is not None:
-        out.print(f"formulation (auto): joint coordinates, {info['joint_coordinates']} of them: the ideal joints "
-                  "form a tree, so no constraint equation is solved while simulating")
-    elif info.get("absolute_because"):
-        out.print(f"formulation (auto): absolute coordinates with constraints, because {info['absolute_because']}")
+    if info["formulation"] == "joint_coordinates":
+        out.print(f"formulation (auto): joint coordinates, {info['joint_coordinates']} of them, because "
+                  f"{info['formulation_reason']}")
+    else:
+        out.print(f"formulation (auto): absolute coordinates with constraints, because {info['formulation_reason']}")
     if info.get("redundant_equations"):
         out.print(f"[yellow]note:[/] {info['redundant_equations']} constraint equation(s) are redundant (dependent on "
                   f"the others; elements involved: {', '.join(info['dependent_elements'])}). The motion is "

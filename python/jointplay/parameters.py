@@ -855,9 +855,11 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
     Param("stabilization", "choice", "constraint drift control (absolute formulation); with flexible links, "
           "`baumgarte` (projection after a step strains a beam and breaks the implicit method's history)",
           "projection", of=STABILIZATIONS),
-    Param("formulation", "choice", "form of the equations of motion: joint coordinates when the ideal joints form a "
-          "tree (every clearance joint cuts the loop it closes; no constraint equations to solve), else absolute "
-          "coordinates with constraints; `absolute` always uses the latter, `joint_coordinates` refuses a model "
+    Param("formulation", "choice", "form of the equations of motion: `auto` takes joint coordinates where they were "
+          "measured faster, for rigid bodies whose ideal joints form a tree of at most 8 joint coordinates (every "
+          "clearance joint cuts the loop it closes; no constraint equations to solve), else absolute coordinates "
+          "with constraints (`jointplay check` and the results say which and why; docs/theory/planar-formulation.md, "
+          "\"Choosing the formulation\"); `absolute` always uses the latter, `joint_coordinates` refuses a model "
           "with a closed loop of ideal joints", "auto", of=FORMULATIONS),
     Param("initial", "choice", "how the run starts: `assembly`, the description's positions and velocities made "
           "consistent with the joints (a flexible body in the rigid motion the mechanism gives it), or `equilibrium`, "

@@ -45,6 +45,19 @@ def test_a_tree_runs_in_joint_coordinates_by_default_and_says_so(runs):
     assert ideal.simulate(1e-3, output_step=1e-4).statistics["formulation"] == "absolute"
 
 
+def test_the_reason_for_the_formulation_is_kept_in_the_results_file(runs, tmp_path):
+    # the core's rule says why; a saved and reopened run still says so
+    reasons = {f: r.statistics["formulation_reason"] for f, r in runs.items()}
+    assert reasons == {"auto": "the ideal joints form a tree of 2 joint coordinates (at most 8), so no constraint "
+                               "equation is solved", "absolute": "requested"}
+    runs["auto"].save(tmp_path / "run.nc")
+    again = jp.open_results(tmp_path / "run.nc")
+    assert again.statistics["formulation"] == "joint_coordinates"
+    assert again.statistics["formulation_reason"] == reasons["auto"]
+    ideal = jp.load(IDEAL).simulate(1e-3, output_step=1e-4).statistics["formulation_reason"]
+    assert "closes a loop of ideal joints" in ideal
+
+
 def test_both_formulations_agree_up_to_the_first_impact(runs):
     # before the first impact the motion is smooth and both runs are converged: positions, the
     # slider's acceleration and the reaction of the guide agree to integration accuracy

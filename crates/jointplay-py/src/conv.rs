@@ -1,6 +1,6 @@
 //! All conversions between Python objects and core types live here.
 
-use jointplay_core::dynamics::{ChannelInfo, Formulation, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
+use jointplay_core::dynamics::{choose_formulation, ChannelInfo, Formulation, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::body::BodyKind;
 use jointplay_core::modal::FrameReference;
 use jointplay_core::integrate::{JacobianMethod, Method};
@@ -128,6 +128,7 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
     stats.set_item("jacobian_force_evaluations", s.jacobian_force_evaluations)?;
     stats.set_item("factorizations", s.factorizations)?;
     stats.set_item("formulation", o.formulation.name())?;
+    stats.set_item("formulation_reason", &o.formulation_reason)?;
     out.set_item("statistics", stats)?;
     let g = &o.diagnostics;
     let diag = PyDict::new(py);
@@ -282,6 +283,10 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
             d.set_item("absolute_because", why)?;
         }
     }
+    // what `auto` chooses, and why (the rule of the core, written once there)
+    let auto = choose_formulation(m, Formulation::Auto).map_err(PyValueError::new_err)?;
+    d.set_item("formulation", auto.formulation.name())?;
+    d.set_item("formulation_reason", auto.reason)?;
     channel_infos(py, &d, &m.channel_infos())?;
     Ok(d)
 }

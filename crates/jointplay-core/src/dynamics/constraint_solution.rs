@@ -132,10 +132,12 @@ pub(crate) fn factor(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace) 
 /// The regular path: patterned `L D L^T` of the dynamic rows or dense Cholesky.
 fn factor_regular(model: &Model, rows: usize, q: &[f64], ws: &mut Workspace) -> Result<FactorKind, RankDeficiency> {
     if rows == model.schur_factor.size() {
+        // only the factor's stored values: clearing costs what factoring does, not rows^2
+        let stored = model.schur_factor.storage_len();
         let mut schur = std::mem::take(&mut ws.schur);
-        schur[..rows * (rows + 1)].fill(0.0);
+        schur[..stored].fill(0.0);
         add_terms(model, rows, q, ws, &mut schur, |term| term.entry as usize);
-        let factored = model.schur_factor.factor(&mut schur[..rows * (rows + 1)]);
+        let factored = model.schur_factor.factor(&mut schur[..stored]);
         ws.schur = schur;
         factored?;
         Ok(FactorKind::Pattern)

@@ -4,6 +4,7 @@
 use super::channels::ChannelRead;
 use super::trajectory::{SampleSink, Trajectory};
 use super::equations::{update_frames, Stabilization};
+use super::formulation_choice::{choose_formulation, FormulationChoice};
 use super::joint_coordinates::{self, Formulation, JointTree};
 use super::extrema::ExtremaTracker;
 use super::frame::Marker;
@@ -25,7 +26,7 @@ pub struct SimulationOptions {
     /// the velocity constraints [m/s or rad/s]; `None`: follow the integrator's
     /// tolerances ([`SimulationOptions::projection_tolerance`]).
     pub position_tolerance: Option<f64>,
-    /// Form of the equations of motion (joint coordinates for a tree of ideal joints by default).
+    /// Form of the equations of motion (`Auto`: by the measured rule of [`choose_formulation`]).
     pub formulation: Formulation,
     /// Largest output allowed, samples x channels x 8 [bytes]; `None`: no limit.
     /// The run stops with [`SimulationError::OutputBudgetExceeded`] before exceeding it.
@@ -127,6 +128,8 @@ pub struct SimulationOutcome {
     pub error: Option<SimulationError>,
     /// The form of the equations that was integrated (`Absolute` or `JointCoordinates`).
     pub formulation: Formulation,
+    /// Why that form, in one line ([`FormulationChoice::reason`]).
+    pub formulation_reason: String,
 }
 
 /// Integrates `model` from `state` to `t_end` [s]; `state` is advanced in place.
@@ -177,12 +180,13 @@ fn run(
     }
     let mut diagnostics = Diagnostics { projection_tolerance: options.projection_tolerance(), ..Diagnostics::default() };
     let t0 = state.time;
-    let tree = match joint_tree(model, options.formulation, t0) {
-        Ok(tree) => tree,
+    let (tree, choice) = match joint_tree(model, options.formulation, t0) {
+        Ok(chosen) => chosen,
         Err(error) => {
             let tracking = new_tracking(model, 0);
             let extrema = summarize(model, &tracking.tracker, &tracking.channels, &model.initial_memory());
-            return SimulationOutcome { trajectory, statistics: Statistics::default(), diagnostics, extrema, error: Some(error), formulation: options.formulation };
+            let formulation_reason = error.to_string();
+            return SimulationOutcome { trajectory, statistics: Statistics::default(), diagnostics, extrema, error: Some(error), formulation: options.formulation, formulation_reason };
         }
     };
     ws.joint.active = tree.is_some();
@@ -237,20 +241,21 @@ fn run(
         false => name_likely_cause(model, e, &ws),
     });
     let error = error.map(|e| super::singular_diagnosis::diagnose_toggle(model, e, t0, state.time, state.coordinates(), &mut ws));
-    let formulation = if tree.is_some() { Formulation::JointCoordinates } else { Formulation::Absolute };
-    SimulationOutcome { trajectory, statistics, diagnostics, extrema, error, formulation }
+    SimulationOutcome { trajectory, statistics, diagnostics, extrema, error, formulation: choice.formulation, formulation_reason: choice.reason }
 }
 
-/// The joint tree to integrate in, if the formulation asks for it and the model has one.
-fn joint_tree(model: &Model, formulation: Formulation, t0: f64) -> Result<Option<&JointTree>, SimulationError> {
-    match (formulation, &model.joint_tree) {
-        (Formulation::Absolute, _) | (Formulation::Auto, Err(_)) => Ok(None),
-        (_, Ok(tree)) => Ok(Some(tree)),
-        (Formulation::JointCoordinates, Err(why)) => Err(SimulationError::InvalidInput {
-            time: t0,
-            message: format!("the joint-coordinate formulation needs a tree of ideal joints, but {why}; use the absolute formulation"),
-        }),
-    }
+/// The formulation `formulation` resolves to ([`choose_formulation`]) with the joint tree to
+/// integrate in when it is joint coordinates.
+fn joint_tree(model: &Model, formulation: Formulation, t0: f64) -> Result<(Option<&JointTree>, FormulationChoice), SimulationError> {
+    let choice = choose_formulation(model, formulation).map_err(|why| SimulationError::InvalidInput {
+        time: t0,
+        message: format!("the joint-coordinate formulation needs a tree of ideal joints, but {why}; use the absolute formulation"),
+    })?;
+    let tree = match (choice.formulation, &model.joint_tree) {
+        (Formulation::JointCoordinates, Ok(tree)) => Some(tree),
+        _ => None,
+    };
+    Ok((tree, choice))
 }
 
 /// The joint state `[theta, theta_dot, z]` of the (assembled) body-space state `y`.

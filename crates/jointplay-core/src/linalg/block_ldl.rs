@@ -91,6 +91,11 @@ impl BlockLdl {
         self.groups.iter().map(|g| g.rows.len() * (g.rows.len() + 1) / 2).sum()
     }
 
+    /// Values stored: each group's square and its inverse pivots.
+    pub fn storage_len(&self) -> usize {
+        self.groups.iter().map(|g| g.rows.len() * (g.rows.len() + 1)).sum()
+    }
+
     /// Storage index of the lower entry `(i, j)`, `i >= j`, of two rows of one group.
     pub fn storage_index(&self, i: usize, j: usize) -> usize {
         let ((gi, li), (gj, lj)) = (self.place[i], self.place[j]);

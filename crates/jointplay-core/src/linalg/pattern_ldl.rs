@@ -37,15 +37,23 @@ impl PatternLdl {
         }
     }
 
-    /// Where the lower entry `(i, j)` of the matrix is stored (the buffer holds `n * (n + 1)` values).
+    /// Where the lower entry `(i, j)` of the matrix is stored (below [`PatternLdl::storage_len`]).
     pub fn storage_index(&self, i: usize, j: usize) -> usize {
         match self {
             Self::Groups(f) => f.storage_index(i, j),
-            Self::Sparse(f) => i * f.size() + j,
+            Self::Sparse(f) => f.storage_index(i, j),
         }
     }
 
-    /// Factors the matrix stored in `a` (`n * (n + 1)` values) in place (entries outside the pattern zero).
+    /// Values the factor stores (at most `n * (n + 1)`): what a factorisation clears and reads.
+    pub fn storage_len(&self) -> usize {
+        match self {
+            Self::Groups(f) => f.storage_len(),
+            Self::Sparse(f) => f.factor_nonzeros(),
+        }
+    }
+
+    /// Factors the matrix stored in `a` ([`PatternLdl::storage_len`] values) in place (fill-in entries zero).
     pub fn factor(&self, a: &mut [f64]) -> Result<(), RankDeficiency> {
         match self {
             Self::Groups(f) => f.factor(a),

@@ -32,7 +32,8 @@ pub use tree::{EdgeCoordinate, EdgeJoint, JointTree, TreeEdge};
 /// Which form of the equations of motion a simulation integrates.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Formulation {
-    /// Joint coordinates when the ideal joints form a tree, else absolute coordinates.
+    /// By the measured rule of [`crate::dynamics::choose_formulation`]: joint coordinates for a small
+    /// tree of ideal joints, else absolute coordinates.
     #[default]
     Auto,
     /// Absolute coordinates of every body with constraint equations and multipliers.
