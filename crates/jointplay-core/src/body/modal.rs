@@ -35,7 +35,7 @@ use crate::modal::{check_free_structure, craig_bampton_modes, dot, BodyMassSolve
 
 /// Most modes of one body: the hot loop keeps its vectors on the stack (an
 /// evaluation costs about `5 m^2` multiply-adds of the body's own terms and
-/// `3 m^2` per mass solve).
+/// `2.5 m^2` per mass solve).
 pub const MAX_MODES: usize = 64;
 
 /// Most nodes of a structure given by matrices: its reduction is dense

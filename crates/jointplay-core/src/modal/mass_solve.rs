@@ -28,8 +28,8 @@
 //! exact (no expansion in `eta` is truncated). `Mbar x = g` is then
 //! `x_r = S^-1 (g_r - [C_t^T g_f; c . g_f])` and
 //! `x_f = M_ee^-1 g_f - C_t x_(x,y) - c x_phi`: per solve, `G eta` and
-//! `Q eta` (2 m^2 multiply-adds), the constant factor's two triangular solves
-//! (m^2), and O(m) for the rest.
+//! `eta^T Q eta` (`1.5 m^2` multiply-adds, `Q` symmetric), the constant
+//! factor's two triangular solves (`m^2`), and O(m) for the rest.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -131,12 +131,12 @@ impl BodyMassSolve {
         let m = self.n_modes;
         let (rigid, modal) = g[..3 + m].split_at_mut(3);
         let coupling = &mut work[..m];
-        // c = g_0 + G eta, and eta^T Q eta, in one pass over the rows
+        // c = g_0 + G eta, and eta^T Q eta from Q's upper triangle, in one pass over the rows
         let mut quadratic = 0.0;
         for (i, c) in coupling.iter_mut().enumerate() {
-            let row = i * m..(i + 1) * m;
-            *c = self.rotation_coupling[i] + dot(&self.rotation_coupling_modes[row.clone()], eta);
-            quadratic += eta[i] * dot(&self.inertia_quadratic[row], eta);
+            *c = self.rotation_coupling[i] + dot(&self.rotation_coupling_modes[i * m..(i + 1) * m], eta);
+            let upper = dot(&self.inertia_quadratic[i * m + i + 1..(i + 1) * m], &eta[i + 1..m]);
+            quadratic += eta[i] * (self.inertia_quadratic[i * m + i] * eta[i] + 2.0 * upper);
         }
         let s = self.inertia + 2.0 * dot(&self.inertia_linear, eta) + quadratic;
         let k = [self.frame_coupling[0] + dot(&self.frame_coupling_modes[..m], eta), self.frame_coupling[1] + dot(&self.frame_coupling_modes[m..], eta)];
