@@ -85,8 +85,9 @@ fn the_body_frame_mass_is_the_mass_of_the_kinetic_energy() {
 fn the_block_solve_is_the_dense_cholesky_of_the_whole_mass() {
     // over random angles, amplitudes up to 0.1 m or rad (a tenth of the link) and right-hand sides: the
     // difference to the dense solve is bounded by rounding of the one and the other, about
-    // n eps cond(M) |x| (Higham, Accuracy and Stability of Numerical Algorithms, 2002, Thm 10.4 with
-    // Thm 7.2); the residual of the block solve is at rounding of |M| |x| whatever the conditioning
+    // n eps cond(M) |x| (Higham, Accuracy and Stability of Numerical Algorithms, 2nd ed., 2002, chapters 10 and
+    // 7: the backward error of Cholesky and the perturbation bound); the residual of the block solve
+    // is at rounding of |M| |x| whatever the conditioning
     let mut random = Uniform(0x9e37_79b9_7f4a_7c15);
     let mut worst = (0.0_f64, 0.0_f64);
     for &(elements, interface, frame, normal) in &MODE_SETS {
