@@ -10,9 +10,10 @@
 //! ([`crate::modal::FrameReference`], [`crate::modal::craig_bampton_modes`]).
 //!
 //! - **Mass:** `M(q) = T(phi) Mbar(eta) T(phi)^T`, `T = diag(A, 1, I)`, with the
-//!   body-frame mass `Mbar` formed from the inertia invariants
-//!   ([`crate::modal::InertiaInvariants`]) and factored (dense Cholesky) at
-//!   every solve, in the workspace's scratch.
+//!   body-frame mass `Mbar` given by the inertia invariants
+//!   ([`crate::modal::InertiaInvariants`]); solved by its constant modal block,
+//!   factored once, and the 3 x 3 Schur complement of the frame's coordinates
+//!   ([`crate::modal::BodyMassSolve`]): quadratic in the modes per solve.
 //! - **Body forces:** the quadratic velocity vector `dT/dq - M_dot q_dot`
 //!   (centrifugal and Coriolis terms), minus the elastic force `K_ee eta` and
 //!   modal damping `D eta_dot` (one damping ratio for every mode of the body
@@ -30,11 +31,12 @@ use nalgebra::DMatrix;
 use super::{channel, BeamBody, CoordinateChannels, SectionSite, Site};
 use crate::beam::{vibration_modes, BeamStrains};
 use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
-use crate::linalg::{cholesky_factor, cholesky_solve};
-use crate::modal::{check_free_structure, craig_bampton_modes, FrameReference, InertiaInvariants, NodalCoordinates};
+use crate::modal::{check_free_structure, craig_bampton_modes, dot, BodyMassSolve, FrameReference, InertiaInvariants, NodalCoordinates};
 
-/// Most modes of one body: the hot loop keeps its vectors on the stack.
-pub const MAX_MODES: usize = 40;
+/// Most modes of one body: the hot loop keeps its vectors on the stack (an
+/// evaluation costs about `5 m^2` multiply-adds of the body's own terms and
+/// `2.5 m^2` per mass solve).
+pub const MAX_MODES: usize = 64;
 
 /// Most nodes of a structure given by matrices: its reduction is dense
 /// (factorisations and a symmetric eigenproblem of the interior, cubic in the
@@ -81,6 +83,8 @@ struct SourceBeam {
 pub struct ModalBody {
     /// The inertia invariants.
     invariants: InertiaInvariants,
+    /// The solve with the body-frame mass, its constant parts formed from the invariants.
+    mass_solve: BodyMassSolve,
     /// Modal stiffness `K_ee = Phi^T K Phi` (m x m, row-major) [N/m per unit^2].
     stiffness: Vec<f64>,
     /// Modal damping `D` (m x m, row-major) [N s/m per unit^2].
@@ -141,6 +145,7 @@ impl ModalBody {
             }
         }
         let invariants = InertiaInvariants::new(mass, coordinates, &nodes, shapes)?;
+        let mass_solve = BodyMassSolve::new(&invariants)?;
         let modal_stiffness = shapes.transpose() * stiffness * shapes;
         let modal_mass = DMatrix::from_row_slice(m, m, &invariants.modal_mass);
         let (held_frequencies, damping) = held_modes(&modal_mass, &modal_stiffness, damping_ratio)?;
@@ -158,6 +163,7 @@ impl ModalBody {
         let rotational = (0..m).map(|j| j < modes.n_constraint && coordinates.is_rotation(modes.boundary[j])).collect();
         Ok(Self {
             invariants,
+            mass_solve,
             stiffness: modal_stiffness.transpose().iter().copied().collect(),
             damping: damping.transpose().iter().copied().collect(),
             damping_ratio,
@@ -496,9 +502,9 @@ impl ModalBody {
         self.add_marker_angle_jacobian(marker, m, out);
     }
 
-    /// Values of scratch the mass solve needs: the `(3 + m)^2` body-frame mass.
+    /// Values of scratch the mass solve needs: `m` ([`BodyMassSolve::work_len`]).
     pub fn mass_scratch_len(&self) -> usize {
-        self.n_coordinates() * self.n_coordinates()
+        self.mass_solve.work_len()
     }
 
     /// `Mbar(eta)`, row-major `(3 + m)^2`, into `out`.
@@ -508,13 +514,15 @@ impl ModalBody {
         let out = &mut out[..n * n];
         out.fill(0.0);
         let b = self.rotation_coupling(eta);
+        let mut h = [0.0; MAX_MODES];
+        self.modal_rotations(eta, &mut h[..m]);
         out[0] = inv.mass;
         out[n + 1] = inv.mass;
         out[2] = b.x;
         out[n + 2] = b.y;
         out[2 * n + 2] = self.rotational_inertia(eta);
         for j in 0..m {
-            let (sx, sy, h) = (inv.first_moment_modes[j], inv.first_moment_modes[m + j], self.modal_rotation(eta, j));
+            let (sx, sy, h) = (inv.first_moment_modes[j], inv.first_moment_modes[m + j], h[j]);
             out[3 + j] = sx;
             out[n + 3 + j] = sy;
             out[2 * n + 3 + j] = h;
@@ -544,28 +552,20 @@ impl ModalBody {
         inv.inertia + 2.0 * dot(&inv.inertia_linear, eta) + quadratic
     }
 
-    /// `(h_0 + H_1^T eta)_j` [kg m^2 / unit].
-    #[inline]
-    fn modal_rotation(&self, eta: &[f64], j: usize) -> f64 {
-        let (inv, m) = (&self.invariants, self.n_modes());
-        inv.modal_rotation[j] + (0..m).map(|k| inv.modal_rotation_linear[k * m + j] * eta[k]).sum::<f64>()
-    }
-
-    /// `out = M(q)^-1 f`: `f` turned into the body frame, solved with the Cholesky
-    /// factor of `Mbar(eta)` made in `scratch`, turned back. A mass that does not
-    /// factor (a non-finite state) gives NaN, which the engine reports.
+    /// `out = M(q)^-1 f`: `f` turned into the body frame, solved with `Mbar(eta)`
+    /// by its modal block factored once and the Schur complement of the frame's
+    /// coordinates ([`BodyMassSolve`], `scratch` of [`Self::mass_scratch_len`]
+    /// values), turned back. A mass that is not definite (a non-finite state)
+    /// gives NaN, which the engine reports.
     pub fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
-        let n = self.n_coordinates();
-        self.body_frame_mass(&q[3..], scratch);
-        if cholesky_factor(&mut scratch[..n * n], n).is_err() {
-            out.fill(f64::NAN);
-            return;
-        }
         let (sin, cos) = q[2].sin_cos();
         out.copy_from_slice(f);
         out[0] = cos * f[0] + sin * f[1];
         out[1] = -sin * f[0] + cos * f[1];
-        cholesky_solve(&scratch[..n * n], n, out);
+        if !self.mass_solve.solve(&q[3..], out, scratch) {
+            out.fill(f64::NAN);
+            return;
+        }
         let (x, y) = (out[0], out[1]);
         out[0] = cos * x - sin * y;
         out[1] = sin * x + cos * y;
@@ -576,11 +576,24 @@ impl ModalBody {
         let (inv, m) = (&self.invariants, self.n_modes());
         let (b, omega, rates) = (self.rotation_coupling(eta), u[2], &u[3..]);
         let st = &inv.first_moment_modes;
+        let mut h = [0.0; MAX_MODES];
+        self.modal_rotations(eta, &mut h[..m]);
         p[0] = inv.mass * u[0] + b.x * omega + dot(&st[..m], rates);
         p[1] = inv.mass * u[1] + b.y * omega + dot(&st[m..], rates);
-        p[2] = b.x * u[0] + b.y * u[1] + self.rotational_inertia(eta) * omega + (0..m).map(|j| self.modal_rotation(eta, j) * rates[j]).sum::<f64>();
+        p[2] = b.x * u[0] + b.y * u[1] + self.rotational_inertia(eta) * omega + dot(&h[..m], rates);
         for i in 0..m {
-            p[3 + i] = st[i] * u[0] + st[m + i] * u[1] + self.modal_rotation(eta, i) * omega + dot(&inv.modal_mass[i * m..(i + 1) * m], rates);
+            p[3 + i] = st[i] * u[0] + st[m + i] * u[1] + h[i] * omega + dot(&inv.modal_mass[i * m..(i + 1) * m], rates);
+        }
+    }
+
+    /// `h_0 + H_1^T eta` into `out` (m) [kg m^2 / unit], by rows of `H_1`.
+    fn modal_rotations(&self, eta: &[f64], out: &mut [f64]) {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        out.copy_from_slice(&inv.modal_rotation);
+        for (k, e) in eta.iter().enumerate() {
+            for (o, h) in out.iter_mut().zip(&inv.modal_rotation_linear[k * m..(k + 1) * m]) {
+                *o += h * e;
+            }
         }
     }
 
@@ -612,28 +625,38 @@ impl ModalBody {
 
     /// `dT/dq - M_dot q_dot` in body-frame components (`u` the body-frame
     /// velocities): centrifugal, Coriolis and gyroscopic terms [N, N m, N per unit].
+    /// Three passes over `m x m` invariants: `H_1` (times the rates, and its
+    /// transpose times them) and `I_2` (times `eta`).
     fn quadratic_velocity_vector(&self, eta: &[f64], u: &[f64], out: &mut [f64]) {
         let (inv, m, n) = (&self.invariants, self.n_modes(), self.n_coordinates());
         let (omega, rates) = (u[2], &u[3..n]);
-        let mut p = [0.0; MAX_COORDINATES];
-        self.times_body_mass(eta, u, &mut p);
+        let st = &inv.first_moment_modes;
+        let b = self.rotation_coupling(eta);
+        // the linear momentum (Mbar u)_(x,y)
+        let p = Vec2::new(inv.mass * u[0] + b.x * omega + dot(&st[..m], rates), inv.mass * u[1] + b.y * omega + dot(&st[m..], rates));
         // Mbar w with w = (J^T u_R, 0, 0): the rate of the frame's turn seen in the body frame
         let w = Vec2::new(u[1], -u[0]);
-        let b = self.rotation_coupling(eta);
-        // M_dot u (the rates of the eta-dependent entries)
+        // M_dot u (the rates of the eta-dependent entries): H_1 eta_dot, H_1^T eta_dot, I_2 eta
+        let (mut h1_rates, mut h_rate, mut i2_eta) = ([0.0; MAX_MODES], [0.0; MAX_MODES], [0.0; MAX_MODES]);
+        for k in 0..m {
+            let row = &inv.modal_rotation_linear[k * m..(k + 1) * m];
+            h1_rates[k] = dot(row, rates);
+            for (h, r) in h_rate[..m].iter_mut().zip(row) {
+                *h += r * rates[k];
+            }
+            i2_eta[k] = dot(&inv.inertia_quadratic[k * m..(k + 1) * m], eta);
+        }
         let b_rate = Vec2::new(dot(&inv.rotation_coupling_modes[..m], rates), dot(&inv.rotation_coupling_modes[m..], rates));
-        let inertia_rate = 2.0 * (dot(&inv.inertia_linear, rates) + (0..m).map(|i| rates[i] * dot(&inv.inertia_quadratic[i * m..(i + 1) * m], eta)).sum::<f64>());
-        let h_rate = |j: usize| (0..m).map(|k| inv.modal_rotation_linear[k * m + j] * rates[k]).sum::<f64>();
-        let h_rate_dot: f64 = (0..m).map(|j| h_rate(j) * rates[j]).sum();
-        out[0] = -omega * (-p[1]) - b_rate.x * omega - omega * inv.mass * w.x;
-        out[1] = -omega * p[0] - b_rate.y * omega - omega * inv.mass * w.y;
-        out[2] = w.x * p[0] + w.y * p[1] - (b_rate.dot(&Vec2::new(u[0], u[1])) + inertia_rate * omega + h_rate_dot) - omega * b.dot(&w);
+        let inertia_rate = 2.0 * (dot(&inv.inertia_linear, rates) + dot(rates, &i2_eta[..m]));
+        let h_rate_dot = dot(&h_rate[..m], rates);
+        out[0] = omega * p.y - b_rate.x * omega - omega * inv.mass * w.x;
+        out[1] = -omega * p.x - b_rate.y * omega - omega * inv.mass * w.y;
+        out[2] = w.dot(&p) - (b_rate.dot(&Vec2::new(u[0], u[1])) + inertia_rate * omega + h_rate_dot) - omega * b.dot(&w);
         for i in 0..m {
-            let st = Vec2::new(inv.first_moment_modes[i], inv.first_moment_modes[m + i]);
+            let st = Vec2::new(st[i], st[m + i]);
             let a1 = Vec2::new(inv.rotation_coupling_modes[i], inv.rotation_coupling_modes[m + i]);
-            let h1_rates = dot(&inv.modal_rotation_linear[i * m..(i + 1) * m], rates);
-            let kinetic_gradient = omega * a1.dot(&Vec2::new(u[0], u[1])) + omega * omega * (inv.inertia_linear[i] + dot(&inv.inertia_quadratic[i * m..(i + 1) * m], eta)) + omega * h1_rates;
-            out[3 + i] = kinetic_gradient - h_rate(i) * omega - omega * st.dot(&w);
+            let kinetic_gradient = omega * a1.dot(&Vec2::new(u[0], u[1])) + omega * omega * (inv.inertia_linear[i] + i2_eta[i]) + omega * h1_rates[i];
+            out[3 + i] = kinetic_gradient - h_rate[i] * omega - omega * st.dot(&w);
         }
     }
 
@@ -705,10 +728,4 @@ fn held_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, zeta: f64) -> Resul
     let rates = DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(m, modes.angular_frequencies.iter().map(|w| 2.0 * zeta * w)));
     let mv = mass * &modes.shapes;
     Ok((modes.angular_frequencies, &mv * rates * mv.transpose()))
-}
-
-/// `a . b` over the shorter.
-#[inline]
-fn dot(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(a, b)| a * b).sum()
 }
