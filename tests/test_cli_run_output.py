@@ -35,7 +35,7 @@ def test_run_refuses_an_unknown_suffix_before_running(tmp_path, name):
     result = invoke("run", DRY, "-o", tmp_path / name, "--t-end", "1 ms")
     assert result.exit_code == 2
     suffix = repr(Path(name).suffix.lower()) if Path(name).suffix else "'(no suffix)'"
-    assert f"-o {tmp_path / name}: unknown results format {suffix}: use .nc, .nc4 or .h5 for NetCDF-4, .csv for CSV" \
+    assert f"-o {tmp_path / name}: unknown results format {suffix}: use .nc, .nc4 or .h5 for NetCDF, .csv for CSV" \
         in result.stderr.replace("\n", "")
     assert list(tmp_path.iterdir()) == []
 

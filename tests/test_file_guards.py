@@ -199,7 +199,7 @@ def test_an_output_file_in_a_missing_folder_is_a_model_error_at_the_user_s_path(
 
 def test_open_results_names_the_user_s_path_for_what_is_not_a_results_file(tmp_path):
     assert problems_of(lambda: jp.open_results(IDEAL)) == [
-        (str(IDEAL), "is not a jointplay results file (not a NetCDF-4/HDF5 file): it is a model file (TOML); "
+        (str(IDEAL), "is not a jointplay results file (not a NetCDF file): it is a model file (TOML); "
                      "jointplay.load() reads it and `jointplay run` simulates it")]
     assert problems_of(lambda: jp.open_results(tmp_path / "none.nc")) == [(str(tmp_path / "none.nc"),
                                                                            "no such results file")]

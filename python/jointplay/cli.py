@@ -329,7 +329,7 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
 
 @app.command()
 def run(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_default=False)],
-        output: Annotated[Path | None, typer.Option("-o", "--output", help="Results file: NetCDF-4 for .nc, .nc4, "
+        output: Annotated[Path | None, typer.Option("-o", "--output", help="Results file: NetCDF for .nc, .nc4, "
                                                      ".h5 (written while the run goes on), CSV for .csv "
                                                      "[default: MODEL name with .nc, in the current folder].")] = None,
         t_end: Annotated[str | None, typer.Option("--t-end", help='End time, e.g. "24 ms" or 0.024 (seconds); '

@@ -391,7 +391,7 @@ class Model:
         1e4 times the others; :func:`jointplay.modelfile.plausibility`) are issued first as
         :class:`~jointplay.errors.JointplayWarning` warnings; they do not stop the run.
 
-        ``output_file`` (``.nc``, ``.nc4``, ``.h5``): the samples are written to this NetCDF-4 file while
+        ``output_file`` (``.nc``, ``.nc4``, ``.h5``): the samples are written to this NetCDF (classic) file while
         the run goes on, chunk by chunk, and the returned results read their channels from it on access,
         so memory stays bounded; the file appears (by rename) only once complete, and a run that stops
         early goes to ``NAME.partial.nc`` instead (``results.path`` says which). ``.csv``: the run is kept

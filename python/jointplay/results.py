@@ -3,7 +3,7 @@
 ``results["slider.ax"]`` is a numpy array; ``results.to_xarray()`` is a
 Dataset with time as coordinate, one variable per channel, units and
 descriptions as attributes, and the model and integrator statistics as
-Dataset attributes. ``results.save(path)`` writes it to NetCDF-4 (or CSV);
+Dataset attributes. ``results.save(path)`` writes it to NetCDF (classic, or NetCDF-4 compressed; or CSV);
 results of a run streamed to a file read their channels from it on access
 (see :mod:`jointplay.resultsfile`).
 """
@@ -193,11 +193,12 @@ class Results:
         return attrs
 
     def save(self, path, *, compress: bool = False) -> Path:
-        """Writes the results to ``path``: NetCDF-4 for ``.nc``, ``.nc4``, ``.h5`` (read back by
+        """Writes the results to ``path``: NetCDF for ``.nc``, ``.nc4``, ``.h5`` (read back by
         :func:`open_results`), CSV for ``.csv`` (``time`` and one column per channel, header
         ``name [unit]``); a ModelError (a ValueError) located at ``path`` for any other suffix or a folder
-        that does not exist. The NetCDF channels are stored uncompressed, or with ``compress`` gzip-compressed
-        after the shuffle filter (smaller, several times slower to write; docs/results-file.md). The file is
+        that does not exist. NetCDF is the classic 64-bit offset format (CDF-2), channels uncompressed, or
+        with ``compress`` NetCDF-4 with each channel gzip-compressed after the shuffle filter (smaller,
+        several times slower to write; docs/results-file.md). The file is
         written under a temporary name and renamed into place when complete, so a good file at ``path`` is
         never left broken."""
         from .resultsfile import output_target, save_netcdf, write_csv
@@ -363,7 +364,8 @@ def _attr_dict(attrs: dict, prefix: str) -> dict:
 
 def open_results(path) -> Results:
     """Results from a file written by :meth:`Results.save`, ``Model.simulate(output_file=...)`` or
-    ``jointplay run``; the channels of a file in the current layout are read on access. Files written
+    ``jointplay run`` (NetCDF classic or NetCDF-4, told apart by their first bytes); the channels of a file
+    in a layout jointplay writes are read on access. Files written
     by earlier versions (through xarray) are read whole. A path that is not such a file (missing, a
     folder, a model file, an HDF5 file of another program) or a file declaring more values than
     :data:`~jointplay.resultsfile.DEFAULT_MAX_MEMORY_BYTES` holds raises ModelError located at ``path``."""
@@ -386,12 +388,14 @@ def open_results(path) -> Results:
 
 
 def _open_legacy(path) -> Results:
-    """Results from a NetCDF file written through xarray/h5netcdf (before the streamed layout)."""
+    """Results from a NetCDF file written through xarray/h5netcdf (before the streamed layout), or another
+    program's NetCDF file of the same variables."""
     import xarray as xr
 
+    from .netcdf_classic import is_classic
     from .resultsfile import check_declared
 
-    with xr.open_dataset(path, engine="h5netcdf") as ds:
+    with xr.open_dataset(path, engine="scipy" if is_classic(path) else "h5netcdf") as ds:
         check_declared(path, "the file", (max(1, ds.nbytes // 8),))
         ds.load()
         names = [str(n) for n in ds.data_vars]

@@ -1,18 +1,20 @@
-"""Results files: NetCDF-4 (HDF5) written with h5py, streamed while a run goes on, and CSV.
+"""Results files: NetCDF classic (CDF-2) by default, NetCDF-4 (HDF5) compressed on request, streamed
+while a run goes on, and CSV.
 
 The NetCDF file holds a ``time`` dimension and coordinate and one variable per
-channel on it (``units``, ``long_name``, ``description``), uncompressed (gzip
-with shuffle on request), and CF-style global attributes. It is written under a
-temporary name in the target folder and renamed into place only when it is
-complete, so that a good file is never replaced by a broken one; a run that
-stopped early goes to ``OUT.partial.nc`` instead (see :func:`partial_path`).
+channel on it (``units``, ``long_name``, ``description``) and CF-style global
+attributes. It is written under a temporary name in the target folder and
+renamed into place only when it is complete, so that a good file is never
+replaced by a broken one; a run that stopped early goes to ``OUT.partial.nc``
+instead (see :func:`partial_path`).
 
-Why h5py and not ``xarray.to_netcdf``: attaching the ``time`` dimension to each
-variable one by one and, on reading, an unlimited ``time`` dimension cost time
-quadratic in the number of variables in h5netcdf. Here the dimension lists are
-written once at the end and ``time`` is a fixed-size dimension, and each
-variable is made by a few low-level HDF5 calls (:mod:`jointplay.resultslayout`):
-about 0.1 ms a channel (``benches/bench_results_file.py``).
+Why NetCDF classic by default: NetCDF-4 gives each channel an HDF5 dataset, and
+HDF5 costs 0.1-0.2 ms to make one with its attributes, about as much as the dry
+slider-crank takes to compute its 8196 samples for 53 channels. A classic file is
+a header then the values; with ``time`` the record dimension, a block of samples is
+one contiguous array written with one call (:mod:`jointplay.netcdf_classic`), and a
+streamed file is the same as a saved one. ``compress=True`` writes NetCDF-4 with
+gzip (:mod:`jointplay.resultslayout`), smaller and slower.
 """
 
 from __future__ import annotations
@@ -38,19 +40,22 @@ CSV_SUFFIX = ".csv"
 DEFAULT_MAX_FILE_BYTES = 2 * 1024**3
 #: Largest output of a run kept in memory (no results file) [bytes].
 DEFAULT_MAX_MEMORY_BYTES = 1024**3
-#: Marks files written by this module (``open_results`` reads older files with xarray): v3 stores the
-#: channels uncompressed (contiguous when the run's length is known), v2 compressed them in chunks.
+#: Marks the NetCDF-4 files written by this module (``Results.save(..., compress=True)``; ``open_results``
+#: reads files without a mark with xarray): v3 stores the channels uncompressed or gzip-compressed, v2
+#: compressed them in chunks.
 LAYOUT = "jointplay-netcdf4-v3"
+#: Marks the NetCDF classic (CDF-2) files written by this module, the default: every channel a record
+#: variable on the record dimension ``time`` (:mod:`jointplay.netcdf_classic`).
+CLASSIC_LAYOUT = "jointplay-cdf2-v1"
 #: Layouts whose channels :func:`~jointplay.results.open_results` reads on access (one variable per channel).
-LAYOUTS_READ_ON_ACCESS = ("jointplay-netcdf4-v2", LAYOUT)
+LAYOUTS_READ_ON_ACCESS = ("jointplay-netcdf4-v2", LAYOUT, CLASSIC_LAYOUT)
+#: Global attributes of a streamed file until its run ends (a file whose writer was killed keeps them).
+PROVISIONAL_ATTRIBUTES = {"Conventions": "CF-1.10", "jointplay_layout": CLASSIC_LAYOUT, "completed": 0,
+                          "error": "the run did not finish: the file holds the samples written before it stopped"}
 #: Largest block of samples read at once when results are copied [bytes].
 _BUFFER_BYTES = 64 * 2**20
-#: Largest buffer of samples a streaming writer gathers before writing them [bytes], as large as the
-#: core's chunks: a run of fewer samples (9709 of 53 channels, 679 of 771) is written once, at its end,
-#: as a saved one is; a longer one holds this buffer, the core's chunk and one chunk waiting.
-_WRITE_BUFFER_BYTES = 4 * 2**20
-#: Most samples of a channel in the buffer, and in one chunk of a growing variable (1 MiB).
-_MAX_BUFFER_SAMPLES = 2**17
+#: Largest block of records a save converts to big-endian and writes at once [bytes].
+_RECORD_BLOCK_BYTES = 2**20
 #: Wait between two looks at the writer's queue while a chunk is already waiting [s].
 _QUEUE_POLL = 0.002
 
@@ -174,7 +179,7 @@ def output_kind(path: str | os.PathLike) -> str:
         return "netcdf"
     if suffix == CSV_SUFFIX:
         return "csv"
-    raise ValueError(f"unknown results format {suffix or '(no suffix)'!r}: use .nc, .nc4 or .h5 for NetCDF-4, "
+    raise ValueError(f"unknown results format {suffix or '(no suffix)'!r}: use .nc, .nc4 or .h5 for NetCDF, "
                      ".csv for CSV")
 
 
@@ -200,11 +205,13 @@ def output_target(path: str | os.PathLike) -> str:
 
 
 def results_source(path: str | os.PathLike) -> Path:
-    """``path`` checked before it is read as a results file: an existing HDF5 (NetCDF-4) file. Raises
-    ModelError located at the user's path (a TOML model file, a CSV file, a folder each get a message)."""
+    """``path`` checked before it is read as a results file: an existing NetCDF classic or HDF5 (NetCDF-4)
+    file. Raises ModelError located at the user's path (a TOML model file, a CSV file, a folder each get a
+    message)."""
     import h5py
 
     from .errors import ModelError
+    from .netcdf_classic import is_classic
 
     source = Path(path)
     if source.is_dir():
@@ -212,15 +219,15 @@ def results_source(path: str | os.PathLike) -> Path:
     if not source.is_file():
         raise ModelError([(str(path), "no such results file")])
     try:
-        hdf5 = h5py.is_hdf5(source)
+        netcdf = is_classic(source) or h5py.is_hdf5(source)
     except OSError as exc:
         raise ModelError([(str(path), f"cannot be read: {exc.strerror or exc}")]) from None
-    if not hdf5:
+    if not netcdf:
         suffix = source.suffix.lower()
         hint = {".toml": ": it is a model file (TOML); jointplay.load() reads it and `jointplay run` simulates it",
-                ".csv": ": CSV results are for other programs; open_results reads the NetCDF-4 files (.nc) that "
+                ".csv": ": CSV results are for other programs; open_results reads the NetCDF files (.nc) that "
                         "jointplay writes"}.get(suffix, "")
-        raise ModelError([(str(path), f"is not a jointplay results file (not a NetCDF-4/HDF5 file){hint}")])
+        raise ModelError([(str(path), f"is not a jointplay results file (not a NetCDF file){hint}")])
     return source
 
 
@@ -238,44 +245,38 @@ def check_declared(path: str | os.PathLike, what: str, shape: tuple[int, ...], i
 
 
 class ResultsWriter:
-    """Streams channels into a NetCDF-4 file: :meth:`append` chunk after chunk, then :meth:`finish`
-    with the global attributes (renames into place) or :meth:`abort` (removes the temporary file).
+    """Streams channels into a NetCDF classic (CDF-2) file: :meth:`append` chunk after chunk, then
+    :meth:`finish` with the global attributes (renames into place) or :meth:`abort` (removes the
+    temporary file).
 
-    Appends are gathered in a buffer of at most :data:`_WRITE_BUFFER_BYTES` before they go to the
-    file, one write per channel and buffer (HDF5 costs tens of microseconds a write whatever its
-    length, which adds up over thousands of channels written a few samples at a time). The channels'
-    variables are made at the first write: contiguous, of the run's length, when the whole run fits
-    in the buffer (as :func:`save_netcdf` writes them), otherwise chunked and growing. Each append is
-    copied into the buffer (and full buffers written) by a background thread while the caller goes
-    on: the simulation, which runs with the GIL released, computes the next chunk meanwhile. At most
-    one chunk waits while another is taken (their copies are the only extra memory), and an error of
-    a background write is raised by the next call. An append names the index of its first sample:
-    the same chunk appended again (after a Ctrl-C interrupted the call) is written once."""
+    The file's header goes first, with room for the global attributes known only at the end
+    (:data:`PROVISIONAL_ATTRIBUTES` until then); each chunk is then one block of records (time and
+    every channel at each sample, big-endian) written with one call, and the header's record count
+    updated after it, so that a file cut after a chunk reads up to that chunk. Each chunk is
+    converted and written by a background thread while the caller goes on: the simulation, which
+    runs with the GIL released, computes the next chunk meanwhile. At most one chunk waits while
+    another is written (their copies are the only extra memory), and an error of a background write
+    is raised by the next call. An append names the index of its first sample: the same chunk
+    appended again (after a Ctrl-C interrupted the call) is written once."""
 
-    def __init__(self, path: str | os.PathLike, names: list[str], units: list[str], descriptions: list[str],
-                 compress: bool = False):
-        from .resultslayout import FileLayout
+    def __init__(self, path: str | os.PathLike, names: list[str], units: list[str], descriptions: list[str]):
+        from .netcdf_classic import RecordFile
 
         self.path = Path(path)
         self.names = list(names)
-        self._attributes = channel_attributes(self.names, units, descriptions)  # checks the names first
-        self._compress = compress
+        header = classic_header(self.names, units, descriptions)  # checks the names first
         self.temporary = temporary_path(self.path)
-        #: Samples appended (written or buffered).
+        #: Samples written to the file.
         self.samples = 0
-        self._written = 0
-        self._capacity = max(1, min(_MAX_BUFFER_SAMPLES, _WRITE_BUFFER_BYTES // (8 * (len(self.names) + 1))))
-        self._buffer = np.empty((len(self.names), self._capacity))
         self._queue: queue.SimpleQueue = queue.SimpleQueue()  # (first sample, times, values); None ends
         self._write_error: BaseException | None = None
         #: Samples handed to the background writer.
         self._offered = 0
-        #: The times appended, kept in memory: the results hold them anyway, and ``time`` is written
-        #: from them at the end.
+        #: The times appended, kept in memory: the results hold them anyway.
         self._time_parts: list[np.ndarray] = []
-        self._channels: list | None = None  # the variables, made at the first write
         self._writer: threading.Thread | None = None
-        self._file = FileLayout(self.temporary)
+        self._buffer: np.ndarray | None = None  # the records of the last chunk written, reused for the next
+        self._file = RecordFile(self.temporary, header, PROVISIONAL_ATTRIBUTES, header_reserve(len(self.names)))
         self._writer = threading.Thread(target=self._write_queued, name="jointplay results writer", daemon=True)
         self._writer.start()
 
@@ -300,13 +301,18 @@ class ResultsWriter:
 
     def _write_queued(self) -> None:
         """The background writer: takes the queued chunks in order until ``None``."""
+        from .netcdf_classic import records
+
         while (item := self._queue.get()) is not None:
             start, times, values = item
             if start < self.samples or self._write_error is not None:
                 continue  # taken already (handed over again after an interrupt), or writing failed
             try:
+                if self._buffer is None or self._buffer.shape[0] < times.size:
+                    self._buffer = np.empty((times.size, len(self.names) + 1), dtype=">f8")
+                self._file.append(records(times, values, self._buffer))
                 self._time_parts.append(times)
-                self._append(values)
+                self.samples += times.size
             except BaseException as exc:  # raised by the next call, in the appending thread
                 self._write_error = exc
 
@@ -323,29 +329,6 @@ class ResultsWriter:
             self._writer = None
         self._raise_write_error()
 
-    def _append(self, values: np.ndarray) -> None:
-        """Buffers the samples (channel by channel) and writes every full buffer."""
-        n = values.shape[0]
-        done = 0
-        while done < n:
-            held = self.samples - self._written
-            take = min(n - done, self._capacity - held)
-            self._buffer[:, held:held + take] = values[done:done + take].T
-            self.samples += take
-            done += take
-            if self.samples - self._written == self._capacity:
-                self._flush(final=False)
-
-    def _flush(self, final: bool) -> None:
-        """Writes the buffered samples to the end of every variable, making the variables first at the
-        first write: of the run's length when it is the last write (``final``), growing otherwise."""
-        if self._channels is None:
-            samples = self.samples if final else None
-            self._channels = self._file.channels([variable_name(n) for n in self.names], self._attributes,
-                                                 samples, self._compress, block=self._capacity)
-        self._file.write(self._channels, self._written, self._buffer[:, :self.samples - self._written])
-        self._written = self.samples
-
     def times(self) -> np.ndarray:
         """The times appended so far [s]."""
         self._wait()
@@ -354,14 +337,12 @@ class ResultsWriter:
         return self._time_parts[0]
 
     def finish(self, attrs: dict[str, Any], *, complete: bool = True) -> Path:
-        """Writes the last samples, ``time``, the dimension lists and the global attributes, closes the
-        file and renames it to the target path (complete) or to :func:`partial_path` (a run that stopped
-        early). Returns the path."""
+        """Writes the final header with the global attributes (in place when they fit the room left for
+        them, otherwise moving the samples once), closes the file and renames it to the target path
+        (complete) or to :func:`partial_path` (a run that stopped early). Returns the path."""
         try:
             self._wait()
-            self._flush(final=True)
-            time = self._file.time(self.times(), TIME_ATTRIBUTES)
-            self._file.close_with(time, self._channels, _global_attributes(attrs))
+            self._file.finish(_global_attributes(attrs, CLASSIC_LAYOUT))
         except BaseException:
             self.abort()
             raise
@@ -403,38 +384,92 @@ def channel_attributes(names: list[str], units: list[str], descriptions: list[st
     return attributes
 
 
-def _global_attributes(attrs: dict[str, Any]) -> dict[str, Any]:
-    return {key: _attribute(value) for key, value in attrs.items() if value is not None}
+def _global_attributes(attrs: dict[str, Any], layout: str) -> dict[str, Any]:
+    """The global attributes as stored, ``jointplay_layout`` saying which layout the file has."""
+    out = {key: _attribute(value) for key, value in attrs.items() if value is not None}
+    out["jointplay_layout"] = layout
+    return out
+
+
+def classic_header(names: list[str], units: list[str], descriptions: list[str]):
+    """The variables of a NetCDF classic results file: ``time`` then one per channel, with their attributes
+    (:func:`channel_attributes`, which checks the names first)."""
+    from .netcdf_classic import RecordHeader
+
+    attributes = channel_attributes(names, units, descriptions)
+    return RecordHeader(["time", *(variable_name(n) for n in names)], [TIME_ATTRIBUTES, *attributes])
+
+
+def header_reserve(n_channels: int) -> int:
+    """Room left in a NetCDF classic file's header for the global attributes known only at the end of a run
+    [bytes]: the model (JSON and TOML), statistics, diagnostics and the summary of every channel took 8 kB for
+    the 53 channels of the dry slider-crank and 90 kB for the 771 of a chain of 64 bars; this leaves 32 KiB
+    and 192 bytes a channel (41 kB and 180 kB)."""
+    return 32 * 1024 + 192 * n_channels
 
 
 def save_netcdf(path: str | os.PathLike, time: np.ndarray, names: list[str], units: list[str],
                 descriptions: list[str], block: Callable[[int, int], np.ndarray], attrs: dict[str, Any],
                 compress: bool = False) -> Path:
-    """Writes a NetCDF-4 results file at ``path``: ``time`` [s], one variable per channel with the
-    values ``block(start, stop)`` gives (channels x samples, asked for block after block of
-    :func:`rows_per_block` samples) and the global attributes ``attrs``. Each channel is a contiguous
-    variable of the run's length, or with ``compress`` chunked and gzip-compressed after the shuffle
-    filter. Written under a temporary name, renamed into place when complete."""
+    """Writes a results file at ``path``: ``time`` [s], one variable per channel with the values
+    ``block(start, stop)`` gives (channels x samples, asked for block after block of
+    :func:`rows_per_block` samples) and the global attributes ``attrs``. A NetCDF classic (CDF-2)
+    file whose records are written in bulk (the layout a streamed run writes, byte for byte), or with
+    ``compress`` NetCDF-4 with every channel gzip-compressed after the shuffle filter; more samples
+    than a classic file counts go to NetCDF-4 too, with a warning. Written under a temporary name,
+    renamed into place when complete."""
+    from .netcdf_classic import MAX_RECORDS
+
+    if not compress and len(time) > MAX_RECORDS:
+        import warnings
+
+        warnings.warn(f"{len(time)} samples are more than a NetCDF classic file holds ({MAX_RECORDS}): "
+                      f"{path} is written as NetCDF-4 instead", RuntimeWarning, stacklevel=3)
+        compress = True
+    path = Path(path)
+    temporary = temporary_path(path)
+    try:
+        if compress:
+            _save_netcdf4(temporary, time, names, units, descriptions, block, attrs)
+        else:
+            _save_classic(temporary, time, names, units, descriptions, block, attrs)
+        os.replace(temporary, path)
+    except BaseException:
+        temporary.unlink(missing_ok=True)
+        raise
+    return path
+
+
+def _save_classic(path: Path, time, names, units, descriptions, block, attrs) -> None:
+    from .netcdf_classic import records, write_records_file
+
+    header = classic_header(names, units, descriptions)
+    # records converted and written 1 MiB at a time: a buffer that stays in the cache, no fresh pages
+    n, rows = len(time), max(1, min(rows_per_block(len(names)), _RECORD_BLOCK_BYTES // (8 * (len(names) + 1))))
+    buffer = np.empty((min(n, rows), len(names) + 1), dtype=">f8")
+    blocks = (records(time[start:min(n, start + rows)], block(start, min(n, start + rows)).T, buffer)
+              for start in range(0, n, rows))
+    write_records_file(path, header, PROVISIONAL_ATTRIBUTES, header_reserve(len(names)),
+                       _global_attributes(attrs, CLASSIC_LAYOUT), n, blocks)
+
+
+def _save_netcdf4(path: Path, time, names, units, descriptions, block, attrs) -> None:
+    """NetCDF-4 (HDF5) with gzip-compressed channels (:mod:`jointplay.resultslayout`)."""
     from .resultslayout import FileLayout
 
-    path = Path(path)
     attributes = channel_attributes(names, units, descriptions)
-    temporary = temporary_path(path)
-    layout = FileLayout(temporary)
+    layout = FileLayout(path)
     try:
         n = len(time)
-        channels = layout.channels([variable_name(name) for name in names], attributes, n, compress)
+        channels = layout.channels([variable_name(name) for name in names], attributes, n)
         rows = rows_per_block(len(names))
         for start in range(0, n, rows):
             stop = min(n, start + rows)
             layout.write(channels, start, block(start, stop))
-        layout.close_with(layout.time(time, TIME_ATTRIBUTES), channels, _global_attributes(attrs))
-        os.replace(temporary, path)
+        layout.close_with(layout.time(time, TIME_ATTRIBUTES), channels, _global_attributes(attrs, LAYOUT))
     except BaseException:
         layout.close()
-        temporary.unlink(missing_ok=True)
         raise
-    return path
 
 
 def variable_name(channel: str) -> str:
@@ -453,13 +488,36 @@ def _attribute(value: Any):
 
 
 class FileChannels:
-    """Channel values read from a results file on access (nothing kept in memory)."""
+    """Channel values read from a results file on access (nothing kept in memory): from a NetCDF
+    classic file through a memory map of its records, from a NetCDF-4 file through h5py."""
 
     def __init__(self, path: str | os.PathLike, names: list[str]):
         self.path = Path(path)
         self.names = list(names)
+        self._records: tuple | None = None  # (file stamp, memory map of the records or None)
+
+    def _classic(self) -> np.ndarray | None:
+        """The records of a classic file as a memory map, (samples, 1 + channels) big-endian, mapped again
+        when the file changed (the map stays between accesses: its pages are the file's, which the system
+        drops when it needs the memory); None for a NetCDF-4 file."""
+        from .netcdf_classic import is_classic, read_layout
+
+        status = os.stat(self.path)
+        stamp = (status.st_mtime_ns, status.st_size, status.st_ino)
+        if self._records is None or self._records[0] != stamp:
+            mapped = None
+            if is_classic(self.path):
+                layout = read_layout(self.path)
+                begin, width = layout.variables["time"]["begin"], layout.record_bytes // 8
+                mapped = (np.memmap(self.path, dtype=">f8", mode="r", offset=begin, shape=(layout.numrecs, width))
+                          if layout.numrecs else np.empty((0, width), dtype=">f8"))
+            self._records = (stamp, mapped)
+        return self._records[1]
 
     def __getitem__(self, k: int) -> np.ndarray:
+        classic = self._classic()
+        if classic is not None:
+            return np.array(classic[:, 1 + k], dtype=float)
         import h5py
 
         with h5py.File(self.path, "r") as f:
@@ -469,6 +527,9 @@ class FileChannels:
 
     def block(self, start: int, stop: int) -> np.ndarray:
         """Values of every channel for samples ``start:stop``, shape (channels, samples)."""
+        classic = self._classic()
+        if classic is not None:
+            return np.array(classic[start:stop, 1:].T, dtype=float)
         import h5py
 
         with h5py.File(self.path, "r") as f:
@@ -477,7 +538,11 @@ class FileChannels:
 
 
 def is_streamed_layout(path: str | os.PathLike) -> bool:
-    """Whether ``path`` was written by :class:`ResultsWriter` (rather than by xarray before it)."""
+    """Whether ``path`` was written by this module (rather than by xarray before it)."""
+    from .netcdf_classic import is_classic, read_layout
+
+    if is_classic(path):
+        return read_layout(path).attributes.get("jointplay_layout") == CLASSIC_LAYOUT
     import h5py
 
     with h5py.File(path, "r") as f:
@@ -486,7 +551,11 @@ def is_streamed_layout(path: str | os.PathLike) -> bool:
 
 
 def read_file(path: str | os.PathLike) -> tuple[np.ndarray, list[str], list[str], list[str], dict[str, Any]]:
-    """``(time, names, units, descriptions, global attributes)`` of a file written by :class:`ResultsWriter`."""
+    """``(time, names, units, descriptions, global attributes)`` of a file written by this module."""
+    from .netcdf_classic import is_classic
+
+    if is_classic(path):
+        return _read_classic(path)
     import h5py
 
     with h5py.File(path, "r") as f:
@@ -498,6 +567,24 @@ def read_file(path: str | os.PathLike) -> tuple[np.ndarray, list[str], list[str]
         descriptions = [_text(f[name].attrs.get("description", "")) for name in variables]
         attrs = {key: _plain(value) for key, value in f.attrs.items()}
     return time, names, units, descriptions, attrs
+
+
+def _read_classic(path) -> tuple[np.ndarray, list[str], list[str], list[str], dict[str, Any]]:
+    from .netcdf_classic import read_layout
+
+    layout = read_layout(path)
+    variables = [(name, v) for name, v in layout.variables.items() if name != "time"]
+    if list(layout.variables)[:1] != ["time"] or any(not v["record"] or v["vsize"] != 8 or v["type"] != 6
+                                                     for _, v in [("time", layout.variables["time"]), *variables]):
+        raise ValueError("its variables are not the float64 records on time that jointplay writes")
+    check_declared(path, "time", (layout.numrecs,))
+    begin, width = layout.variables["time"]["begin"], layout.record_bytes // 8
+    time = (np.array(np.memmap(path, dtype=">f8", mode="r", offset=begin, shape=(layout.numrecs, width))[:, 0],
+                     dtype=float) if layout.numrecs else np.empty(0))
+    names = [str(v["attrs"].get("channel", name)) for name, v in variables]
+    units = [str(v["attrs"].get("units", "")) for _, v in variables]
+    descriptions = [str(v["attrs"].get("description", "")) for _, v in variables]
+    return time, names, units, descriptions, dict(layout.attributes)
 
 
 def _text(value: Any) -> str:

@@ -1,15 +1,17 @@
 """The HDF5 objects of a NetCDF-4 results file, made with h5py's low-level API.
 
-A results file holds one HDF5 dataset per channel (NetCDF-4 has no other way to
-give each channel its own variable), so what a file costs to write is mostly what
-each dataset costs: its object header, its link in the root group, its four
-attributes (``units``, ``long_name``, ``description``, ``DIMENSION_LIST``) and its
-values. Here each of these is one call into HDF5 with property lists, types and
+Written by ``Results.save(..., compress=True)``; a results file is otherwise NetCDF
+classic (:mod:`jointplay.netcdf_classic`), which costs no HDF5 object per channel.
+
+A NetCDF-4 file holds one HDF5 dataset per channel (NetCDF-4 has no other way to
+give each channel its own variable), so what it costs to write is mostly what each
+dataset costs: its object header, its link in the root group, its four attributes
+(``units``, ``long_name``, ``description``, ``DIMENSION_LIST``) and its compressed
+chunks. Here each of these is one call into HDF5 with property lists, types and
 attribute values made once per file (h5py's high-level ``create_dataset`` and
-``attrs[...] =`` rebuild them at every call: about three times the cost); the values
-go in one write per channel and per block, uncompressed and, when the number of
-samples is known, contiguous (no chunk index to build). The ``time`` dimension is
-fixed-size, its ``REFERENCE_LIST`` written once (:meth:`FileLayout.close_with`).
+``attrs[...] =`` rebuild them at every call: about three times the cost). The
+``time`` dimension is fixed-size, its ``REFERENCE_LIST`` written once
+(:meth:`FileLayout.close_with`).
 
 What xarray (h5netcdf) and netCDF-C read is the NetCDF-4 data model on HDF5: a
 dimension scale (``CLASS = "DIMENSION_SCALE"``, ``NAME``, ``_Netcdf4Dimid``)
@@ -26,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-#: Samples per HDF5 chunk of a compressed channel (32 KiB of float64), and of a growing one by default.
+#: Samples per HDF5 chunk of a compressed channel (32 KiB of float64).
 CHUNK_SAMPLES = 4096
 #: gzip level of a compressed file (``Results.save(..., compress=True)``), the cheapest.
 GZIP_LEVEL = 1
@@ -67,47 +69,30 @@ class FileLayout:
 
     # channels ------------------------------------------------------------------
 
-    def channels(self, names: list[str], attributes: list[list[tuple[str, str]]], samples: int | None,
-                 compress: bool = False, block: int = CHUNK_SAMPLES) -> list:
-        """One float64 variable per name on ``time``, with its text attributes (name, value) in order:
-        contiguous of ``samples`` values; or, when ``samples`` is None, growing in chunks of ``block``
-        samples (then :meth:`write` extends it, and writes of whole blocks at multiples of ``block`` go
-        straight to the file, one chunk each); or chunked and compressed (gzip after shuffle) with
-        ``compress``. Their ``DIMENSION_LIST`` is written by :meth:`close_with`."""
+    def channels(self, names: list[str], attributes: list[list[tuple[str, str]]], samples: int) -> list:
+        """One float64 variable of ``samples`` values per name on ``time``, with its text attributes (name,
+        value) in order, chunked and compressed (gzip after shuffle). Their ``DIMENSION_LIST`` is written by
+        :meth:`close_with`."""
         h5py = self._h5py
-        properties = self._dataset_properties(samples, compress, block)
-        length = samples or 0
-        space = h5py.h5s.create_simple((length,), (length,) if samples is not None else (h5py.h5s.UNLIMITED,))
-        access = h5py.h5p.create(h5py.h5p.DATASET_ACCESS)
-        if samples is None:  # whole chunks written once each: no cache (the memory of a long run stays bounded)
-            access.set_chunk_cache(0, 0, 1.0)
+        properties = h5py.h5p.create(h5py.h5p.DATASET_CREATE)
+        properties.set_fill_time(h5py.h5d.FILL_TIME_NEVER)  # every value is written
+        properties.set_obj_track_times(False)  # no modification times, as h5py writes
+        if samples:  # (HDF5 refuses a chunk longer than a fixed dimension, so an empty variable is contiguous)
+            properties.set_chunk((min(CHUNK_SAMPLES, samples),))
+            properties.set_shuffle()
+            properties.set_deflate(GZIP_LEVEL)
+        space = h5py.h5s.create_simple((samples,), (samples,))
         float64 = h5py.h5t.IEEE_F64LE
         made = []
         for name, attrs in zip(names, attributes):
-            dataset = h5py.h5d.create(self.id, name.encode(), float64, space, dcpl=properties, dapl=access)
+            dataset = h5py.h5d.create(self.id, name.encode(), float64, space, dcpl=properties)
             for key, value in attrs:
                 self.text_attribute(dataset, key, value)
             made.append(dataset)
         return made
 
-    def _dataset_properties(self, samples: int | None, compress: bool, block: int = CHUNK_SAMPLES):
-        h5py = self._h5py
-        properties = h5py.h5p.create(h5py.h5p.DATASET_CREATE)
-        properties.set_fill_time(h5py.h5d.FILL_TIME_NEVER)  # every value is written
-        properties.set_obj_track_times(False)  # no modification times, as h5py writes
-        if samples is not None and not compress:
-            properties.set_layout(h5py.h5d.CONTIGUOUS)
-            return properties
-        chunk = block if samples is None and not compress else max(1, min(CHUNK_SAMPLES, samples or CHUNK_SAMPLES))
-        properties.set_chunk((max(1, chunk),))
-        if compress:
-            properties.set_shuffle()
-            properties.set_deflate(GZIP_LEVEL)
-        return properties
-
     def write(self, datasets: list, start: int, rows: np.ndarray) -> None:
-        """Writes ``rows[k]`` (one row per dataset, float64) at samples ``start:start + n`` of each,
-        extending the growing ones to ``start + n``."""
+        """Writes ``rows[k]`` (one row per dataset, float64) at samples ``start:start + n`` of each."""
         h5py = self._h5py
         n = rows.shape[1]
         if n == 0:
@@ -115,8 +100,6 @@ class FileLayout:
         memory = h5py.h5s.create_simple((n,))
         rows = np.ascontiguousarray(rows, dtype=np.float64)  # one transposing copy of a (samples, channels) view
         for dataset, row in zip(datasets, rows):
-            if dataset.shape[0] < start + n:
-                dataset.set_extent((start + n,))
             space = dataset.get_space()
             space.select_hyperslab((start,), (n,))
             dataset.write(memory, space, row)
@@ -136,8 +119,10 @@ class FileLayout:
         h5py = self._h5py
         n = times.size
         space = h5py.h5s.create_simple((n,), (n,))
-        dataset = h5py.h5d.create(self.id, b"time", h5py.h5t.IEEE_F64LE, space,
-                                  dcpl=self._dataset_properties(n, False))
+        properties = h5py.h5p.create(h5py.h5p.DATASET_CREATE)
+        properties.set_layout(h5py.h5d.CONTIGUOUS)
+        properties.set_obj_track_times(False)
+        dataset = h5py.h5d.create(self.id, b"time", h5py.h5t.IEEE_F64LE, space, dcpl=properties)
         if n:
             dataset.write(h5py.h5s.ALL, h5py.h5s.ALL, np.ascontiguousarray(times, dtype=np.float64))
         for key, value in attributes:
