@@ -145,7 +145,11 @@ def exudyn_runner(elements: int, t_end: float, steps: int, newton_rtol: float, n
         ti.verboseMode = 0
         settings.solution.file.write = False
         settings.solution.sensors.writePeriod = SAMPLE
-        mbs.SolveDynamic(settings, storeSolver=True)
+        try:
+            mbs.SolveDynamic(settings, storeSolver=True)
+        except exudyn.SolverError:  # reported in the row (failed), left out of the comparison
+            nan = np.array([np.nan])
+            return np.array([0.0]), nan, nan, {"steps": 0, "newton_iterations": 1, "jacobians": 0, "failed": True}
         it = mbs.sys["dynamicSolver"].it
         p, r = mbs.GetSensorStoredData(tip), mbs.GetSensorStoredData(turn)
         x, y, a = p[:, 1], p[:, 2], r[:, -1]
@@ -247,14 +251,16 @@ def main(argv: list[str] | None = None) -> dict:
                      for solver in args.exu_solver]
         timing.interleave(cases + peers, args.repeats)
         # the comparison is against Exudyn's fastest solver on this mesh (median CPU time)
-        peer = min(peers, key=lambda c: timing.Spread.of(c.values("cpu")).median) if peers else None
+        working = [c for c in peers if not c.last[3].get("failed")]
+        peer = min(working, key=lambda c: timing.Spread.of(c.values("cpu")).median) if working else None
         for case in cases + peers:
             s = case.last[3]
             work = (f"{s['accepted_steps']} steps, {s['rhs_evaluations']} rhs, {s['jacobian_evaluations']} jacobians "
                     f"({s['jacobian_force_evaluations']} force evaluations), {s['factorizations']} factorizations "
                     f"({s.get('sparse_factorizations', 0)} sparse)"
                     if case not in peers else
-                    f"{s['steps']} steps, {s['newton_iterations']} Newton iterations, {s['jacobians']} jacobians")
+                    ("FAILED (SolveDynamic terminated)" if s.get("failed") else
+                     f"{s['steps']} steps, {s['newton_iterations']} Newton iterations, {s['jacobians']} jacobians"))
             steps_taken = s["accepted_steps"] if case not in peers else s["steps"]
             evaluations = s["rhs_evaluations"] if case not in peers else s["newton_iterations"]
             row = {"name": case.name, "elements": n, "cpu": timing.Spread.of(case.values("cpu")),
@@ -264,6 +270,7 @@ def main(argv: list[str] | None = None) -> dict:
             if peer is not None and case not in peers:
                 row["ratio_cpu"], row["ratio_wall"] = timing.ratio(peer, case, "cpu"), timing.ratio(peer, case, "wall")
             rows.append(row)
+        print(f"{n} elements done", flush=True)
         if peer is not None:
             for clock in ("cpu", "wall"):
                 s = timing.ratio(peer, engine, clock)
