@@ -103,8 +103,13 @@ def jointplay_runner(elements: int, t_end: float, rtol: float, jacobian: str = "
     return run
 
 
-def exudyn_runner(elements: int, t_end: float, steps: int, newton_rtol: float, spectral_radius: float = 0.9):
-    """A function building and running the Exudyn model once; returns (time, along, across, statistics)."""
+EXUDYN_SOLVERS = ("EigenSparse", "EXUdense")
+
+
+def exudyn_runner(elements: int, t_end: float, steps: int, newton_rtol: float, newton_atol: float,
+                  solver: str = "EigenSparse", spectral_radius: float = 0.9):
+    """A function building and running the Exudyn model once; returns (time, along, across, statistics).
+    ``solver``: Exudyn's linear solver (``EigenSparse``: its sparse LU; ``EXUdense``: its default)."""
 
     def run():
         sc = exudyn.SystemContainer()
@@ -133,10 +138,18 @@ def exudyn_runner(elements: int, t_end: float, steps: int, newton_rtol: float, s
         ti.endTime, ti.numberOfSteps = t_end, steps
         ti.generalizedAlpha.spectralRadius = spectral_radius
         ti.newton.relativeTolerance = newton_rtol
+        # (an absolute tolerance below the residual's round-off makes Newton fail and Exudyn halve its step)
+        ti.newton.absoluteTolerance = newton_atol
+        settings.linearSolver.solverType = getattr(exudyn.LinearSolverType, solver)
+        settings.linearSolver.reuseAnalyzedPattern = True
         ti.verboseMode = 0
         settings.solution.file.write = False
         settings.solution.sensors.writePeriod = SAMPLE
-        mbs.SolveDynamic(settings, storeSolver=True)
+        try:
+            mbs.SolveDynamic(settings, storeSolver=True)
+        except exudyn.SolverError:  # reported in the row (failed), left out of the comparison
+            nan = np.array([np.nan])
+            return np.array([0.0]), nan, nan, {"steps": 0, "newton_iterations": 1, "jacobians": 0, "failed": True}
         it = mbs.sys["dynamicSolver"].it
         p, r = mbs.GetSensorStoredData(tip), mbs.GetSensorStoredData(turn)
         x, y, a = p[:, 1], p[:, 2], r[:, -1]
@@ -160,9 +173,33 @@ def stretch(result, last: float = 2.0) -> float:
     return float(np.mean(along[t >= t[-1] - last] - LENGTH))
 
 
+def exponent(sizes: list[int], costs: list[float]) -> float:
+    """Least-squares slope of log(cost) against log(size)."""
+    return float(np.polyfit(np.log(sizes), np.log(costs), 1)[0])
+
+
+def print_exponents(rows: list[dict]) -> None:
+    """Cost exponents over element counts of every series: median CPU time per step, and per
+    evaluation (jointplay: right-hand side; Exudyn: Newton iteration), over all meshes and the last doubling."""
+    series: dict[str, list[dict]] = {}
+    for r in rows:
+        series.setdefault(r["name"].rsplit(",", 1)[0], []).append(r)
+    for name, rs in series.items():
+        if len(rs) < 2:
+            continue
+        sizes = [r["elements"] for r in rs]
+        for label, key in (("per step", "steps"), ("per evaluation", "evaluations")):
+            costs = [r["cpu"].median / r[key] for r in rs]
+            last = math.log(costs[-1] / costs[-2]) / math.log(sizes[-1] / sizes[-2])
+            print(f"{name}: CPU time {label} ~ N^{exponent(sizes, costs):.2f} over {sizes[0]}-{sizes[-1]} elements, "
+                  f"{last:.2f} over the last step ({sizes[-2]}-{sizes[-1]}); "
+                  f"{', '.join(f'{1e6 * c:.3g} us' for c in costs)}")
+
+
 def main(argv: list[str] | None = None) -> dict:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--elements", type=int, nargs="+", default=[4, 8, 16], help="meshes (linear elements)")
+    parser.add_argument("--elements", type=int, nargs="+", default=[8, 16, 32, 64, 128],
+                        help="meshes (linear elements)")
     parser.add_argument("--repeats", type=int, default=5, help="interleaved rounds")
     parser.add_argument("--t-end", type=float, default=20.0, help="end time [s]")
     parser.add_argument("--jp-rtol", type=float, default=1e-5, help="jointplay rtol (atol = rtol / 100)")
@@ -172,6 +209,15 @@ def main(argv: list[str] | None = None) -> dict:
     parser.add_argument("--exu-step", type=float, default=0.01, help="Exudyn's fixed step [s]")
     parser.add_argument("--exu-newton-rtol", type=float, default=1e-5,
                         help="Exudyn's Newton relative tolerance (its default 1e-8 stalls at round-off here)")
+    parser.add_argument("--exu-newton-atol", type=float, default=1e-6,
+                        help="Exudyn's Newton absolute tolerance (its default 1e-10 is below the residual's round-off "
+                             "on the finer meshes: Newton fails and Exudyn halves its step)")
+    parser.add_argument("--exu-solver", nargs="+", default=list(EXUDYN_SOLVERS), choices=EXUDYN_SOLVERS,
+                        help="Exudyn linear solvers to time (the comparison takes the fastest per mesh)")
+    parser.add_argument("--reference-step", type=float, default=None,
+                        help="reference by generalized-alpha at this step [s] instead of the NDF at rtol 1e-7 "
+                             "(cheaper on fine meshes; its error falls with the square of the step)")
+    parser.add_argument("--no-ndf", action="store_true", help="skip jointplay's NDF rows")
     parser.add_argument("--quick", action="store_true", help="2 elements, 1 s, 1 round: checks that it runs")
     parser.add_argument("--markdown", action="store_true", help="print a Markdown table")
     args = parser.parse_args(argv)
@@ -184,36 +230,47 @@ def main(argv: list[str] | None = None) -> dict:
           f"step {jp_step:g} s and bdf max_order 2, rtol {args.jp_rtol:g} atol {args.jp_rtol / 100:g} jacobian "
           f"{args.jacobian}; Exudyn "
           f"{'-' if exudyn is None else exudyn.__version__} generalized-alpha rho_inf 0.9, step {args.exu_step:g} s, "
-          f"Newton rtol {args.exu_newton_rtol:g}; {args.repeats} interleaved rounds; error = max |tip deflection "
+          f"Newton rtol {args.exu_newton_rtol:g} atol {args.exu_newton_atol:g}, solvers {' '.join(args.exu_solver)}; "
+          f"{args.repeats} interleaved rounds; error = max |tip deflection "
           f"across the root frame - jointplay at rtol {REFERENCE_RTOL:g}| on the 0.02 s grid")
     if exudyn is None:
         print(f"Exudyn rows: skipped, {EXUDYN_MISSING}")
     closed = RHO_A * FINAL_RATE ** 2 * LENGTH ** 3 / (3 * AXIAL)
     for n in args.elements:
-        reference = jointplay_runner(n, args.t_end, REFERENCE_RTOL)()
+        reference = (jointplay_runner(n, args.t_end, REFERENCE_RTOL)() if args.reference_step is None else
+                     jointplay_runner(n, args.t_end, REFERENCE_RTOL, step=args.reference_step)())
         engine = timing.Case(f"jointplay generalized-alpha, {n} linear elements",
                              jointplay_runner(n, args.t_end, args.jp_rtol, args.jacobian, step=jp_step))
         ndf = timing.Case(f"jointplay NDF, {n} linear elements",
                           jointplay_runner(n, args.t_end, args.jp_rtol, args.jacobian))
-        cases = [engine, ndf]
-        peer = None
+        cases = [engine] if args.no_ndf else [engine, ndf]
+        peers = []
         if exudyn is not None:
-            peer = timing.Case(f"Exudyn, {n} linear elements",
-                               exudyn_runner(n, args.t_end, steps, args.exu_newton_rtol))
-            cases.append(peer)
-        timing.interleave(cases, args.repeats)
-        for case in cases:
+            peers = [timing.Case(f"Exudyn {solver}, {n} linear elements",
+                                 exudyn_runner(n, args.t_end, steps, args.exu_newton_rtol, args.exu_newton_atol, solver))
+                     for solver in args.exu_solver]
+        timing.interleave(cases + peers, args.repeats)
+        # the comparison is against Exudyn's fastest solver on this mesh (median CPU time)
+        working = [c for c in peers if not c.last[3].get("failed")]
+        peer = min(working, key=lambda c: timing.Spread.of(c.values("cpu")).median) if working else None
+        for case in cases + peers:
             s = case.last[3]
             work = (f"{s['accepted_steps']} steps, {s['rhs_evaluations']} rhs, {s['jacobian_evaluations']} jacobians "
-                    f"({s['jacobian_force_evaluations']} force evaluations), {s['factorizations']} factorizations"
-                    if case is not peer else
-                    f"{s['steps']} steps, {s['newton_iterations']} Newton iterations, {s['jacobians']} jacobians")
+                    f"({s['jacobian_force_evaluations']} force evaluations), {s['factorizations']} factorizations "
+                    f"({s.get('sparse_factorizations', 0)} sparse)"
+                    if case not in peers else
+                    ("FAILED (SolveDynamic terminated)" if s.get("failed") else
+                     f"{s['steps']} steps, {s['newton_iterations']} Newton iterations, {s['jacobians']} jacobians"))
+            steps_taken = s["accepted_steps"] if case not in peers else s["steps"]
+            evaluations = s["rhs_evaluations"] if case not in peers else s["newton_iterations"]
             row = {"name": case.name, "elements": n, "cpu": timing.Spread.of(case.values("cpu")),
+                   "steps": steps_taken, "evaluations": evaluations, "peer": case in peers,
                    "wall": timing.Spread.of(case.values("wall")), "error": tip_error(case.last, reference),
                    "stretch": stretch(case.last), "work": work, "ratio_cpu": None, "ratio_wall": None}
-            if peer is not None and case is not peer:
+            if peer is not None and case not in peers:
                 row["ratio_cpu"], row["ratio_wall"] = timing.ratio(peer, case, "cpu"), timing.ratio(peer, case, "wall")
             rows.append(row)
+        print(f"{n} elements done", flush=True)
         if peer is not None:
             for clock in ("cpu", "wall"):
                 s = timing.ratio(peer, engine, clock)
@@ -233,6 +290,7 @@ def main(argv: list[str] | None = None) -> dict:
         else:
             print(f"{cells[0]:<28} CPU {cells[1]:>22} s  wall {cells[2]:>22} s  error {cells[3]:>7} mm  "
                   f"stretch {cells[4]:>7} mm  Exudyn/jointplay CPU {cells[5]}, wall {cells[6]}; {cells[7]}")
+    print_exponents(rows)
     print(f"closed-form stretch at 6 rad/s: {1e3 * closed:.4g} mm (a run shorter than 17 s has not reached it)")
     for n, clock, s in verdicts:
         for label, target in (("goal, generalized-alpha faster than Exudyn", 1.0), ("stretch, 10x faster", 10.0)):

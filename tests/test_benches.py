@@ -73,14 +73,15 @@ def test_spin_up_beam_benchmark_quick_mode_reports_jointplay_and_exudyn_rows(cap
     with_exudyn = importlib.util.find_spec("exudyn") is not None
     names = [r["name"] for r in report["rows"]]
     assert names == ["jointplay generalized-alpha, 2 linear elements", "jointplay NDF, 2 linear elements",
-                     *(["Exudyn, 2 linear elements"] if with_exudyn else [])]
+                     *(["Exudyn EigenSparse, 2 linear elements", "Exudyn EXUdense, 2 linear elements"]
+                       if with_exudyn else [])]
     for r in report["rows"]:
         assert r["cpu"].n == 1 and r["wall"].n == 1
         assert 0 <= r["error"] < 1e-3  # both codes near the reference over the first second
     out = capsys.readouterr().out
     assert "| jointplay generalized-alpha, 2 linear elements |" in out
     if with_exudyn:
-        assert "| Exudyn, 2 linear elements |" in out
+        assert "| Exudyn EigenSparse, 2 linear elements |" in out
         assert [(n, clock) for n, clock, _ in report["verdicts"]] == [(2, "cpu"), (2, "wall")]
         assert "goal, generalized-alpha faster than Exudyn, 2 elements, CPU time" in out
     else:

@@ -127,6 +127,7 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
     stats.set_item("jacobian_rhs_evaluations", s.jacobian_rhs_evaluations)?;
     stats.set_item("jacobian_force_evaluations", s.jacobian_force_evaluations)?;
     stats.set_item("factorizations", s.factorizations)?;
+    stats.set_item("sparse_factorizations", s.sparse_factorizations)?;
     stats.set_item("formulation", o.formulation.name())?;
     stats.set_item("formulation_reason", &o.formulation_reason)?;
     out.set_item("statistics", stats)?;

@@ -291,6 +291,12 @@ impl BeamBody {
         Self::spread(site, [0.0, 0.0, m], &mut out[site.first as usize..]);
     }
 
+    /// Lower entries `(i, j, M_ij)`, `i >= j`, of the consistent mass [kg, kg m, kg m^2],
+    /// in the body's velocity coordinates.
+    pub fn mass_entries(&self) -> &[(u32, u32, f64)] {
+        &self.mass_entries
+    }
+
     /// The mass block: constant, factored.
     pub fn mass_block(&self) -> MassBlock<'_> {
         MassBlock::ConstantFactored { program: &self.mass_program, factor: &self.mass_factor }

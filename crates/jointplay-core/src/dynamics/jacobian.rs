@@ -70,6 +70,8 @@ pub(crate) struct StructuredJacobian {
     colour_offsets: Vec<usize>,
     /// (contribution, the one column of colour g it reads), over `hit_offsets[g]..hit_offsets[g + 1]`.
     hits: Vec<(usize, usize)>,
+    /// Where each hit's derivatives (one per row the contribution writes) start in `local`.
+    hit_entries: Vec<usize>,
     hit_offsets: Vec<usize>,
     /// Whether some contribution hit by colour g reads frames (a force element).
     needs_frames: Vec<bool>,
@@ -77,7 +79,11 @@ pub(crate) struct StructuredJacobian {
     n_rows: usize,
     /// Every contribution's rows at the unperturbed state, as `writes`.
     base: Vec<f64>,
-    /// `d[Q, z_dot]/dy`, column-major (column c at `c * n_rows`).
+    /// `d[Q, z_dot]/dy` contribution by contribution: contribution k's derivative of its
+    /// i-th written row by its j-th read column at `entry_offsets[k] + j * writes + i`.
+    local: Vec<f64>,
+    entry_offsets: Vec<usize>,
+    /// `d[Q, z_dot]/dy` summed, column-major (column c at `c * n_rows`): the dense Jacobian's.
     derivatives: Vec<f64>,
     /// Forward-difference increment of every column [unit of the column].
     steps: Vec<f64>,
@@ -208,10 +214,13 @@ impl StructuredJacobian {
             colour_columns: Vec::new(),
             colour_offsets: vec![0],
             hits: Vec::new(),
+            hit_entries: Vec::new(),
             hit_offsets: vec![0],
             needs_frames: Vec::new(),
             n_rows: nv + nz,
             base: Vec::new(),
+            local: Vec::new(),
+            entry_offsets: Vec::new(),
             derivatives: vec![0.0; n * (nv + nz)],
             steps: vec![0.0; n],
             state: vec![0.0; n],
@@ -230,6 +239,7 @@ impl StructuredJacobian {
             y_perturbed: vec![0.0; if whole_columns.is_empty() { 0 } else { n }],
             whole_columns,
         };
+        structure.index_entries();
         structure.index_colours(n_colours);
         structure.base = vec![0.0; structure.writes.len()];
         let widest = structure.write_offsets.windows(2).map(|w| w[1] - w[0]).max().unwrap_or(0);
@@ -262,6 +272,17 @@ impl StructuredJacobian {
         Ok(self.whole_columns.len())
     }
 
+    /// Where every contribution's derivatives start among the local entries.
+    fn index_entries(&mut self) {
+        let mut next = 0;
+        for k in 0..self.contributions.len() {
+            self.entry_offsets.push(next);
+            next += self.reads(k).len() * (self.write_offsets[k + 1] - self.write_offsets[k]);
+        }
+        self.entry_offsets.push(next);
+        self.local = vec![0.0; next];
+    }
+
     /// The columns and the hits of every colour.
     fn index_colours(&mut self, n_colours: usize) {
         for g in 0..n_colours {
@@ -269,8 +290,10 @@ impl StructuredJacobian {
             self.colour_offsets.push(self.colour_columns.len());
             let mut frames = false;
             for (k, contribution) in self.contributions.iter().enumerate() {
-                if let Some(&c) = self.reads(k).iter().find(|&&c| self.colours[c] == Some(g)) {
+                if let Some(j) = self.reads(k).iter().position(|&c| self.colours[c] == Some(g)) {
+                    let c = self.reads(k)[j];
                     self.hits.push((k, c));
+                    self.hit_entries.push(self.entry_offsets[k] + j * (self.write_offsets[k + 1] - self.write_offsets[k]));
                     frames |= matches!(contribution, Contribution::Force(_));
                 }
             }
@@ -338,10 +361,9 @@ impl StructuredJacobian {
         Ok(passes)
     }
 
-    /// `d[Q, z_dot]/dy` by coloured forward differences; returns the passes made.
-    fn local_derivatives(&mut self, model: &Model, memory: &[ElementMemory], t: f64, y: &[f64], floors: &[f64]) -> Result<usize, SimulationError> {
+    /// `d[Q, z_dot]/dy` by coloured forward differences, into the local entries; returns the passes made.
+    pub(crate) fn local_derivatives(&mut self, model: &Model, memory: &[ElementMemory], t: f64, y: &[f64], floors: &[f64]) -> Result<usize, SimulationError> {
         let layout = &model.layout;
-        self.derivatives.fill(0.0);
         self.state.copy_from_slice(y);
         // the unperturbed pass
         {
@@ -369,12 +391,12 @@ impl StructuredJacobian {
                 let (q, v, _) = layout.split(&self.state);
                 update_frames(model, q, v, &mut self.scratch.frames);
             }
-            for &(k, c) in &self.hits[self.hit_offsets[g]..self.hit_offsets[g + 1]] {
+            for (&(k, c), &entry) in self.hits[self.hit_offsets[g]..self.hit_offsets[g + 1]].iter().zip(&self.hit_entries[self.hit_offsets[g]..]) {
                 let rows = self.write_offsets[k]..self.write_offsets[k + 1];
                 evaluate(model, memory, t, self.contributions[k], &self.writes[rows.clone()], &self.state, &mut self.scratch)?;
-                let column = &mut self.derivatives[c * self.n_rows..(c + 1) * self.n_rows];
-                for ((&r, value), base) in self.writes[rows.clone()].iter().zip(&self.scratch.local).zip(&self.base[rows]) {
-                    column[r] += (value - base) / self.steps[c];
+                let entries = &mut self.local[entry..entry + rows.len()];
+                for ((d, value), base) in entries.iter_mut().zip(&self.scratch.local).zip(&self.base[rows]) {
+                    *d = (value - base) / self.steps[c];
                 }
             }
             for &c in &self.colour_columns[columns] {
@@ -388,6 +410,7 @@ impl StructuredJacobian {
     /// columns of `dQ/dy`, `dz_dot/dy` as differenced (the mass at the positions `q`).
     fn assemble(&mut self, model: &Model, q: &[f64], ws: &mut Workspace, jacobian: &mut [f64]) {
         let (nq, nv) = (model.layout.nq, model.layout.nv);
+        self.sum_local_derivatives();
         let n = model.layout.len();
         let rows = model.n_dynamic_equations();
         jacobian.fill(0.0);
@@ -411,6 +434,47 @@ impl StructuredJacobian {
                 jacobian[(nq + nv + i) * n + c] = *d;
             }
         }
+    }
+}
+
+impl StructuredJacobian {
+    /// The local entries summed into the dense `derivatives`, contribution by contribution.
+    fn sum_local_derivatives(&mut self) {
+        self.derivatives.fill(0.0);
+        for k in 0..self.contributions.len() {
+            let rows = &self.writes[self.write_offsets[k]..self.write_offsets[k + 1]];
+            let reads = &self.reads[self.read_offsets[k]..self.read_offsets[k + 1]];
+            let entries = &self.local[self.entry_offsets[k]..self.entry_offsets[k + 1]];
+            for (&c, derivatives) in reads.iter().zip(entries.chunks_exact(rows.len().max(1))) {
+                let column = &mut self.derivatives[c * self.n_rows..(c + 1) * self.n_rows];
+                for (&r, d) in rows.iter().zip(derivatives) {
+                    column[r] += d;
+                }
+            }
+        }
+    }
+
+    /// Entries `(row of [Q, z_dot], column of y)` of the local derivatives, in the order
+    /// [`Self::local_entries`] gives their values.
+    pub(crate) fn local_pattern(&self) -> Vec<(usize, usize)> {
+        let mut pattern = Vec::with_capacity(self.local.len());
+        for k in 0..self.contributions.len() {
+            let rows = &self.writes[self.write_offsets[k]..self.write_offsets[k + 1]];
+            for &c in self.reads(k) {
+                pattern.extend(rows.iter().map(|&r| (r, c)));
+            }
+        }
+        pattern
+    }
+
+    /// The local derivatives of the last [`Self::local_derivatives`], as [`Self::local_pattern`].
+    pub(crate) fn local_entries(&self) -> &[f64] {
+        &self.local
+    }
+
+    /// Whether some columns are differenced whole (a configuration-dependent mass).
+    pub(crate) fn has_whole_columns(&self) -> bool {
+        !self.whole_columns.is_empty()
     }
 }
 

@@ -16,7 +16,7 @@ use crate::integrate::{IntegratorOptions, JacobianMethod, Method, Statistics};
 /// hanging in a clearance joint at its end, a spring from the ground to its
 /// middle, a hydraulic cylinder (two pressure states) from the ground to the
 /// block, a point force on the beam and a torsional spring between beam and block.
-fn mixed() -> Model {
+pub(super) fn mixed() -> Model {
     model(serde_json::json!({
         "name": "mixed", "gravity": [0, -9.81],
         "ground_points": [{"name": "O", "position": [0, 0]}, {"name": "C", "position": [0.6, -0.5]}, {"name": "S", "position": [0.4, 0.5]}],
@@ -52,7 +52,7 @@ fn mixed() -> Model {
 
 /// A strained, moving state of the mixed model: the beam bent and its nodes
 /// moving, the journal 5 um into contact with the bearing, moving into it.
-fn mixed_state(m: &Model) -> Vec<f64> {
+pub(super) fn mixed_state(m: &Model) -> Vec<f64> {
     let mut y: Vec<f64> = m.initial_coordinates.iter().chain(&m.initial_velocities).chain(&m.initial_element_states).copied().collect();
     let (nq, beam) = (m.layout.nq, m.layout.bodies[1]);
     let (block, beam_kind) = (m.layout.bodies[0], &m.bodies[1].kind);
@@ -84,7 +84,7 @@ fn mixed_state(m: &Model) -> Vec<f64> {
 /// comparisons of two differences with the same increments see their rounding,
 /// about eps |f| / h, which these floors keep below 1e-8 of the derivatives here
 /// (a run's floors, atol/rtol, are smaller: the Jacobian tolerates that rounding).
-fn floors(n: usize) -> Vec<f64> {
+pub(super) fn floors(n: usize) -> Vec<f64> {
     vec![1.0; n]
 }
 
@@ -122,7 +122,7 @@ fn differences(y: &[f64], floors: &[f64], n_out: usize, mut g: impl FnMut(&[f64]
 }
 
 /// The structured Jacobian at (t, y) (the workspace evaluated there first, as the system does).
-fn structured(m: &Model, memory: &[ElementMemory], t: f64, y: &[f64], stabilization: Stabilization, ws: &mut Workspace) -> (StructuredJacobian, Vec<f64>) {
+pub(super) fn structured(m: &Model, memory: &[ElementMemory], t: f64, y: &[f64], stabilization: Stabilization, ws: &mut Workspace) -> (StructuredJacobian, Vec<f64>) {
     let n = y.len();
     accelerations(m, memory, t, y, stabilization, ws).unwrap();
     let mut s = StructuredJacobian::new(m);
@@ -348,7 +348,7 @@ fn under_constraints_the_structured_jacobian_differs_from_forward_differences_by
 
 /// Runs `m` with the NDF (orders 1 and 2) and the given Jacobian; the trajectory's
 /// channels `names` and the statistics.
-fn run(m: &Model, t_end: f64, integrator: IntegratorOptions, stabilization: Stabilization, names: &[&str]) -> (Vec<Vec<f64>>, Statistics) {
+pub(super) fn run(m: &Model, t_end: f64, integrator: IntegratorOptions, stabilization: Stabilization, names: &[&str]) -> (Vec<Vec<f64>>, Statistics) {
     let mut ws = Workspace::new(m);
     let mut state = assemble(m, 0.0, &mut ws).unwrap();
     let outcome = simulate(m, &mut state, t_end, &SimulationOptions { integrator, stabilization, ..SimulationOptions::default() }, None);

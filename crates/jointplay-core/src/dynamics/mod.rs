@@ -25,6 +25,7 @@ mod jacobian;
 pub mod joint_coordinates;
 mod layout;
 mod model;
+mod newton_parts;
 mod progress;
 mod projection;
 mod redundancy;
@@ -70,3 +71,5 @@ mod modal_tests;
 mod modal_matrices_tests;
 #[cfg(test)]
 mod jacobian_tests;
+#[cfg(test)]
+mod newton_parts_tests;

@@ -10,13 +10,14 @@ use super::equations::{accelerations, update_frames, Stabilization};
 use super::joint_coordinates::{self, joint_accelerations, JointTree};
 use super::frame::Marker;
 use super::jacobian::StructuredJacobian;
+use super::newton_parts;
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::{Model, Progress, Workspace};
 use crate::error::SimulationError;
 use crate::force::{ElementFault, ElementMemory};
 use crate::body::BodyKind;
-use crate::integrate::{JacobianCost, OdeSystem, SystemJacobian};
+use crate::integrate::{JacobianCost, NewtonParts, NewtonStructure, OdeSystem, SystemJacobian};
 
 /// Newton iterations allowed when projecting after a step: the drift of one
 /// step is at the level of the integration tolerance, so one or two suffice.
@@ -328,6 +329,34 @@ impl OdeSystem for MechanismSystem<'_> {
         });
         self.ws.structured_jacobian = Some(structured);
         cost.rhs_evaluations += filled?;
+        Ok(Some(cost))
+    }
+
+    fn newton_structure(&self) -> Option<NewtonStructure> {
+        if self.system_jacobian() == SystemJacobian::Unavailable {
+            return None;
+        }
+        newton_parts::structure(self.model, &StructuredJacobian::new(self.model))
+    }
+
+    fn jacobian_parts(&mut self, t: f64, y: &[f64], floors: &[f64], parts: &mut NewtonParts) -> Result<Option<JacobianCost>, SimulationError> {
+        let mut cost = JacobianCost::default();
+        // the constraint linearisation and factor at (t, y): the integrator's evaluation there, normally
+        if !self.step_end.holds_evaluation(t, y) {
+            self.step_end.evaluated_at = None;
+            self.evaluate(t, y)?;
+            self.step_end.remember_evaluation(t, y, false);
+            cost.rhs_evaluations += 1;
+        }
+        if !newton_parts::fill_constraint(self.model, self.ws, &mut parts.constraint) {
+            return Ok(None);
+        }
+        newton_parts::fill_mass(self.model, &mut parts.mass);
+        let mut structured = self.ws.structured_jacobian.take().unwrap_or_else(|| Box::new(StructuredJacobian::new(self.model)));
+        let passes = structured.local_derivatives(self.model, self.memory, t, y, floors);
+        parts.local.copy_from_slice(structured.local_entries());
+        self.ws.structured_jacobian = Some(structured);
+        cost.force_evaluations = passes?;
         Ok(Some(cost))
     }
 

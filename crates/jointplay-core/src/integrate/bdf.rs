@@ -235,7 +235,7 @@ impl Ndf {
                     return Ok(Newton::Converged(iterations));
                 }
             }
-            if fresh {
+            if fresh && !self.matrix.retry_dense() {
                 return Ok(Newton::Failed);
             }
             self.matrix.invalidate();

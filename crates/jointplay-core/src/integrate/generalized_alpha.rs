@@ -174,7 +174,8 @@ impl GeneralizedAlpha {
         let Parameters { alpha_m, alpha_f, gamma, beta } = self.parameters;
         let (n, m) = (self.n, self.m);
         let p = n - m;
-        self.matrix.factor_with(stats, h, SAME_STEP, p, |jacobian, matrix| {
+        let coefficients = (1.0 - alpha_m, (1.0 - alpha_f) * h * gamma, (1.0 - alpha_f) * h * h * beta);
+        self.matrix.factor_reduced(stats, h, SAME_STEP, p, coefficients, |jacobian, matrix| {
             for i in 0..p {
                 let row = &jacobian[(m + i) * n..(m + i + 1) * n];
                 for j in 0..p {
@@ -272,7 +273,7 @@ impl GeneralizedAlpha {
             if self.factor(stats, h) && self.solve_step(system, stats, t + h, y, h, fresh)? {
                 return Ok(true);
             }
-            if fresh {
+            if fresh && !self.matrix.retry_dense() {
                 return Ok(false);
             }
             self.matrix.invalidate();

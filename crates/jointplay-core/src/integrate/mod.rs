@@ -34,12 +34,14 @@ mod generalized_alpha;
 mod newton_matrix;
 mod options;
 mod polynomial;
+pub(crate) mod sparse_newton;
 mod statistics;
 #[cfg(test)]
 mod tests;
 
 pub use options::{IntegratorOptions, JacobianMethod, Method, MIN_RTOL};
 pub use statistics::Statistics;
+pub use sparse_newton::{NewtonParts, NewtonStructure};
 
 use crate::error::SimulationError;
 
@@ -100,6 +102,21 @@ pub trait OdeSystem {
     /// the system forms no Jacobian (the default): the integrator then takes
     /// forward differences of `rhs`. Must not allocate after its first call.
     fn jacobian(&mut self, _t: f64, _y: &[f64], _floors: &[f64], _jacobian: &mut [f64]) -> Result<Option<JacobianCost>, SimulationError> {
+        Ok(None)
+    }
+
+    /// The structure of the Jacobian as the parts of a sparse Newton matrix
+    /// ([`sparse_newton`]: `y = [q, v, z]`, `q_dot = v`, accelerations `A Q + b` with `A`
+    /// the constrained-acceleration operator of a mass matrix and constraint rows), or
+    /// `None` (the default): the Newton matrix is then dense. Asked once per run.
+    fn newton_structure(&self) -> Option<NewtonStructure> {
+        None
+    }
+
+    /// The values of the parts of [`Self::newton_structure`] at (t, y), called where
+    /// [`Self::jacobian`] would be; returns what it cost, or `None` when the parts do not
+    /// describe the Jacobian at this state (the dense Jacobian is then formed).
+    fn jacobian_parts(&mut self, _t: f64, _y: &[f64], _floors: &[f64], _parts: &mut NewtonParts) -> Result<Option<JacobianCost>, SimulationError> {
         Ok(None)
     }
 

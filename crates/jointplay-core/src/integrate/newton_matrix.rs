@@ -3,8 +3,14 @@
 //! system ([`OdeSystem::jacobian`]) or by forward differences, kept across
 //! steps until the iterations fail, and its LU factors, kept until `c`
 //! changes by more than [`REFACTOR_CHANGE`] (`docs/theory/integrator-jacobian.md`).
+//!
+//! A system that describes the structure of its Jacobian ([`OdeSystem::newton_structure`])
+//! gets a sparse augmented Newton matrix instead of the dense one
+//! ([`SparseNewton`]): same equations, cost growing with the coupling. Should that
+//! matrix be singular (dependent constraints), the run goes on with the dense one.
 
 use super::control::{eval, Tolerances};
+use super::sparse_newton::SparseNewton;
 use super::{OdeSystem, Statistics};
 use crate::error::SimulationError;
 use crate::linalg::{lu_factor, lu_solve};
@@ -35,6 +41,18 @@ pub(crate) struct IterationMatrix {
     f_perturbed: Vec<f64>,
     /// The perturbed state.
     y_perturbed: Vec<f64>,
+    /// The sparse Newton matrix, when the system describes its structure.
+    sparse: Option<SparseNewton>,
+    /// Whether the system was asked for that structure.
+    probed: bool,
+    /// Whether the kept Jacobian is in the sparse form, and the factors sparse.
+    sparse_kept: bool,
+    /// Whether the sparse factors are of `I - c J` (the NDF), else of the reduced matrix.
+    sparse_full: bool,
+    /// Whether a sparse matrix was found singular: the dense one is used from then on.
+    sparse_disabled: bool,
+    /// Whether the last factorisation failed on the sparse matrix (see [`Self::retry_dense`]).
+    sparse_failed: bool,
 }
 
 impl IterationMatrix {
@@ -54,6 +72,37 @@ impl IterationMatrix {
             f_base: vec![0.0; n],
             f_perturbed: vec![0.0; n],
             y_perturbed: vec![0.0; n],
+            sparse: None,
+            probed: false,
+            sparse_kept: false,
+            sparse_full: false,
+            sparse_disabled: false,
+            sparse_failed: false,
+        }
+    }
+
+    /// Whether the kept Jacobian and its factors are in the sparse form.
+    #[cfg(test)]
+    pub(crate) fn is_sparse(&self) -> bool {
+        self.sparse_kept
+    }
+
+    /// After a failed factorisation: whether it was the sparse matrix's (singular), the
+    /// sparse form is now off and the caller should form the Jacobian again (dense) rather
+    /// than count the attempt as failed.
+    pub(crate) fn retry_dense(&mut self) -> bool {
+        std::mem::take(&mut self.sparse_failed)
+    }
+
+    /// The system's sparse parts at (t, y), when it offers them; the cost, or None for dense.
+    fn update_sparse<S: OdeSystem>(&mut self, system: &mut S, t: f64, y: &[f64]) -> Result<Option<super::JacobianCost>, SimulationError> {
+        if !self.probed {
+            self.probed = true;
+            self.sparse = system.newton_structure().and_then(|structure| SparseNewton::new(structure).ok());
+        }
+        match (&mut self.sparse, self.sparse_disabled) {
+            (Some(sparse), false) => system.jacobian_parts(t, y, &self.floors, &mut sparse.parts),
+            _ => Ok(None),
         }
     }
 
@@ -74,7 +123,17 @@ impl IterationMatrix {
         eval(system, stats, t, y, &mut self.f_base)?;
         stats.jacobian_rhs_evaluations += 1;
         self.factored_c = None;
+        self.sparse_kept = false;
         if self.use_system_jacobian {
+            if let Some(cost) = self.update_sparse(system, t, y)? {
+                stats.rhs_evaluations += cost.rhs_evaluations;
+                stats.jacobian_rhs_evaluations += cost.rhs_evaluations;
+                stats.jacobian_force_evaluations += cost.force_evaluations;
+                stats.jacobian_evaluations += 1;
+                self.sparse_kept = true;
+                self.valid = true;
+                return Ok(());
+            }
             if let Some(cost) = system.jacobian(t, y, &self.floors, &mut self.jacobian)? {
                 stats.rhs_evaluations += cost.rhs_evaluations;
                 stats.jacobian_rhs_evaluations += cost.rhs_evaluations;
@@ -106,6 +165,9 @@ impl IterationMatrix {
     /// [`REFACTOR_CHANGE`]; false when the matrix is singular.
     pub(crate) fn factor(&mut self, stats: &mut Statistics, c: f64) -> bool {
         let n = self.n;
+        if self.sparse_kept {
+            return self.factor_sparse(stats, c, REFACTOR_CHANGE, true, (1.0, c, c * c));
+        }
         self.factor_with(stats, c, REFACTOR_CHANGE, n, |jacobian, matrix| {
             for (a, j) in matrix.iter_mut().zip(jacobian) {
                 *a = -c * j;
@@ -114,6 +176,39 @@ impl IterationMatrix {
                 matrix[i * n + i] += 1.0;
             }
         })
+    }
+
+    /// Factors the reduced Newton matrix `alpha I - c_v J_rr - c_q J_rq` on `r = [v, z]`
+    /// (`J_rq`: their derivatives by the positions), of `size` rows, unless the present factors were built for a `key`
+    /// within the relative `tolerance`: sparse from the coefficients, or dense from the
+    /// matrix `fill(J, matrix)` writes (row-major); false when the matrix is singular.
+    pub(crate) fn factor_reduced(&mut self, stats: &mut Statistics, key: f64, tolerance: f64, size: usize, coefficients: (f64, f64, f64), fill: impl FnOnce(&[f64], &mut [f64])) -> bool {
+        if self.sparse_kept {
+            return self.factor_sparse(stats, key, tolerance, false, coefficients);
+        }
+        self.factor_with(stats, key, tolerance, size, fill)
+    }
+
+    /// The sparse factorisation for `(alpha, c_v, c_q)` unless the present one was for a
+    /// `key` within `tolerance`; on a singular matrix the sparse form is turned off.
+    fn factor_sparse(&mut self, stats: &mut Statistics, key: f64, tolerance: f64, full: bool, (alpha, c_v, c_q): (f64, f64, f64)) -> bool {
+        if let Some(built) = self.factored_c {
+            if (key / built - 1.0).abs() <= tolerance && full == self.sparse_full {
+                return true;
+            }
+        }
+        let Some(sparse) = &mut self.sparse else { return false };
+        stats.factorizations += 1;
+        stats.sparse_factorizations += 1;
+        let ok = sparse.factor(alpha, c_v, c_q).is_ok();
+        self.factored_c = ok.then_some(key);
+        self.sparse_full = full;
+        if !ok {
+            self.sparse_disabled = true;
+            self.sparse_failed = true;
+            self.valid = false;
+        }
+        ok
     }
 
     /// Factors the `size x size` matrix that `fill(J, matrix)` writes (row-major) from the
@@ -134,7 +229,14 @@ impl IterationMatrix {
     }
 
     /// Solves `A x = b` in place with the present factors (A: `I - c J` or the last matrix of [`Self::factor_with`]).
-    pub(crate) fn solve(&self, b: &mut [f64]) {
+    pub(crate) fn solve(&mut self, b: &mut [f64]) {
+        if let (true, Some(sparse)) = (self.sparse_kept, &mut self.sparse) {
+            match (self.sparse_full, self.factored_c) {
+                (true, Some(c)) => sparse.solve_full(c, b),
+                _ => sparse.solve_reduced(b),
+            }
+            return;
+        }
         let size = self.factored_size;
         lu_solve(&self.factors[..size * size], size, &self.pivots[..size], b);
     }

@@ -32,6 +32,9 @@ pub struct Statistics {
     pub jacobian_force_evaluations: usize,
     /// LU factorisations of the Newton iteration matrix (implicit method only).
     pub factorizations: usize,
+    /// Of those, the factorisations of the sparse augmented Newton matrix (a system that
+    /// describes its Jacobian's structure; `docs/theory/integrator-jacobian.md`).
+    pub sparse_factorizations: usize,
 }
 
 impl Statistics {

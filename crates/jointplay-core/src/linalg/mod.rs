@@ -17,6 +17,7 @@ mod dense_ldl;
 mod lu;
 mod pattern_ldl;
 mod sparse_cholesky;
+mod sparse_lu;
 
 pub use cholesky::{cholesky_factor, cholesky_solve, RankDeficiency, RELATIVE_PIVOT_TOLERANCE};
 pub use dense_ldl::ldl_solve_scaled;
@@ -24,6 +25,7 @@ pub use lu::{lu_factor, lu_solve, SingularMatrix};
 pub use block_ldl::BlockLdl;
 pub use pattern_ldl::PatternLdl;
 pub use sparse_cholesky::SparseCholesky;
+pub use sparse_lu::{SingularSparse, SparseLu};
 
 /// Matrices shared by the tests of the factorisations.
 #[cfg(test)]
