@@ -81,12 +81,6 @@ impl IterationMatrix {
         }
     }
 
-    /// Whether the kept Jacobian and its factors are in the sparse form.
-    #[cfg(test)]
-    pub(crate) fn is_sparse(&self) -> bool {
-        self.sparse_kept
-    }
-
     /// After a failed factorisation: whether it was the sparse matrix's (singular), the
     /// sparse form is now off and the caller should form the Jacobian again (dense) rather
     /// than count the attempt as failed.
