@@ -20,42 +20,60 @@ pub(crate) fn lobatto_point(j: usize, n: usize) -> f64 {
     (std::f64::consts::PI * j as f64 / n as f64).cos()
 }
 
-/// Cosines `cos(pi m / MAX_DEGREE)`, m = 0..2 MAX_DEGREE, computed once.
-#[derive(Clone, Debug)]
-pub(crate) struct CosineTable([f64; 2 * MAX_DEGREE]);
+/// Degrees of the interpolants, each the double of the one before.
+pub(crate) const DEGREES: [usize; 3] = [MAX_DEGREE / 4, MAX_DEGREE / 2, MAX_DEGREE];
 
-impl Default for CosineTable {
+/// The matrices taking the values at the Lobatto points of each degree of
+/// [`DEGREES`] to the coefficients of their interpolant, computed once.
+#[derive(Clone, Debug)]
+pub(crate) struct CoefficientMatrices(Vec<Vec<f64>>);
+
+impl Default for CoefficientMatrices {
     fn default() -> Self {
-        Self(std::array::from_fn(|m| (std::f64::consts::PI * m as f64 / MAX_DEGREE as f64).cos()))
+        Self(DEGREES.iter().map(|&n| Self::matrix(n)).collect())
     }
 }
 
-impl CosineTable {
-    /// `cos(pi j k / n)` for a degree n dividing [`MAX_DEGREE`].
-    fn cos(&self, j: usize, k: usize, n: usize) -> f64 {
-        self.0[(j * k * (MAX_DEGREE / n)) % (2 * MAX_DEGREE)]
+impl CoefficientMatrices {
+    /// Row-major (n + 1) x (n + 1): `c_k = sum_j m[k][j] f_j`.
+    fn matrix(n: usize) -> Vec<f64> {
+        let mut m = vec![0.0; (n + 1) * (n + 1)];
+        for k in 0..=n {
+            for j in 0..=n {
+                let ends = if j == 0 || j == n { 0.5 } else { 1.0 } * if k == 0 || k == n { 0.5 } else { 1.0 };
+                m[k * (n + 1) + j] = ends * 2.0 / n as f64 * (std::f64::consts::PI * (j * k) as f64 / n as f64).cos();
+            }
+        }
+        m
+    }
+
+    /// The matrix of degree n (empty unless n is one of [`DEGREES`]).
+    fn of(&self, n: usize) -> &[f64] {
+        self.0.iter().find(|m| m.len() == (n + 1) * (n + 1)).map_or(&[], |m| &m[..])
+    }
+
+    /// Coefficient `c_k` of the interpolant of degree n of `values[..=n]`.
+    pub(crate) fn coefficient(&self, values: &[f64], n: usize, k: usize) -> f64 {
+        let row = self.of(n).get(k * (n + 1)..(k + 1) * (n + 1)).unwrap_or(&[]);
+        row.iter().zip(values).map(|(m, f)| m * f).sum()
     }
 
     /// Coefficients `c[..=n]` of the interpolant of degree n of `values[j]`
     /// given at the Lobatto points `x_j` (j = 0..=n).
     pub(crate) fn coefficients(&self, values: &[f64], n: usize, c: &mut [f64]) {
         for (k, ck) in c[..=n].iter_mut().enumerate() {
-            let mut sum = 0.5 * (values[0] + values[n] * self.cos(n, k, n));
-            for (j, &v) in values.iter().enumerate().take(n).skip(1) {
-                sum += v * self.cos(j, k, n);
-            }
-            let halve = if k == 0 || k == n { 0.5 } else { 1.0 };
-            *ck = halve * 2.0 / n as f64 * sum;
+            *ck = self.coefficient(values, n, k);
         }
     }
 }
 
-/// Estimate of the interpolant's largest error on the interval: the size of
-/// its last two coefficients (for a function analytic around the interval
-/// the coefficients fall geometrically, and the error is of the size of the
-/// first coefficient left out; Trefethen 2013, ch. 8).
-pub(crate) fn tail(c: &[f64], n: usize) -> f64 {
-    c[n - 1].abs() + c[n].abs()
+/// Estimate of the interpolant's largest error on the interval from its
+/// last two coefficients `c_(n-1)`, `c_n`: their size (for a function
+/// analytic around the interval the coefficients fall geometrically, and
+/// the error is of the size of the first coefficient left out; Trefethen
+/// 2013, ch. 8).
+pub(crate) fn tail(last_two: [f64; 2]) -> f64 {
+    last_two[0].abs() + last_two[1].abs()
 }
 
 /// `sum_k c_k T_k(x)` by Clenshaw's recurrence.
@@ -74,11 +92,11 @@ mod tests {
     #[test]
     fn interpolant_of_a_polynomial_of_lower_degree_is_the_polynomial() {
         let f = |x: f64| 3.0 - 2.0 * x + 0.5 * x.powi(5);
-        let table = CosineTable::default();
+        let table = CoefficientMatrices::default();
         let values: Vec<f64> = (0..=8).map(|j| f(lobatto_point(j, 8))).collect();
         let mut c = [0.0; 9];
         table.coefficients(&values, 8, &mut c);
-        assert!(tail(&c, 8) < 1e-14, "{c:?}");
+        assert!(tail([c[7], c[8]]) < 1e-14, "{c:?}");
         for x in [-1.0, -0.3, 0.123, 0.77, 1.0] {
             assert!((evaluate(&c, x) - f(x)).abs() < 1e-14, "{x}");
         }
@@ -88,13 +106,14 @@ mod tests {
     fn tail_bounds_the_error_of_an_analytic_function() {
         // exp(x) sin(3x): the error of each degree below its tail estimate, and the degree 32 interpolant exact
         let f = |x: f64| x.exp() * (3.0 * x).sin();
-        let table = CosineTable::default();
-        for n in [8, 16, 32] {
+        let table = CoefficientMatrices::default();
+        for n in DEGREES {
             let values: Vec<f64> = (0..=n).map(|j| f(lobatto_point(j, n))).collect();
             let mut c = [0.0; MAX_DEGREE + 1];
             table.coefficients(&values, n, &mut c);
             let error = (0..=1000).map(|i| -1.0 + 2e-3 * i as f64).map(|x| (evaluate(&c[..=n], x) - f(x)).abs()).fold(0.0, f64::max);
-            assert!(error <= tail(&c, n).max(1e-14), "degree {n}: error {error}, tail {}", tail(&c, n));
+            let tail = tail([c[n - 1], c[n]]);
+            assert!(error <= tail.max(1e-14), "degree {n}: error {error}, tail {tail}");
             if n == 32 {
                 assert!(error < 1e-13, "{n}: {error}");
             }

@@ -20,7 +20,13 @@ use super::brent::maximize_from;
 #[path = "chebyshev.rs"]
 mod chebyshev;
 use crate::error::SimulationError;
-use chebyshev::{CosineTable, MAX_DEGREE};
+use chebyshev::{CoefficientMatrices, DEGREES, MAX_DEGREE};
+use std::sync::LazyLock;
+
+/// The maps from values at the Lobatto points to Chebyshev coefficients,
+/// computed once per process (a tracker is moved out of its system and back
+/// at every step, so it holds no table of its own).
+static MATRICES: LazyLock<CoefficientMatrices> = LazyLock::new(CoefficientMatrices::default);
 
 /// Fraction of the step before its end where the probe looks [-]: small
 /// enough to see the slope at the end, large enough to stay above the
@@ -41,9 +47,6 @@ const SEPARATION_ITERATIONS: usize = 30;
 /// Evaluations of one step remembered so that the searches of several
 /// quantities share them (beyond, a search starts from the whole step).
 const STEP_POINTS: usize = 4 * SEARCH_EVALUATIONS;
-/// Degree of the first interpolant of a step searched for peaks: 7 interior
-/// points, enough for the channels of a step that resolves the motion.
-const FIRST_DEGREE: usize = 8;
 /// An interpolant has converged when its error estimate is at most this
 /// fraction of the channel's variation over the step [-] (its peak value is
 /// then as exact as Brent's search to `SEARCH_TOLERANCE` makes it: about
@@ -137,8 +140,6 @@ pub(crate) struct PeakGroup {
     /// Values at the Lobatto points of the highest degree of the current step,
     /// `width` per point, point 0 at the step end.
     nodes: Vec<f64>,
-    /// Cosines of the Chebyshev coefficients.
-    cosines: CosineTable,
     /// Evaluations inside steps (probes and searches) over the run.
     pub inner_evaluations: usize,
     /// Peaks searched by Brent's method because their interpolant of the
@@ -213,7 +214,6 @@ impl PeakGroup {
             improved: vec![false; n],
             points: StepPoints::new(n),
             nodes: vec![0.0; (MAX_DEGREE + 1) * n],
-            cosines: CosineTable::default(),
             inner_evaluations: 0,
             fallback_searches: 0,
             step_ends_only: false,
@@ -286,11 +286,10 @@ impl PeakGroup {
         let width = self.peaks.len();
         self.nodes[..width].copy_from_slice(&self.end);
         self.nodes[MAX_DEGREE * width..].copy_from_slice(&self.start);
-        let mut n = FIRST_DEGREE;
-        while n <= MAX_DEGREE {
-            // the new points of degree n: all interior ones first, the odd ones after
+        for n in DEGREES {
+            // the new points of degree n: all interior ones first (7), the odd ones after
             let stride = MAX_DEGREE / n;
-            let first_new = if n == FIRST_DEGREE { 1 } else { 2 };
+            let first_new = if n == DEGREES[0] { 1 } else { 2 };
             for j in (1..n).step_by(first_new) {
                 let t = 0.5 * (a + b) + 0.5 * (b - a) * chebyshev::lobatto_point(j, n);
                 self.inner_evaluations += 1;
@@ -311,7 +310,6 @@ impl PeakGroup {
             if !any_left {
                 break;
             }
-            n *= 2;
         }
         true
     }
@@ -326,14 +324,19 @@ impl PeakGroup {
         }
         let (low, high) = values[..=n].iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
         let magnitude = low.abs().max(high.abs());
+        let values = &values[..=n];
+        let tail = chebyshev::tail([MATRICES.coefficient(values, n, n - 1), MATRICES.coefficient(values, n, n)]);
         let mut c = [0.0; MAX_DEGREE + 1];
-        self.cosines.coefficients(&values[..=n], n, &mut c);
-        let tail = chebyshev::tail(&c, n);
         if tail > INTERPOLATION_TOLERANCE * (high - low) + INTERPOLATION_FLOOR * magnitude {
+            if n < MAX_DEGREE {
+                return false;
+            }
             // a channel of round-off alone (no coefficient stands above its tail) keeps its evaluated points
+            MATRICES.coefficients(values, n, &mut c);
             let signal = c[..=n].iter().fold(0.0f64, |m, ck| m.max(ck.abs()));
-            return n == MAX_DEGREE && tail >= ROUND_OFF_ONLY * signal;
+            return tail >= ROUND_OFF_ONLY * signal;
         }
+        MATRICES.coefficients(values, n, &mut c);
         // the best point and its neighbours bracket the interpolant's maximum
         let best = (0..=n).max_by(|&p, &q| kind.score(values[p]).total_cmp(&kind.score(values[q]))).unwrap_or(0);
         let (x_high, x_low) = (chebyshev::lobatto_point(best.saturating_sub(1), n), chebyshev::lobatto_point((best + 1).min(n), n));
