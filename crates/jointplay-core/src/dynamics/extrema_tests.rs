@@ -191,8 +191,7 @@ fn run_chain(n: usize, output_step: Option<f64>) -> crate::dynamics::SimulationO
     use crate::dynamics::{assemble, simulate, Formulation, SimulationOptions, Workspace};
     let model = hanging_chain(n);
     let mut state = assemble(&model, 0.0, &mut Workspace::new(&model)).unwrap();
-    let mut options = SimulationOptions::default();
-    options.formulation = Formulation::Absolute;
+    let mut options = SimulationOptions { formulation: Formulation::Absolute, ..Default::default() };
     options.integrator.output_step = output_step;
     simulate(&model, &mut state, 0.1, &options, None)
 }
