@@ -6,13 +6,27 @@
 //!
 //! A peak inside a step is found, not sampled: when a step end improves a
 //! channel's running peak, one probe just before the end tells whether the
-//! channel still rises there. If it falls, the peak lies inside the step and
-//! Brent's method searches it on the step's dense output; if it rises, the
-//! next step is searched unless its end improves again. Every evaluation
-//! serves all channels of its group (`docs/theory/summary-extrema.md`).
+//! channel still rises there. If it falls, the peak lies inside the step; if
+//! it rises, the next step is searched unless its end improves again. A step
+//! with peaks to search is evaluated once at the Chebyshev-Lobatto points of
+//! its dense output, shared by all channels, and each channel's peak is
+//! located on its interpolating polynomial; the degree doubles (reusing every
+//! point) while some channel's interpolant has not converged, up to
+//! [`chebyshev::MAX_DEGREE`], and only a channel whose interpolant still has
+//! not (a kink inside the step) is searched by Brent's method on its own
+//! (`docs/theory/summary-extrema.md`).
 
 use super::brent::maximize_from;
+#[path = "chebyshev.rs"]
+mod chebyshev;
 use crate::error::SimulationError;
+use chebyshev::{CoefficientMatrices, DEGREES, MAX_DEGREE};
+use std::sync::LazyLock;
+
+/// The maps from values at the Lobatto points to Chebyshev coefficients,
+/// computed once per process (a tracker is moved out of its system and back
+/// at every step, so it holds no table of its own).
+static MATRICES: LazyLock<CoefficientMatrices> = LazyLock::new(CoefficientMatrices::default);
 
 /// Fraction of the step before its end where the probe looks [-]: small
 /// enough to see the slope at the end, large enough to stay above the
@@ -33,6 +47,23 @@ const SEPARATION_ITERATIONS: usize = 30;
 /// Evaluations of one step remembered so that the searches of several
 /// quantities share them (beyond, a search starts from the whole step).
 const STEP_POINTS: usize = 4 * SEARCH_EVALUATIONS;
+/// An interpolant has converged when its error estimate is at most this
+/// fraction of the channel's variation over the step [-] (its peak value is
+/// then as exact as Brent's search to `SEARCH_TOLERANCE` makes it: about
+/// 1e-8 of the variation).
+const INTERPOLATION_TOLERANCE: f64 = 1e-9;
+/// ... or at most this fraction of the channel's largest |value| in the step
+/// [-]: the floor of what an evaluation resolves (the projection of a
+/// dense-output state onto the constraints, and round-off).
+const INTERPOLATION_FLOOR: f64 = 1e-8;
+/// A channel whose interpolant's tail is at least this fraction of its
+/// largest coefficient holds round-off alone [-] (an identically zero
+/// quantity); a kink or a jump leaves a tail of at most a few hundredths
+/// at the highest degree (coefficients falling as 1/k^2 or 1/k).
+const ROUND_OFF_ONLY: f64 = 0.1;
+/// Relative tolerance [-] of the maximum located on an interpolant (a
+/// polynomial costs no model evaluation).
+const POLYNOMIAL_TOLERANCE: f64 = 1e-12;
 
 /// The largest score seen for one quantity.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -106,8 +137,14 @@ pub(crate) struct PeakGroup {
     improved: Vec<bool>,
     /// Evaluations made in the current step.
     points: StepPoints,
+    /// Values at the Lobatto points of the highest degree of the current step,
+    /// `width` per point, point 0 at the step end.
+    nodes: Vec<f64>,
     /// Evaluations inside steps (probes and searches) over the run.
     pub inner_evaluations: usize,
+    /// Peaks searched by Brent's method because their interpolant of the
+    /// highest degree had not converged, over the run.
+    pub fallback_searches: usize,
     /// Whether the peaks come from the step ends alone, with no probe or search
     /// inside a step (a method whose states inside a step are an interpolant that
     /// stiff forces would amplify: generalized-alpha).
@@ -176,7 +213,9 @@ impl PeakGroup {
             search: vec![false; n],
             improved: vec![false; n],
             points: StepPoints::new(n),
+            nodes: vec![0.0; (MAX_DEGREE + 1) * n],
             inner_evaluations: 0,
+            fallback_searches: 0,
             step_ends_only: false,
         }
     }
@@ -184,10 +223,7 @@ impl PeakGroup {
     /// Offers every value of `values` at t as a peak candidate.
     fn offer(peaks: &mut [Peak], kind: Quantities, values: &[f64], t: f64) {
         for (peak, &value) in peaks.iter_mut().zip(values) {
-            let score = kind.score(value);
-            if score > peak.score {
-                *peak = Peak { score, value, time: t };
-            }
+            Self::offer_one(peak, kind, value, t);
         }
     }
 
@@ -230,13 +266,96 @@ impl PeakGroup {
         if any_search {
             self.points.push(t_old, &self.start);
             self.points.push(t_new, &self.end);
-            for i in 0..self.peaks.len() {
-                if self.search[i] {
-                    self.search_peak(probe, i, t_old, t_new);
+            if self.interpolate_peaks(probe, t_old, t_new) {
+                for i in 0..self.peaks.len() {
+                    if self.search[i] {
+                        self.fallback_searches += 1;
+                        self.search_peak(probe, i, t_old, t_new);
+                    }
                 }
             }
         }
         Ok(())
+    }
+
+    /// Locates the peaks of the quantities to search on their interpolants at
+    /// the Lobatto points of the step [a, b], doubling the degree while some
+    /// has not converged; clears the search of each one located. False when an
+    /// evaluation failed (the step ends and the points evaluated stand).
+    fn interpolate_peaks<P: StepProbe>(&mut self, probe: &mut P, a: f64, b: f64) -> bool {
+        let width = self.peaks.len();
+        self.nodes[..width].copy_from_slice(&self.end);
+        self.nodes[MAX_DEGREE * width..].copy_from_slice(&self.start);
+        for n in DEGREES {
+            // the new points of degree n: all interior ones first (7), the odd ones after
+            let stride = MAX_DEGREE / n;
+            let first_new = if n == DEGREES[0] { 1 } else { 2 };
+            for j in (1..n).step_by(first_new) {
+                let t = 0.5 * (a + b) + 0.5 * (b - a) * chebyshev::lobatto_point(j, n);
+                self.inner_evaluations += 1;
+                if self.kind.evaluate(probe, t, &mut self.scratch).is_err() {
+                    return false;
+                }
+                Self::offer(&mut self.peaks, self.kind, &self.scratch, t);
+                self.points.push(t, &self.scratch);
+                self.nodes[j * stride * width..(j * stride + 1) * width].copy_from_slice(&self.scratch);
+            }
+            let mut any_left = false;
+            for i in 0..width {
+                if self.search[i] {
+                    self.search[i] = !self.locate_on_interpolant(i, n, a, b);
+                    any_left |= self.search[i];
+                }
+            }
+            if !any_left {
+                break;
+            }
+        }
+        true
+    }
+
+    /// Offers the maximum of quantity i's interpolant of degree n on [a, b]
+    /// when it has converged; false when it has not.
+    fn locate_on_interpolant(&mut self, i: usize, n: usize, a: f64, b: f64) -> bool {
+        let (width, stride, kind) = (self.peaks.len(), MAX_DEGREE / n, self.kind);
+        let mut values = [0.0; MAX_DEGREE + 1];
+        for (j, v) in values[..=n].iter_mut().enumerate() {
+            *v = self.nodes[j * stride * width + i];
+        }
+        let (low, high) = values[..=n].iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &v| (l.min(v), h.max(v)));
+        let magnitude = low.abs().max(high.abs());
+        let values = &values[..=n];
+        let tail = chebyshev::tail([MATRICES.coefficient(values, n, n - 1), MATRICES.coefficient(values, n, n)]);
+        let mut c = [0.0; MAX_DEGREE + 1];
+        if tail > INTERPOLATION_TOLERANCE * (high - low) + INTERPOLATION_FLOOR * magnitude {
+            if n < MAX_DEGREE {
+                return false;
+            }
+            // a channel of round-off alone (no coefficient stands above its tail) keeps its evaluated points
+            MATRICES.coefficients(values, n, &mut c);
+            let signal = c[..=n].iter().fold(0.0f64, |m, ck| m.max(ck.abs()));
+            return tail >= ROUND_OFF_ONLY * signal;
+        }
+        MATRICES.coefficients(values, n, &mut c);
+        // the best point and its neighbours bracket the interpolant's maximum
+        let best = (0..=n).max_by(|&p, &q| kind.score(values[p]).total_cmp(&kind.score(values[q]))).unwrap_or(0);
+        let (x_high, x_low) = (chebyshev::lobatto_point(best.saturating_sub(1), n), chebyshev::lobatto_point((best + 1).min(n), n));
+        let polynomial = &c[..=n];
+        let mut score = |x: f64| Some(kind.score(chebyshev::evaluate(polynomial, x)));
+        let start = Some((chebyshev::lobatto_point(best, n), kind.score(values[best]))).filter(|&(x, _)| x > x_low && x < x_high);
+        if let Some((x, _)) = maximize_from(&mut score, x_low, x_high, start, POLYNOMIAL_TOLERANCE, 200) {
+            let t = 0.5 * (a + b) + 0.5 * (b - a) * x;
+            Self::offer_one(&mut self.peaks[i], kind, chebyshev::evaluate(polynomial, x), t);
+        }
+        true
+    }
+
+    /// Offers a value of one quantity at t as a peak candidate.
+    fn offer_one(peak: &mut Peak, kind: Quantities, value: f64, t: f64) {
+        let score = kind.score(value);
+        if score > peak.score {
+            *peak = Peak { score, value, time: t };
+        }
     }
 
     /// Probes the slope at the end of the step for the quantities the end

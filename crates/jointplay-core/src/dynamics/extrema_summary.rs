@@ -64,6 +64,10 @@ pub struct Extrema {
     /// before a step end that set a new peak, and the searches of peaks inside
     /// steps), on top of the integrator's; the cost of finding peaks between steps.
     pub inner_evaluations: usize,
+    /// Peaks searched by Brent's method on their own, because the interpolant
+    /// on the step's shared points had not converged (a kink inside the step);
+    /// their evaluations are part of `inner_evaluations`.
+    pub fallback_searches: usize,
     /// Start of the run [s].
     pub t_start: f64,
     /// End of the last accepted step [s].
@@ -130,6 +134,7 @@ impl ExtremaTracker {
         Extrema {
             steps: self.steps,
             inner_evaluations: self.channels.inner_evaluations,
+            fallback_searches: self.channels.fallback_searches,
             t_start: self.t_start,
             t_end: self.t_last,
             channels,
