@@ -30,6 +30,7 @@ class Results:
 
         {"steps": 1832,                      # accepted steps observed
          "inner_evaluations": 412,           # evaluations inside steps to find peaks there
+         "fallback_searches": 0,             # peaks searched one channel at a time (a kink inside a step)
          "t_start": 0.0, "t_end": 0.024,     # [s]
          "point_accelerations": {            # |acceleration| of every named point of a moving body
              "slider.B": {"peak": 3.27e5, "time": 0.00025, "unit": "m/s^2"}, ...},

@@ -153,7 +153,7 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
 /// The summary tracked at every accepted step as plain data (JSON-serialisable:
 /// a time or extremum that does not exist, such as the time of a penetration
 /// never reached or anything of a run without a step, is None):
-/// `{"steps", "inner_evaluations", "t_start", "t_end", "channels": {name: {"peak", "value", "time", "unit"}},
+/// `{"steps", "inner_evaluations", "fallback_searches", "t_start", "t_end", "channels": {name: {"peak", "value", "time", "unit"}},
 /// "point_accelerations": {"<body>.<point>": {"peak", "time", "unit"}},
 /// "clearance_joints": {name: {"impacts", "contact_time", "contact_fraction",
 /// "max_penetration", "max_penetration_time", "max_eccentricity_ratio", and for lubricated joints "min_film",
@@ -163,6 +163,7 @@ pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>
     let d = PyDict::new(py);
     d.set_item("steps", e.steps)?;
     d.set_item("inner_evaluations", e.inner_evaluations)?;
+    d.set_item("fallback_searches", e.fallback_searches)?;
     d.set_item("t_start", finite(e.t_start))?;
     d.set_item("t_end", finite(e.t_end))?;
     d.set_item("channels", peaks(py, &e.channels, true)?)?;
