@@ -65,6 +65,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import jointplay as jp  # noqa: E402
+from jointplay import mechanisms  # noqa: E402
 from jointplay.results import Results, open_results  # noqa: E402
 from timing import Case, Spread, interleave, ratio, verdict  # noqa: E402
 
@@ -84,14 +85,7 @@ def synthetic(n_channels: int, n_samples: int) -> Results:
 
 def chain(n_bodies: int):
     """A chain of bars 0.1 m long hanging from a pin, each pinned to the next."""
-    m = jp.Model("chain", gravity=(0.0, -9.81))
-    m.add_ground_point("O", (0.0, 0.0))
-    previous = "ground.O"
-    for k in range(n_bodies):
-        m.add_body(f"bar{k}", 0.1, 1e-4, position=(0.1 * k + 0.05, 0.0), points={"a": (-0.05, 0.0), "b": (0.05, 0.0)})
-        m.add_revolute(f"pin{k}", previous, f"bar{k}.a")
-        previous = f"bar{k}.b"
-    return m
+    return mechanisms.hanging_chain(n_bodies)
 
 
 def timed(f) -> float:

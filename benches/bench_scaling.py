@@ -50,7 +50,7 @@ sys.path[:0] = [str(ROOT / "examples"), str(ROOT / "benches")]
 
 import jointplay as jp  # noqa: E402
 from jointplay import functions as fn  # noqa: E402
-from jointplay import laws, sections  # noqa: E402
+from jointplay import laws, mechanisms, sections  # noqa: E402
 import bench_spin_up_beam as spin_up  # noqa: E402
 import timing  # noqa: E402
 
@@ -74,22 +74,15 @@ EXUDYN_NEWTON_RTOL, EXUDYN_NEWTON_ATOL = 1e-5, 1e-4
 STEEL = sections.material("207 GPa", "7850 kg/m^3", poisson_ratio=0.3)
 
 
+#: The clearance joint of every pin of a clearance chain.
+CLEARANCE_PIN = dict(bearing_radius="5 mm", clearance="0.1 mm", contact=laws.lankarani_nikravesh(0.9),
+                     friction=laws.frictionless())
+
+
 def chain(n: int, clearance: bool = False) -> jp.Model:
     """N bars pinned end to end from a ground pin, horizontal; every pin a clearance joint if asked."""
-    m = jp.Model(f"chain{n}", gravity=(0.0, -9.81))
-    m.add_ground_point("O", (0.0, 0.0))
-    previous = "ground.O"
-    half = BAR_LENGTH / 2
-    for k in range(n):
-        m.add_body(f"bar{k}", BAR_MASS, BAR_INERTIA, position=(BAR_LENGTH * k + half, 0.0),
-                   points={"a": (-half, 0.0), "b": (half, 0.0)})
-        if clearance:
-            m.add_clearance_revolute(f"pin{k}", previous, f"bar{k}.a", bearing_radius="5 mm", clearance="0.1 mm",
-                                     contact=laws.lankarani_nikravesh(0.9), friction=laws.frictionless())
-        else:
-            m.add_revolute(f"pin{k}", previous, f"bar{k}.a")
-        previous = f"bar{k}.b"
-    return m
+    return mechanisms.hanging_chain(n, bar_length=BAR_LENGTH, bar_mass=BAR_MASS, bar_inertia=BAR_INERTIA,
+                                    clearance=CLEARANCE_PIN if clearance else None, name=f"chain{n}")
 
 
 def modal_pendulum(modes: int) -> jp.Model:

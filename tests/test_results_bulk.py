@@ -17,7 +17,7 @@ import scipy.io
 import xarray as xr
 
 import jointplay as jp
-from jointplay import resultsfile
+from jointplay import mechanisms, resultsfile
 from jointplay.results import Results, open_results
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
@@ -34,14 +34,7 @@ def dry_model():
 
 def chain(n_bodies: int) -> jp.Model:
     """Bars 0.1 m long hanging from a pin, each pinned to the next."""
-    m = jp.Model("chain", gravity=(0.0, -9.81))
-    m.add_ground_point("O", (0.0, 0.0))
-    previous = "ground.O"
-    for k in range(n_bodies):
-        m.add_body(f"bar{k}", 0.1, 1e-4, position=(0.1 * k + 0.05, 0.0), points={"a": (-0.05, 0.0), "b": (0.05, 0.0)})
-        m.add_revolute(f"pin{k}", previous, f"bar{k}.a")
-        previous = f"bar{k}.b"
-    return m
+    return mechanisms.hanging_chain(n_bodies)
 
 
 def plain(value):

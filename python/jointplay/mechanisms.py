@@ -41,3 +41,30 @@ def slider_crank(*, crank_length: float, rod_length: float, masses: tuple[float,
         m.add_clearance_revolute("B", "slider.B", "rod.B", **clearance)
     m.add_driver("motor", "O", constant_speed(crank_speed))
     return m
+
+
+def hanging_chain(n_bars: int, *, bar_length: float = 0.1, bar_mass: float = 0.1, bar_inertia: float = 1e-4,
+                  clearance: dict | None = None, gravity: float = 9.81, name: str = "chain") -> Model:
+    """``n_bars`` bars [m, kg, kg m^2 about the centre] pinned end to end from a ground pin ``O``,
+    released horizontal along +x under gravity [m/s^2]: the chain whose size is the model's size.
+
+    Bars ``bar0``... with points ``a`` (start) and ``b`` (end); pins ``pin0`` (ground to ``bar0.a``),
+    ``pink`` (``bar{k-1}.b`` to ``bark.a``). With ``clearance`` (the keyword arguments of
+    :meth:`Model.add_clearance_revolute` except name and points), every pin is a clearance joint with the
+    bearing on the earlier link; otherwise every pin is ideal.
+    """
+    if n_bars < 1:
+        raise ValueError(f"a chain needs at least one bar, got {n_bars}")
+    m = Model(name, gravity=(0.0, -gravity))
+    m.add_ground_point("O", (0.0, 0.0))
+    half = bar_length / 2
+    previous = "ground.O"
+    for k in range(n_bars):
+        m.add_body(f"bar{k}", bar_mass, bar_inertia, position=(bar_length * k + half, 0.0),
+                   points={"a": (-half, 0.0), "b": (half, 0.0)})
+        if clearance is None:
+            m.add_revolute(f"pin{k}", previous, f"bar{k}.a")
+        else:
+            m.add_clearance_revolute(f"pin{k}", previous, f"bar{k}.a", **clearance)
+        previous = f"bar{k}.b"
+    return m

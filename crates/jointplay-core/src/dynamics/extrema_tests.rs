@@ -163,27 +163,10 @@ fn inner_evaluations_count_the_probe_and_the_search() {
     assert_eq!(tracker.channels.inner_evaluations, probe.evaluations - at_steps);
 }
 
-/// A chain of `n` bars (0.1 kg, 0.1 m) pinned end to end from a ground pin,
-/// released horizontal, in absolute coordinates: 6 tracked channels per bar
-/// and 2 per pin, plus the points' accelerations.
+/// A chain of `n` bars pinned end to end from a ground pin, in absolute coordinates: 6
+/// tracked channels per bar and 2 per pin, plus the points' accelerations.
 fn hanging_chain(n: usize) -> crate::dynamics::Model {
-    let bodies: Vec<serde_json::Value> = (0..n)
-        .map(|k| {
-            serde_json::json!({"name": format!("bar{k}"), "mass": 0.1, "inertia": 1e-4, "position": [0.1 * k as f64 + 0.05, 0.0],
-                "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
-                "points": [{"name": "a", "position": [-0.05, 0]}, {"name": "b", "position": [0.05, 0]}]})
-        })
-        .collect();
-    let joints: Vec<serde_json::Value> = (0..n)
-        .map(|k| {
-            let first = if k == 0 { "ground.O".to_string() } else { format!("bar{}.b", k - 1) };
-            serde_json::json!({"type": "revolute", "name": format!("pin{k}"), "first": first, "second": format!("bar{k}.a")})
-        })
-        .collect();
-    crate::dynamics::beam_tests::model(serde_json::json!({
-        "name": "chain", "gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
-        "bodies": bodies, "joints": joints, "beams": [], "drivers": [], "forces": [], "sensors": []
-    }))
+    crate::dynamics::beam_tests::model(crate::dynamics::tests::bar_chain_spec(n, 0))
 }
 
 /// Runs a chain for 0.1 s in absolute coordinates, sampled every `output_step` when given.

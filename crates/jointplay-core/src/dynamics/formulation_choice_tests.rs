@@ -3,42 +3,13 @@
 
 use super::*;
 use crate::dynamics::beam_tests::{free_beam, model};
-use crate::dynamics::tests::clearance_joint_b_json;
+use crate::dynamics::tests::bar_chain_spec as chain_spec;
 use crate::dynamics::{assemble, simulate, SimulationOptions, Workspace};
 
 /// A chain of `n` bars 0.1 m long hanging from a ground pin, each pinned to the
 /// next; the first `clearance` pins are clearance joints instead.
 fn chain(n: usize, clearance: usize) -> Model {
     model(chain_spec(n, clearance))
-}
-
-/// The spec of [`chain`].
-fn chain_spec(n: usize, clearance: usize) -> serde_json::Value {
-    let bodies: Vec<serde_json::Value> = (0..n)
-        .map(|k| {
-            serde_json::json!({"name": format!("bar{k}"), "mass": 0.1, "inertia": 1e-4, "position": [0.1 * k as f64 + 0.05, 0.0],
-                "angle": 0, "velocity": [0, 0], "angular_velocity": 0,
-                "points": [{"name": "a", "position": [-0.05, 0]}, {"name": "b", "position": [0.05, 0]}]})
-        })
-        .collect();
-    let joints: Vec<serde_json::Value> = (0..n)
-        .map(|k| {
-            let (first, second) = (if k == 0 { "ground.O".to_string() } else { format!("bar{}.b", k - 1) }, format!("bar{k}.a"));
-            if k < clearance {
-                let mut joint = clearance_joint_b_json(serde_json::json!({"law": "none"}), false);
-                joint["name"] = serde_json::json!(format!("pin{k}"));
-                joint["bearing"] = serde_json::json!(first);
-                joint["journal"] = serde_json::json!(second);
-                joint
-            } else {
-                serde_json::json!({"type": "revolute", "name": format!("pin{k}"), "first": first, "second": second})
-            }
-        })
-        .collect();
-    serde_json::json!({
-        "name": "chain", "gravity": [0, -9.81], "ground_points": [{"name": "O", "position": [0, 0]}],
-        "bodies": bodies, "joints": joints, "beams": [], "drivers": [], "forces": [], "sensors": []
-    })
 }
 
 fn auto(m: &Model) -> FormulationChoice {
