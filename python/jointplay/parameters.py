@@ -850,8 +850,9 @@ SIMULATION = Table("simulation", "Default options of `jointplay run` and of `Mod
           "midpoint rule; 0: removed in one step)", 0.9, ge=0, le=1, interval="0 to 1"),
     Param("jacobian", "choice", "Newton Jacobian of the implicit methods (`bdf`, `generalized_alpha`): `finite_difference` (one "
           "right-hand side per state), `structured` (coloured differences of each element's forces through the "
-          "constrained accelerations; absolute coordinates only, docs/theory/integrator-jacobian.md), `auto` "
-          "(structured with a beam)", "auto", of=JACOBIANS),
+          "constrained accelerations; absolute coordinates only; without modal bodies its Newton matrix is factored "
+          "as a sparse augmented system, in cost linear in beam elements, docs/theory/integrator-jacobian.md), "
+          "`auto` (structured with a beam)", "auto", of=JACOBIANS),
     Param("stabilization", "choice", "constraint drift control (absolute formulation); with flexible links, "
           "`baumgarte` (projection after a step strains a beam and breaks the implicit method's history)",
           "projection", of=STABILIZATIONS),
