@@ -122,6 +122,11 @@ impl SparseCholesky {
     }
 
     /// Where the lower entry `(i, j)`, `i >= j`, of the factor's pattern is stored.
+    ///
+    /// # Panics
+    /// When `(i, j)` is outside the pattern given to [`Self::analyse`]: the caller's own
+    /// declaration of where its matrix has entries (made when a model is compiled, from
+    /// the model's structure), never a value of the model.
     pub fn storage_index(&self, i: usize, j: usize) -> usize {
         let row = &self.row_entries[self.row_start[i]..self.row_start[i + 1]];
         match row.binary_search_by_key(&j, |&(c, _)| c) {
