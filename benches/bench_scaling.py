@@ -171,48 +171,10 @@ def jointplay_case(model: jp.Model, t_end: float, **options) -> Callable[[], jp.
 
 
 def exudyn_case(elements: int, t_end: float) -> Callable[[], tuple]:
-    """A function building and running Exudyn's spin-up beam once (as ``bench_spin_up_beam.exudyn_runner``,
-    with its sparse solver and a reachable absolute Newton tolerance); returns (time, along, across, stats)."""
-    exudyn, exi = spin_up.exudyn, spin_up.exi
-
-    def run():
-        sc = exudyn.SystemContainer()
-        mbs = sc.AddSystem()
-        ground = mbs.AddMarker(exi.MarkerNodeCoordinate(nodeNumber=mbs.AddNode(exi.NodePointGround()), coordinate=0))
-        le = spin_up.LENGTH / elements
-        nodes = [mbs.AddNode(exi.NodeRigidBody2D(referenceCoordinates=[i * le, 0, 0])) for i in range(elements + 1)]
-        for a, b in zip(nodes, nodes[1:]):
-            mbs.AddObject(exi.ObjectBeamGeometricallyExact2D(
-                nodeNumbers=[a, b], length=le, massPerLength=spin_up.RHO_A, crossSectionInertia=spin_up.RHO_I,
-                bendingStiffness=spin_up.BENDING, axialStiffness=spin_up.AXIAL, shearStiffness=spin_up.SHEAR))
-        root = [mbs.AddMarker(exi.MarkerNodeCoordinate(nodeNumber=nodes[0], coordinate=c)) for c in range(3)]
-        mbs.AddObject(exi.CoordinateConstraint(markerNumbers=[ground, root[0]]))
-        mbs.AddObject(exi.CoordinateConstraint(markerNumbers=[ground, root[1]]))
-        mbs.AddObject(exi.CoordinateConstraint(markerNumbers=[ground, root[2]],
-                                               offsetUserFunction=lambda mbs, t, item, offset: spin_up.hub_angle(t)))
-        kind = exudyn.OutputVariableType
-        tip = mbs.AddSensor(exi.SensorNode(nodeNumber=nodes[-1], outputVariableType=kind.Position,
-                                           storeInternal=True, writeToFile=False))
-        turn = mbs.AddSensor(exi.SensorNode(nodeNumber=nodes[0], outputVariableType=kind.Rotation,
-                                            storeInternal=True, writeToFile=False))
-        mbs.Assemble()
-        settings = exudyn.SimulationSettings()
-        ti = settings.timeIntegration
-        ti.endTime, ti.numberOfSteps = t_end, round(t_end / BEAM_STEP)
-        ti.generalizedAlpha.spectralRadius = 0.9
-        ti.newton.relativeTolerance = EXUDYN_NEWTON_RTOL
-        ti.newton.absoluteTolerance = EXUDYN_NEWTON_ATOL
-        ti.verboseMode = 0
-        settings.linearSolverType = exudyn.LinearSolverType.EigenSparse
-        settings.solution.file.write = False
-        settings.solution.sensors.writePeriod = spin_up.SAMPLE
-        mbs.SolveDynamic(settings, storeSolver=True)
-        it = mbs.sys["dynamicSolver"].it
-        p, r = mbs.GetSensorStoredData(tip), mbs.GetSensorStoredData(turn)
-        x, y, a = p[:, 1], p[:, 2], r[:, -1]
-        stats = {"steps": int(it.currentStepIndex), "newton_iterations": int(it.newtonStepsCount)}
-        return p[:, 0], x * np.cos(a) + y * np.sin(a), -x * np.sin(a) + y * np.cos(a), stats
-    return run
+    """A function building and running Exudyn's spin-up beam once (``bench_spin_up_beam.exudyn_runner``,
+    its sparse solver, at this benchmark's step and a reachable absolute Newton tolerance); returns
+    (time, along, across, stats)."""
+    return spin_up.exudyn_runner(elements, t_end, round(t_end / BEAM_STEP), EXUDYN_NEWTON_RTOL, EXUDYN_NEWTON_ATOL)
 
 
 def beam_tip(results) -> tuple:

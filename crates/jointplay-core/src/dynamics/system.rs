@@ -189,6 +189,18 @@ impl MechanismSystem<'_> {
 
     /// Records the sample at `(t, y)` from the evaluation the workspace holds there
     /// (in joint coordinates, with the body-space state of that evaluation).
+    /// The constraint linearisation and factor at (t, y) that a Jacobian is formed at: the
+    /// integrator's evaluation there, normally, else one made now; the evaluations made (0 or 1).
+    fn evaluation_at(&mut self, t: f64, y: &[f64]) -> Result<usize, SimulationError> {
+        if self.step_end.holds_evaluation(t, y) {
+            return Ok(0);
+        }
+        self.step_end.evaluated_at = None;
+        self.evaluate(t, y)?;
+        self.step_end.remember_evaluation(t, y, false);
+        Ok(1)
+    }
+
     fn push_sample(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let Some(tree) = self.tree else {
             return self.trajectory.push(self.model, t, y, self.ws);
@@ -315,13 +327,7 @@ impl OdeSystem for MechanismSystem<'_> {
             return Ok(None);
         }
         let mut cost = JacobianCost::default();
-        // the constraint linearisation and factor at (t, y): the integrator's evaluation there, normally
-        if !self.step_end.holds_evaluation(t, y) {
-            self.step_end.evaluated_at = None;
-            self.evaluate(t, y)?;
-            self.step_end.remember_evaluation(t, y, false);
-            cost.rhs_evaluations += 1;
-        }
+        cost.rhs_evaluations += self.evaluation_at(t, y)?;
         let mut structured = self.ws.structured_jacobian.take().unwrap_or_else(|| Box::new(StructuredJacobian::new(self.model)));
         let filled = structured.fill(self.model, self.memory, t, y, floors, self.ws, jacobian).and_then(|passes| {
             cost.force_evaluations = passes;
@@ -341,13 +347,7 @@ impl OdeSystem for MechanismSystem<'_> {
 
     fn jacobian_parts(&mut self, t: f64, y: &[f64], floors: &[f64], parts: &mut NewtonParts) -> Result<Option<JacobianCost>, SimulationError> {
         let mut cost = JacobianCost::default();
-        // the constraint linearisation and factor at (t, y): the integrator's evaluation there, normally
-        if !self.step_end.holds_evaluation(t, y) {
-            self.step_end.evaluated_at = None;
-            self.evaluate(t, y)?;
-            self.step_end.remember_evaluation(t, y, false);
-            cost.rhs_evaluations += 1;
-        }
+        cost.rhs_evaluations += self.evaluation_at(t, y)?;
         if !newton_parts::fill_constraint(self.model, self.ws, &mut parts.constraint) {
             return Ok(None);
         }
