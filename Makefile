@@ -20,9 +20,10 @@ $(VENV)/bin/maturin:
 	$(PY) -m pip install --quiet --upgrade pip "maturin>=1.5,<2"
 
 # the `bench` extra (numba) is installed too, so that the test suite checks the
-# benchmarks' practical-limit model (tests/physics/test_limit_slider_crank.py)
+# benchmarks' practical-limit model (tests/physics/test_limit_slider_crank.py), and
+# the `optuna` extra, so that it checks the search of a study's optimum with Optuna
 setup: $(VENV)/bin/maturin
-	$(IN_VENV) $(VENV)/bin/maturin develop --release --extras test,bench --quiet
+	$(IN_VENV) $(VENV)/bin/maturin develop --release --extras test,bench,optuna --quiet
 
 demo: setup
 	$(PY) examples/flores_slider_crank_dry.py --out $(OUT)

@@ -19,7 +19,8 @@ from .results import Results
 # Reading model files needs the unit registry and the schemas (pint, pydantic),
 # and results files need xarray: those load on first use, so that
 # `import jointplay` and `jointplay --help` stay fast.
-_LAZY = {"load": "modelfile", "loads": "modelfile", "open_results": "results"}
+_LAZY = {"load": "modelfile", "loads": "modelfile", "open_results": "results", "Study": "study",
+         "load_study": "study", "open_study": "study"}
 
 
 def __getattr__(name: str):
@@ -37,5 +38,6 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "ConvergenceError", "JointplayError", "JointplayWarning", "Model", "ModelError", "Problem", "Results",
-    "SimulationError", "__version__", "functions", "laws", "load", "loads", "open_results", "sections",
+    "SimulationError", "Study", "__version__", "functions", "laws", "load", "load_study", "loads", "open_results",
+    "open_study", "sections",
 ]
