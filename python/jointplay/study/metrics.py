@@ -40,6 +40,8 @@ FILTER_ORDER = 4
 DEFAULT_CYCLES_PER_WINDOW = 10.0
 #: Samples per period of the cutoff the oscillation is computed with (its grid step is 1 / (this x cutoff)).
 SAMPLES_PER_CUTOFF_PERIOD = 20
+#: Length of the odd extension at each end of the window before filtering [periods of the cutoff].
+PAD_CUTOFF_PERIODS = 3.0
 _KEYS = {"name", "kind", "channel", "joint", "window", "cutoff", "statistic", "description"}
 
 
@@ -115,7 +117,7 @@ class Response:
         if self.kind == "oscillation":
             return oscillation(time, x, self.cutoff or DEFAULT_CYCLES_PER_WINDOW / (time[-1] - time[0]),
                                self.statistic)
-        return float(_REDUCTIONS[self.kind](x))
+        return float(_REDUCTIONS[self.kind](time, x))
 
     def _joint_value(self, results) -> float:
         joints = results.summary()["clearance_joints"]
@@ -145,27 +147,33 @@ class Response:
         return time[inside], x[inside]
 
 
-_REDUCTIONS: dict[str, Callable[[np.ndarray], float]] = {
-    "peak": lambda x: np.max(np.abs(x)),
-    "max": np.max,
-    "min": np.min,
-    "mean": np.mean,  # of the samples; the study's samples are evenly spaced in time
-    "rms": lambda x: np.sqrt(np.mean(np.square(x))),
-    "peak_to_peak": np.ptp,
-    "final": lambda x: x[-1],
+def _time_mean(t: np.ndarray, x: np.ndarray) -> float:
+    """Mean over time of the piecewise-linear curve through the samples (trapezoids), whatever their spacing."""
+    return float(np.trapezoid(x, t) / (t[-1] - t[0]))
+
+
+_REDUCTIONS: dict[str, Callable[[np.ndarray, np.ndarray], float]] = {
+    "peak": lambda t, x: np.max(np.abs(x)),
+    "max": lambda t, x: np.max(x),
+    "min": lambda t, x: np.min(x),
+    "mean": _time_mean,
+    "rms": lambda t, x: math.sqrt(_time_mean(t, np.square(x))),
+    "peak_to_peak": lambda t, x: np.ptp(x),
+    "final": lambda t, x: x[-1],
 }
 
 
 def oscillation(time: np.ndarray, x: np.ndarray, cutoff: float, statistic: str = "rms") -> float:
-    """The ``statistic`` of ``x`` about its trend: x resampled linearly on a uniform grid of step
-    1 / (SAMPLES_PER_CUTOFF_PERIOD cutoff) over [time[0], time[-1]], the trend its zero-phase Butterworth
-    low-pass at ``cutoff`` [Hz] (``scipy.signal.sosfiltfilt``, odd extension at the ends), the oscillation
-    the difference."""
+    """The ``statistic`` of ``x`` about its trend: x resampled linearly on a uniform grid over
+    [time[0], time[-1]] as fine as its samples (their mean spacing) and never coarser than
+    1 / (SAMPLES_PER_CUTOFF_PERIOD cutoff); the trend its zero-phase Butterworth low-pass at ``cutoff``
+    [Hz] (``scipy.signal.sosfiltfilt``, odd extension of PAD_CUTOFF_PERIODS periods at each end, or the
+    whole window if shorter); the oscillation the difference."""
     from scipy.signal import butter, sosfiltfilt
 
     span = float(time[-1] - time[0])
-    h = 1.0 / (SAMPLES_PER_CUTOFF_PERIOD * cutoff)
-    n = max(int(math.floor(span / h)) + 1, 2)
+    h = min(1.0 / (SAMPLES_PER_CUTOFF_PERIOD * cutoff), span / max(len(time) - 1, 1))
+    n = max(int(math.ceil(span / h)) + 1, 2)
     grid = time[0] + np.arange(n) * (span / (n - 1))
     sos = butter(FILTER_ORDER, cutoff, fs=(n - 1) / span, output="sos")
     minimum = 3 * (2 * len(sos) + 1)
@@ -174,7 +182,10 @@ def oscillation(time: np.ndarray, x: np.ndarray, cutoff: float, statistic: str =
                                                  f"the trend filter needs more than {minimum}: raise the cutoff or "
                                                  "lengthen the window")])
     y = np.interp(grid, time, x)
-    wiggle = y - sosfiltfilt(sos, y)
+    # the ends extended by PAD_CUTOFF_PERIODS periods of the cutoff (odd extension): the same span of time
+    # whatever the grid, so that the ends' treatment does not depend on the samples
+    pad = min(n - 1, int(round(PAD_CUTOFF_PERIODS * (n - 1) / (span * cutoff))))
+    wiggle = y - sosfiltfilt(sos, y, padtype="odd", padlen=pad)
     if statistic == "rms":
         return float(np.sqrt(np.mean(np.square(wiggle))))
     if statistic == "peak":
