@@ -73,56 +73,90 @@ def build_model(case: Case) -> jp.Model:
     return model
 
 
-def run_case(case: Case, revolutions: float = 2.0) -> jp.Results:
-    """Simulates one case for ``revolutions`` crank turns, 720 samples per turn."""
-    t_end = revolutions * 60.0 / case.speed_rpm
-    return build_model(case).simulate(t_end, rtol=1e-7, atol=1e-10, max_step=1e-4,
-                                      output_step=t_end / (720 * revolutions))
+def cases() -> list[Case]:
+    """Every distinct case of the three series, in series order (a case shared by series runs once)."""
+    return list(dict.fromkeys(case for series in SERIES.values() for case in series))
 
 
-def run_study(revolutions: float = 2.0) -> dict[str, list[tuple[Case, jp.Results]]]:
-    """Every series; a case shared by several series is simulated once."""
-    done: dict[Case, jp.Results] = {}
-    study = {}
-    for name, cases in SERIES.items():
-        study[name] = []
-        for case in cases:
-            if case not in done:
-                done[case] = run_case(case, revolutions)
-            study[name].append((case, done[case]))
-    return study
+def end_time(case: Case, revolutions: float) -> float:
+    """``revolutions`` crank turns at the case's speed [s]."""
+    return revolutions * 60.0 / case.speed_rpm
 
 
-def minimum_film_table(study) -> list[dict]:
+def crank_angle_at_film_min(results) -> float:
+    """Crank angle [deg, 0-360] at the thinnest sampled film (a user response of the study)."""
+    k = int(np.argmin(results["B.film_min"]))
+    return float(np.degrees(results["crank.angle"][k]) % 360.0)
+
+
+def build_study(revolutions: float = 2.0):
+    """The three series as one study: a table of the distinct cases over clearance, crank speed, viscosity,
+    end time (``revolutions`` turns at the case's speed) and output step (720 samples per turn)."""
+    from jointplay.study import Study
+    from jointplay.study.metrics import Response
+
+    ends = [end_time(c, revolutions) for c in cases()]
+    steps = [60.0 / c.speed_rpm / 720 for c in cases()]
+    factors = [{"name": "clearance", "path": "joints.B.clearance", "range": ["0.1 mm", "1 mm"]},
+               {"name": "speed", "path": "drivers.motor.function.rate", "range": ["300 rpm", "1000 rpm"]},
+               {"name": "viscosity", "path": "joints.B.lubrication.viscosity", "range": ["180 cP", "400 cP"]},
+               {"name": "t_end", "path": "simulation.t_end", "range": [f"{min(ends)!r} s", f"{max(ends)!r} s"]},
+               {"name": "output_step", "path": "simulation.output_step",
+                "range": [f"{min(steps)!r} s", f"{max(steps)!r} s"]}]
+    rows = [[f"{c.clearance!r} m", f"{c.speed_rpm!r} rpm", f"{c.viscosity_cp!r} cP", f"{end!r} s", f"{step!r} s"]
+            for c, end, step in zip(cases(), ends, steps, strict=True)]
+    responses = [{"name": "film_min", "kind": "min_film", "joint": "B"},
+                 {"name": "peak_force", "kind": "peak", "channel": "B.f"},
+                 {"name": "contact_fraction", "kind": "contact_fraction", "joint": "B"},
+                 Response.from_callable("crank_angle_at_film_min", crank_angle_at_film_min, units="deg")]
+    return Study(build_model(SERIES["clearance"][0]), factors, {"kind": "table", "rows": rows}, responses,
+                 t_end=max(ends), options={"rtol": 1e-7, "atol": 1e-10, "max_step": "0.1 ms"},
+                 channels=["crank.angle", "slider.ax", "B.f", "B.film_min"],
+                 channel_step=min(steps), name="paper001_parametric_study")
+
+
+def run_study(revolutions: float = 2.0, workers: int = 1, folder: Path | None = None):
+    """The study's Dataset (one case per distinct case of the series; ``folder`` keeps it resumable)."""
+    return build_study(revolutions).run(folder, workers=workers, resume=folder is not None)
+
+
+def series_cases(dataset) -> dict[str, list[tuple[Case, int]]]:
+    """Each series' cases with their index in the study's Dataset."""
+    index = {case: k for k, case in enumerate(cases())}
+    assert dataset.sizes["case"] == len(index)
+    return {name: [(case, index[case]) for case in series] for name, series in SERIES.items()}
+
+
+def minimum_film_table(dataset) -> list[dict]:
     """One row per case and series: minimum film thickness [m] and where (crank angle [deg])."""
     rows = []
-    for series, runs in study.items():
-        for case, results in runs:
-            film = results["B.film_min"]
-            k = int(np.argmin(film))
+    for series, members in series_cases(dataset).items():
+        for case, k in members:
+            film = float(dataset["film_min"].values[k])
             rows.append({"series": series, "clearance_mm": case.clearance * 1e3, "speed_rpm": case.speed_rpm,
-                         "viscosity_cP": case.viscosity_cp, "film_min_um": film[k] * 1e6,
-                         "film_min_over_clearance": film[k] / case.clearance,
-                         "crank_angle_deg": np.degrees(results["crank.angle"][k]) % 360.0,
-                         "peak_force_N": float(np.max(results["B.f"])),
-                         "contact_fraction": results.summary()["clearance_joints"]["B"]["contact_fraction"]})
+                         "viscosity_cP": case.viscosity_cp, "film_min_um": film * 1e6,
+                         "film_min_over_clearance": film / case.clearance,
+                         "crank_angle_deg": float(dataset["crank_angle_at_film_min"].values[k]),
+                         "peak_force_N": float(dataset["peak_force"].values[k]),
+                         "contact_fraction": float(dataset["contact_fraction"].values[k])})
     return rows
 
 
-def write_figures(study, out: Path) -> list[Path]:
+def write_figures(dataset, out: Path) -> list[Path]:
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     paths = []
-    for series, runs in study.items():
+    for series, members in series_cases(dataset).items():
         fig, axes = plt.subplots(3, 1, figsize=(8, 10), sharex=True)
-        for case, results in runs:
-            angle = np.degrees(results["crank.angle"])
-            axes[0].plot(angle, results["slider.ax"], lw=0.8, label=case.label)
-            axes[1].plot(angle, results["B.f"], lw=0.8)
-            axes[2].plot(angle, results["B.film_min"] * 1e6, lw=0.8)
+        for case, k in members:
+            run = dataset.isel(case=k)
+            angle = np.degrees(run["crank.angle"].values)
+            axes[0].plot(angle, run["slider.ax"].values, lw=0.8, label=case.label)
+            axes[1].plot(angle, run["B.f"].values, lw=0.8)
+            axes[2].plot(angle, run["B.film_min"].values * 1e6, lw=0.8)
         axes[0].set_ylabel("slider acceleration [m/s^2]")
         axes[1].set_ylabel("joint reaction force [N]")
         axes[2].set_ylabel("minimum film thickness [um]")
@@ -162,14 +196,17 @@ def main(argv: list[str] | None = None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=Path("out/paper001_study"))
     parser.add_argument("--revolutions", type=float, default=2.0)
+    parser.add_argument("--workers", type=int, default=1, help="local worker processes running the cases")
     args = parser.parse_args(argv)
-    study = run_study(args.revolutions)
-    rows = minimum_film_table(study)
-    print(markdown_table(rows))
     args.out.mkdir(parents=True, exist_ok=True)
-    for path in write_figures(study, args.out) + write_table(rows, args.out):
+    dataset = run_study(args.revolutions, args.workers)
+    rows = minimum_film_table(dataset)
+    print(markdown_table(rows))
+    from jointplay.study.dataset import save
+
+    for path in write_figures(dataset, args.out) + write_table(rows, args.out) + [save(dataset, args.out / "paper001_study.nc")]:
         print(f"wrote {path}")
-    return study, rows
+    return dataset, rows
 
 
 if __name__ == "__main__":

@@ -188,13 +188,17 @@ def contour(surface, f1: str, f2: str, fixed: dict[str, float] | None = None, *,
     ax.contour(x, y, z, levels=15, colors="k", linewidths=0.4)
     response = f"{surface.response} [{surface.units}]" if surface.units else (surface.response or "response")
     fig.colorbar(filled, ax=ax, label=response)
-    if dataset is not None:
-        ax.plot(dataset[f1].values, dataset[f2].values, "k.", label="cases", clip_on=False)
+    if dataset is not None:  # the cases where the axes put them (real units, or coded for a factor without ends)
+        coded = np.asarray(dataset["coded"].values, dtype=float)
+        ax.plot(*(_real(coded[:, names.index(f)], f, ends) for f in (f1, f2)), "k.", label="cases", clip_on=False)
     ax.set_xlabel(_axis_label(f1, ends, units))
     ax.set_ylabel(_axis_label(f2, ends, units))
+    from matplotlib.ticker import MaxNLocator
+
+    ax.xaxis.set_major_locator(MaxNLocator(5))
     title = f"{response}: quadratic surface over {f1} and {f2}"
     held_text = f"\nheld: {', '.join(held)}" if held else ""
-    fig.suptitle(f"{title} ({surface.verdict}, Q^2 = {surface.q2:.3g}){held_text}")
+    fig.suptitle(f"{title}\n({surface.verdict}, Q^2 = {surface.q2:.3g}){held_text}", fontsize=10)
     return fig
 
 

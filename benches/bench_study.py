@@ -1,0 +1,202 @@
+"""Benchmark: a study of paper 003's breaker mechanism run serially, on 2 local processes and on a Dask
+LocalCluster of 2 workers; the fixed cost of one case; a worker's memory over many cases.
+
+1. **Speed-up.** The 64-case study (``examples/paper003_breaker_study.toml`` with a 4 x 4 x 2 x 2 full
+   factorial over the clearances of E, F, G, H; ``--cases`` changes the count) run three ways in
+   interleaved rounds: serially in this process, on 2 local worker processes (a pool started by the
+   study, as ``jointplay sweep --workers 2`` does), and on a Dask ``LocalCluster`` of 2 single-threaded
+   worker processes started once before the rounds (a cluster outlives one study). Wall time, and
+   CPU time of this process and all its child processes (psutil). Speed-up = serial / parallel, per
+   round; medians with [min-max]. The machine has 2 cores, so 2 workers is its whole width.
+2. **Fixed cost of one case**: the model built from the study's document with one case's overrides
+   (validation, compilation, assembly) plus the run's start up to its first accepted step, against a
+   whole run of the case; medians of interleaved repetitions.
+3. **Worker memory**: ``--memory-cases`` (default 1000) short cases (the breaker to 0.5 ms) on 2 local
+   processes; each case reports its worker's resident memory (a user response), and the table gives
+   the resident memory after the first 50 cases and after the last, per worker.
+
+Run: python benches/bench_study.py [--rounds N] [--cases 64] [--memory-cases 1000] [--quick] [--markdown]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent / "examples"))
+
+import timing  # noqa: E402
+
+import jointplay as jp  # noqa: E402
+from jointplay.study import Study, load_study  # noqa: E402
+from jointplay.study.metrics import Response  # noqa: E402
+
+STUDY_FILE = HERE.parent / "examples" / "paper003_breaker_study.toml"
+
+
+def tree_cpu() -> float:
+    """CPU time [s] of this process and every process below it (workers included)."""
+    import psutil
+
+    me = psutil.Process()
+    total = sum(me.cpu_times()[:2])
+    for child in me.children(recursive=True):
+        try:
+            times = child.cpu_times()
+            total += times.user + times.system
+        except psutil.NoSuchProcess:
+            pass
+    return total + sum(me.cpu_times()[2:4])  # children already reaped
+
+
+def full_factorial_study(cases: int, t_end: str | None = None) -> Study:
+    """The breaker study with a full factorial of about ``cases`` cases over its four factors."""
+    base = load_study(STUDY_FILE)
+    levels = {64: [4, 4, 2, 2], 16: [2, 2, 2, 2], 8: [2, 2, 2, 1], 4: [2, 2, 1, 1]}[cases]
+    factors = [dict(f.to_dict(), range=[f"{f.low!r} m", f"{f.high!r} m"]) for f in base.factors]
+    table = [[f"{f.value(c)!r} m" for f, c in zip(base.factors, row, strict=True)]
+             for row in _grid(levels)]
+    entries = [{"name": f["name"], "path": f["path"], "range": f["range"]} for f in factors]
+    return Study(STUDY_FILE.parent / "paper003_breaker.toml", entries, {"kind": "table", "rows": table},
+                 list(base.responses), t_end=t_end or base.t_end, fixed=base.fixed, options=None)
+
+
+def _grid(levels: list[int]) -> np.ndarray:
+    axes = [np.linspace(-1, 1, n) if n > 1 else np.zeros(1) for n in levels]
+    return np.array(np.meshgrid(*axes, indexing="ij")).reshape(len(levels), -1).T
+
+
+class TreeCase(timing.Case):
+    """A timed case whose CPU time includes its worker processes."""
+
+    def time_once(self) -> None:
+        wall0, cpu0 = time.perf_counter(), tree_cpu()
+        self.last = self.run()
+        self.walls.append(time.perf_counter() - wall0)
+        self.cpus.append(tree_cpu() - cpu0)
+
+
+def speedup(args) -> list[str]:
+    from distributed import Client, LocalCluster
+
+    study = full_factorial_study(args.cases, args.t_end)
+    lines = [f"study: {len(study)} cases of {STUDY_FILE.name}, t_end {study.t_end * 1e3:g} ms"]
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
+            Client(cluster) as client, tempfile.TemporaryDirectory() as tmp:
+        counter = iter(range(10**6))
+
+        def fresh() -> Path:
+            return Path(tmp) / f"run{next(counter)}"
+
+        cases = [TreeCase("serial", lambda: study.run(fresh())),
+                 TreeCase("2 local processes", lambda: study.run(fresh(), workers=2)),
+                 TreeCase("Dask LocalCluster, 2 workers", lambda: study.run(fresh(), client=client))]
+        timing.interleave(cases, args.rounds)
+        reference = cases[0].last
+        for case in cases[1:]:
+            same = case.last.identical(reference)
+            lines.append(f"{case.name}: Dataset identical to serial: {same}")
+    lines.append("")
+    lines.append("| way | wall [s] | CPU, all processes [s] | speed-up (wall) | target |")
+    lines.append("|---|---:|---:|---:|---|")
+    for case in cases:
+        wall = timing.Spread.of(case.values("wall")).text()
+        cpu = timing.Spread.of(case.values("cpu")).text()
+        if case is cases[0]:
+            lines.append(f"| {case.name} | {wall} | {cpu} | 1 | |")
+            continue
+        ratio = timing.ratio(cases[0], case, clock="wall")
+        lines.append(f"| {case.name} | {wall} | {cpu} | {ratio.text()} | "
+                     f"{timing.verdict(ratio.median, '>=', 1.8)} (>= 1.8) |")
+    return lines
+
+
+def fixed_cost(args) -> list[str]:
+    from jointplay.modelfile import from_document
+
+    study = full_factorial_study(4, args.t_end)
+    recipe = study.recipe()
+    overrides = {**recipe.fixed, **study.overrides(0)}
+    first_step = {k: v for k, v in recipe.options.items() if k not in ("output_step", "max_step")}
+
+    def setup_and_first_step():  # a run to 0.1 us: the start and its first accepted step
+        model = from_document(recipe.document, overrides, name=recipe.model_name, base=Path(recipe.base))
+        return model.simulate(1e-7, **first_step)
+
+    def whole():
+        model = from_document(recipe.document, overrides, name=recipe.model_name, base=Path(recipe.base))
+        return model.simulate(recipe.t_end, **recipe.options)
+
+    cases = [timing.Case("spec to compiled model to first step", setup_and_first_step),
+             timing.Case("whole case", whole)]
+    timing.interleave(cases, max(5, args.rounds))
+    share = timing.ratio(cases[0], cases[1], clock="cpu")
+    return ["| part | CPU [ms] | wall [ms] |", "|---|---:|---:|"] + [
+        f"| {c.name} | {timing.Spread.of(c.values('cpu')).text(1e3)} | {timing.Spread.of(c.values('wall')).text(1e3)} |"
+        for c in cases] + ["", f"fixed cost / whole case (CPU): {share.text(100)} % -> "
+                               f"{timing.verdict(share.median, '<=', 0.05)} (<= 5 %)"]
+
+
+def resident_memory(results) -> float:
+    """Resident memory [MiB] of the process evaluating this response (a user response of the benchmark)."""
+    import psutil
+
+    return psutil.Process().memory_info().rss / 2**20
+
+
+def worker_pid(results) -> float:
+    return float(os.getpid())
+
+
+def memory(args) -> list[str]:
+    base = full_factorial_study(4, "0.5 ms")
+    n = args.memory_cases
+    rows = [[f"{base.factors[j].value(c)!r} m" for j, c in enumerate(row)]
+            for row in np.random.default_rng(1).uniform(-1, 1, (n, len(base.factors)))]
+    study = Study(STUDY_FILE.parent / "paper003_breaker.toml",
+                  [{"name": f.name, "path": f.path, "range": [f"{f.low!r} m", f"{f.high!r} m"]} for f in base.factors],
+                  {"kind": "table", "rows": rows},
+                  [Response.from_callable("rss", resident_memory, units="MiB"),
+                   Response.from_callable("pid", worker_pid)], t_end="0.5 ms", fixed=base.fixed)
+    with tempfile.TemporaryDirectory() as tmp:
+        ds = study.run(Path(tmp) / "memory", workers=2)
+    lines = ["| worker | cases | RSS after its first 50 cases [MiB] | RSS after its last case [MiB] | growth [MiB] |",
+             "|---|---:|---:|---:|---:|"]
+    for k, pid in enumerate(sorted(set(ds["pid"].values[np.isfinite(ds["pid"].values)]))):
+        rss = ds["rss"].values[ds["pid"].values == pid]
+        early = float(np.max(rss[:50]))
+        lines.append(f"| {k + 1} | {rss.size} | {early:.1f} | {rss[-1]:.1f} | {rss[-1] - early:+.1f} |")
+    failed = int((ds["status"].values != "done").sum())
+    lines.append(f"\n{n} cases, {failed} failed")
+    return lines
+
+
+def main(argv=None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--cases", type=int, default=64, choices=[4, 8, 16, 64])
+    parser.add_argument("--memory-cases", type=int, default=1000)
+    parser.add_argument("--t-end", default=None, help="end time of a case (default: the study file's)")
+    parser.add_argument("--quick", action="store_true", help="a smoke test: 4 short cases, 1 round, 40 memory cases")
+    parser.add_argument("--markdown", action="store_true")
+    args = parser.parse_args(argv)
+    if args.quick:
+        args.rounds, args.cases, args.memory_cases, args.t_end = 1, 4, 40, args.t_end or "1 ms"
+    print(f"jointplay {jp.__version__}, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.2f}\n")
+    for title, part in (("Speed-up on 2 workers", speedup), ("Fixed cost of one case", fixed_cost),
+                        ("Worker memory", memory)):
+        print(f"## {title}\n")
+        print("\n".join(part(args)))
+        print()
+
+
+if __name__ == "__main__":
+    main()
