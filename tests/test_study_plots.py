@@ -92,7 +92,7 @@ def test_contour_is_drawn_in_real_units_with_the_held_values():
     assert ax.get_xlabel() == "clearance [m]" and ax.get_ylabel() == "speed [rad/s]"
     assert ax.get_xlim() == pytest.approx((10e-6, 30e-6)) and ax.get_ylim() == pytest.approx((50.0, 150.0))
     title = fig.get_suptitle()
-    assert title.startswith("peak_force [N]: quadratic surface over clearance and speed (trustworthy")
+    assert title.startswith("peak_force [N]: quadratic surface over clearance and speed\n(trustworthy")
     assert title.endswith("held: mass = 2.5 kg")
     assert fig.axes[1].get_ylabel() == "peak_force [N]"  # the colour bar
 
