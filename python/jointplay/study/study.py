@@ -15,6 +15,7 @@ that any worker turns into a compiled model itself.
 from __future__ import annotations
 
 import math
+import os
 import time as _time
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -154,12 +155,20 @@ class Study:
 
 
 def _responses(responses) -> list:
-    """Response objects as given, and response tables (dicts) parsed."""
+    """Response objects as given, and response tables (dicts) parsed together (so that a name given twice
+    is found and every bad table reported)."""
     from .metrics import parse_responses
 
+    responses = list(responses)
+    if all(isinstance(r, dict) for r in responses):
+        return parse_responses(responses, "study.responses")
     out = []
     for k, r in enumerate(responses):
         out.extend([r] if hasattr(r, "evaluate") else parse_responses([r], f"study.responses[{k}]"))
+    names = [r.name for r in out]
+    repeated = sorted({n for n in names if names.count(n) > 1})
+    if repeated:
+        raise ModelError([Problem("study.responses", f"repeats the response name(s) {', '.join(repeated)}")])
     return out
 
 
@@ -169,7 +178,7 @@ def _model_document(model) -> tuple[dict, Path | None, str, str]:
     from ..modelfile import parse_text, read_document, to_toml
 
     if isinstance(model, (str, Path)):
-        path = Path(model)
+        path = Path(os.path.normpath(model))
         return read_document(path), path.parent.resolve(), path.stem, str(path)
     if isinstance(model, Model):
         doc = parse_text(to_toml(model), "the study's model")
