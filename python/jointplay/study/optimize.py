@@ -221,8 +221,11 @@ def point_label(factor, value: float) -> str:
     if factor.nominal is not None:
         from . import iso286
 
+        # a band holds its upper end (docs/theory/iso-286-fits.md): the low end of a grades range is named
+        # by the range's own lowest grade
+        diametral = max(2.0 * value, 2.0 * factor.low * (1 + 1e-9)) if factor.low is not None else 2.0 * value
         try:
-            text += f" ({iso286.grade_of_clearance(2.0 * value, factor.nominal)})"
+            text += f" ({iso286.grade_of_clearance(diametral, factor.nominal)})"
         except ModelError:
             pass
     return text
