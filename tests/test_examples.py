@@ -17,7 +17,8 @@ def test_every_python_example_is_covered_here():
                # tests/physics/test_redundant_double_parallelogram.py
                "parallelogram_four_bar", "double_parallelogram", "hydraulic_boom",
                "spin_up_beam", "flores_flexible_rod",  # tests/test_beams.py
-               "four_bar_flexible_coupler"}
+               "four_bar_flexible_coupler",
+               "paper003_breaker"}  # tests/test_paper003_breaker.py
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 
