@@ -1,8 +1,9 @@
 """Benchmark: a study of paper 003's breaker mechanism run serially, on 2 local processes and on a Dask
 LocalCluster of 2 workers; the fixed cost of one case; a worker's memory over many cases.
 
-1. **Speed-up.** The 64-case study (``examples/paper003_breaker_study.toml`` with a 4 x 4 x 2 x 2 full
-   factorial over the clearances of E, F, G, H; ``--cases`` changes the count) run three ways in
+1. **Speed-up.** A 64-case study of the breaker with flexible links and clearance joints
+   (``examples/paper003_breaker.py``'s ``breaker_study("clearance")``: its four clearances E-H on a
+   4 x 4 x 2 x 2 full factorial, 30 ms each; ``--cases`` changes the count) run three ways in
    interleaved rounds: serially in this process, on 2 local worker processes (a pool started by the
    study, as ``jointplay sweep --workers 2`` does), and on a Dask ``LocalCluster`` of 2 single-threaded
    worker processes started once before the rounds (a cluster outlives one study). Wall time, and
@@ -34,44 +35,44 @@ sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "examples"))
 
 import timing  # noqa: E402
+from study_probes import resident_memory, worker_pid  # noqa: E402
 
 import jointplay as jp  # noqa: E402
-from jointplay.study import Study, load_study  # noqa: E402
+from jointplay.study import Study  # noqa: E402
 from jointplay.study.metrics import Response  # noqa: E402
 
-STUDY_FILE = HERE.parent / "examples" / "paper003_breaker_study.toml"
+def breaker_table_study(levels: list[int], t_end: str | None = None, factors_from=None) -> Study:
+    """The breaker's clearance study (flexible links, clearance joints: ``breaker_study("clearance")``) with a
+    full factorial of ``levels`` per factor over its four clearances, written as a table design."""
+    from paper003_breaker import breaker_study, build_model
+
+    base = factors_from or breaker_study("clearance")
+    axes = [np.linspace(-1, 1, n) if n > 1 else np.zeros(1) for n in levels]
+    grid = np.array(np.meshgrid(*axes, indexing="ij")).reshape(len(levels), -1).T
+    rows = [[f"{float(f.value(c))!r} m" for f, c in zip(base.factors, row, strict=True)] for row in grid]
+    entries = [{"name": f.name, "path": f.path, "range": [f"{f.low!r} m", f"{f.high!r} m"]} for f in base.factors]
+    return Study(build_model("clearance"), entries, {"kind": "table", "rows": rows}, list(base.responses),
+                 t_end=t_end or base.t_end, fixed=base.fixed)
+
+
+LEVELS = {64: [4, 4, 2, 2], 16: [2, 2, 2, 2], 4: [2, 2, 1, 1]}
 
 
 def tree_cpu() -> float:
-    """CPU time [s] of this process and every process below it (workers included)."""
+    """CPU time [s] of this process, of every process below it (workers included) and of its reaped
+    children."""
     import psutil
 
     me = psutil.Process()
-    total = sum(me.cpu_times()[:2])
+    times = me.cpu_times()
+    total = times.user + times.system + times.children_user + times.children_system
     for child in me.children(recursive=True):
         try:
-            times = child.cpu_times()
-            total += times.user + times.system
+            child_times = child.cpu_times()
+            total += child_times.user + child_times.system
         except psutil.NoSuchProcess:
             pass
-    return total + sum(me.cpu_times()[2:4])  # children already reaped
-
-
-def full_factorial_study(cases: int, t_end: str | None = None) -> Study:
-    """The breaker study with a full factorial of about ``cases`` cases over its four factors."""
-    base = load_study(STUDY_FILE)
-    levels = {64: [4, 4, 2, 2], 16: [2, 2, 2, 2], 8: [2, 2, 2, 1], 4: [2, 2, 1, 1]}[cases]
-    factors = [dict(f.to_dict(), range=[f"{f.low!r} m", f"{f.high!r} m"]) for f in base.factors]
-    table = [[f"{f.value(c)!r} m" for f, c in zip(base.factors, row, strict=True)]
-             for row in _grid(levels)]
-    entries = [{"name": f["name"], "path": f["path"], "range": f["range"]} for f in factors]
-    return Study(STUDY_FILE.parent / "paper003_breaker.toml", entries, {"kind": "table", "rows": table},
-                 list(base.responses), t_end=t_end or base.t_end, fixed=base.fixed, options=None)
-
-
-def _grid(levels: list[int]) -> np.ndarray:
-    axes = [np.linspace(-1, 1, n) if n > 1 else np.zeros(1) for n in levels]
-    return np.array(np.meshgrid(*axes, indexing="ij")).reshape(len(levels), -1).T
+    return total
 
 
 class TreeCase(timing.Case):
@@ -87,8 +88,9 @@ class TreeCase(timing.Case):
 def speedup(args) -> list[str]:
     from distributed import Client, LocalCluster
 
-    study = full_factorial_study(args.cases, args.t_end)
-    lines = [f"study: {len(study)} cases of {STUDY_FILE.name}, t_end {study.t_end * 1e3:g} ms"]
+    study = breaker_table_study(LEVELS[args.cases], args.t_end)
+    lines = [f"study: {len(study)} cases of the breaker (flexible links, clearance joints), "
+             f"t_end {study.t_end * 1e3:g} ms"]
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
             Client(cluster) as client, tempfile.TemporaryDirectory() as tmp:
         counter = iter(range(10**6))
@@ -122,17 +124,17 @@ def speedup(args) -> list[str]:
 def fixed_cost(args) -> list[str]:
     from jointplay.modelfile import from_document
 
-    study = full_factorial_study(4, args.t_end)
+    study = breaker_table_study(LEVELS[4], args.t_end)
     recipe = study.recipe()
     overrides = {**recipe.fixed, **study.overrides(0)}
     first_step = {k: v for k, v in recipe.options.items() if k not in ("output_step", "max_step")}
 
     def setup_and_first_step():  # a run to 0.1 us: the start and its first accepted step
-        model = from_document(recipe.document, overrides, name=recipe.model_name, base=Path(recipe.base))
+        model = from_document(recipe.document, overrides, name=recipe.model_name)
         return model.simulate(1e-7, **first_step)
 
     def whole():
-        model = from_document(recipe.document, overrides, name=recipe.model_name, base=Path(recipe.base))
+        model = from_document(recipe.document, overrides, name=recipe.model_name)
         return model.simulate(recipe.t_end, **recipe.options)
 
     cases = [timing.Case("spec to compiled model to first step", setup_and_first_step),
@@ -145,25 +147,13 @@ def fixed_cost(args) -> list[str]:
                                f"{timing.verdict(share.median, '<=', 0.05)} (<= 5 %)"]
 
 
-def resident_memory(results) -> float:
-    """Resident memory [MiB] of the process evaluating this response (a user response of the benchmark)."""
-    import psutil
-
-    return psutil.Process().memory_info().rss / 2**20
-
-
-def worker_pid(results) -> float:
-    return float(os.getpid())
-
-
 def memory(args) -> list[str]:
-    base = full_factorial_study(4, "0.5 ms")
+    base = breaker_table_study(LEVELS[4], "0.5 ms")
     n = args.memory_cases
-    rows = [[f"{base.factors[j].value(c)!r} m" for j, c in enumerate(row)]
+    rows = [[f"{float(base.factors[j].value(c))!r} m" for j, c in enumerate(row)]
             for row in np.random.default_rng(1).uniform(-1, 1, (n, len(base.factors)))]
-    study = Study(STUDY_FILE.parent / "paper003_breaker.toml",
-                  [{"name": f.name, "path": f.path, "range": [f"{f.low!r} m", f"{f.high!r} m"]} for f in base.factors],
-                  {"kind": "table", "rows": rows},
+    entries = [{"name": f.name, "path": f.path, "range": [f"{f.low!r} m", f"{f.high!r} m"]} for f in base.factors]
+    study = Study(base.document, entries, {"kind": "table", "rows": rows},
                   [Response.from_callable("rss", resident_memory, units="MiB"),
                    Response.from_callable("pid", worker_pid)], t_end="0.5 ms", fixed=base.fixed)
     with tempfile.TemporaryDirectory() as tmp:
@@ -175,14 +165,14 @@ def memory(args) -> list[str]:
         early = float(np.max(rss[:50]))
         lines.append(f"| {k + 1} | {rss.size} | {early:.1f} | {rss[-1]:.1f} | {rss[-1] - early:+.1f} |")
     failed = int((ds["status"].values != "done").sum())
-    lines.append(f"\n{n} cases, {failed} failed")
+    lines.append(f"\n{n} cases of 0.5 ms, {failed} failed")
     return lines
 
 
-def main(argv=None) -> None:
+def main(argv=None) -> dict[str, list[str]]:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3)
-    parser.add_argument("--cases", type=int, default=64, choices=[4, 8, 16, 64])
+    parser.add_argument("--cases", type=int, default=64, choices=sorted(LEVELS))
     parser.add_argument("--memory-cases", type=int, default=1000)
     parser.add_argument("--t-end", default=None, help="end time of a case (default: the study file's)")
     parser.add_argument("--quick", action="store_true", help="a smoke test: 4 short cases, 1 round, 40 memory cases")
@@ -191,11 +181,15 @@ def main(argv=None) -> None:
     if args.quick:
         args.rounds, args.cases, args.memory_cases, args.t_end = 1, 4, 40, args.t_end or "1 ms"
     print(f"jointplay {jp.__version__}, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.2f}\n")
+    report = {}
     for title, part in (("Speed-up on 2 workers", speedup), ("Fixed cost of one case", fixed_cost),
                         ("Worker memory", memory)):
+        report[title] = part(args)
         print(f"## {title}\n")
-        print("\n".join(part(args)))
+        print("\n".join(report[title]))
         print()
+    print(f"load average at the end {os.getloadavg()[0]:.2f}")
+    return report
 
 
 if __name__ == "__main__":

@@ -130,3 +130,16 @@ def test_scaling_benchmark_quick_mode_runs_every_series_and_fits_exponents(capsy
     assert ("Exudyn / jointplay CPU time" in out) == with_exudyn
     if not with_exudyn:
         assert "Exudyn rows: skipped, exudyn is not installed" in out
+
+
+def test_study_benchmark_quick_mode_runs_three_ways_with_identical_results(capsys):
+    bench = load("bench_study")
+    report = bench.main(["--quick"])
+    speed = report["Speed-up on 2 workers"]
+    assert "2 local processes: Dataset identical to serial: True" in speed
+    assert "Dask LocalCluster, 2 workers: Dataset identical to serial: True" in speed
+    assert sum(line.startswith("| ") and "|---" not in line for line in speed) == 4  # header and three ways
+    assert any("fixed cost / whole case" in line for line in report["Fixed cost of one case"])
+    memory = report["Worker memory"]
+    assert sum(line.startswith("| ") and line[2].isdigit() for line in memory) == 2  # two workers
+    assert "40 cases of 0.5 ms, 0 failed" in "\n".join(memory)

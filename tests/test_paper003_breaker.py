@@ -199,3 +199,20 @@ def test_the_saved_clearance_variant_is_the_same_model_and_takes_each_clearance_
     assert jp.load(path).to_spec() == example.build_model("clearance").to_spec()
     joints = {j["name"]: j for j in jp.load(path, {"joints.H.clearance": "18 um"}).to_spec()["joints"]}
     assert (joints["H"]["clearance"], joints["G"]["clearance"]) == pytest.approx((18e-6, 15e-6))
+
+
+def test_the_clearance_study_runs_and_its_optimum_is_verified(tmp_path):
+    """``--study --quick``: the study file on the model file's rigid links (25 cases of 30 ms), surfaces,
+    the optimum run again, and the changes from all joints at IT7; each change is the verified run's value
+    against the baseline run's, as printed."""
+    import paper003_breaker as example
+
+    found = example.main(["--study", "--quick", "--out", str(tmp_path)])
+    ds, optimum = found["dataset"], found["optimum"]
+    assert ds.sizes["case"] == 25 and (ds["status"].values == "done").all()
+    assert set(optimum.verified) == {"acc_oscillation", "force_H_start", "force_H_end"}
+    low, high = 8e-6, 27e-6  # IT6..IT8 bands at 12 mm, radial (paper 003 §4.4)
+    assert all(low - 1e-12 <= optimum.values[f"clearance_{j}"] <= high + 1e-12 for j in "EFGH")
+    for name, change in found["changes"].items():
+        assert change == pytest.approx(100 * (optimum.verified[name] / found["baseline"][name] - 1))
+    assert (tmp_path / "study_quick" / "study.nc").exists()

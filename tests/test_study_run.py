@@ -307,3 +307,14 @@ range = ["1 kg", "2 kg"]
         load_study(bad)
     found = {p.location: p.message for p in caught.value.problems}
     assert "needs a unit" in found["study.t_end"] and "euler" in found["study.simulation.method"]
+
+
+def test_the_best_case_of_the_design_is_the_case_with_the_best_weighted_objective():
+    from jointplay.study.optimize import Objective, best_case
+
+    study = throw_study()
+    ds = study.run()
+    found = best_case(study, ds, [Objective("final_height", "maximize")])
+    k = int(np.argmax(ds["final_height"].values))
+    assert found.values == {"speed": float(ds["speed"].values[k]), "g": float(ds["g"].values[k])}
+    assert found.verified["final_height"] == float(ds["final_height"].values[k]) and found.predicted == {}

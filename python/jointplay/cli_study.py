@@ -47,7 +47,7 @@ def sweep(study_file: Annotated[Path, typer.Argument(help="Study file (TOML with
     """
     study = _study(study_file)
     dataset = _run(study, output, workers, scheduler, resume, quiet)
-    _print_summary(study, dataset, output)
+    print_summary(study, dataset, output)
     if (dataset["status"].values != "done").any():
         raise typer.Exit(EXIT_FAILED)
 
@@ -65,7 +65,7 @@ def optimize(study_file: Annotated[Path, typer.Argument(help="Study file with a 
     default) or searches with the simulator itself (on = "simulator"), runs
     the model at the optimum and prints the prediction beside the run.
     """
-    from .study.optimize import optimize_simulator, optimize_surface, parse_objectives
+    from .study.optimize import best_case, optimize_simulator, optimize_surface, parse_objectives
 
     study = _study(study_file)
     spec = dict(getattr(study, "optimize_spec", {}))
@@ -78,15 +78,16 @@ def optimize(study_file: Annotated[Path, typer.Argument(help="Study file with a 
         raise _bad_input(f"{study_file}: bad [study.optimize]", exc.problems) from None
     if on == "surface":
         dataset = _run(study, output, workers, scheduler, True, quiet)
-        _print_summary(study, dataset, output)
+        print_summary(study, dataset, output)
         if spec.get("front"):
             _print_front(study, dataset, objectives, output)
+        print_optimum(study, best_case(study, dataset, objectives), objectives)
         found = optimize_surface(study, dataset, objectives, seed=study.seed)
     else:
         output.mkdir(parents=True, exist_ok=True)
         found = optimize_simulator(study, objectives, method=spec.get("method", "differential_evolution"),
                                    budget=int(spec.get("budget", 60)), seed=study.seed)
-    _print_optimum(study, found, objectives)
+    print_optimum(study, found, objectives)
     path = output / "optimum.json"
     path.write_text(json.dumps({"method": found.method, "values": found.values, "labels": found.labels,
                                 "predicted": found.predicted, "verified": found.verified,
@@ -122,7 +123,8 @@ def _run(study, output: Path, workers: int | None, scheduler: str | None, resume
         raise _bad_input(f"{output}: cannot run the study", exc.problems) from None
 
 
-def _print_summary(study, dataset, output: Path) -> None:
+def print_summary(study, dataset, output: Path) -> None:
+    """Failures, the best cases per response, the surfaces' quality, Sobol indices, and the figures."""
     from .study import summary
 
     failed = summary.failures(dataset)
@@ -173,7 +175,8 @@ def _print_sensitivities(dataset, fitted: dict) -> None:
         print_table(out, t)
 
 
-def _print_optimum(study, found, objectives) -> None:
+def print_optimum(study, found, objectives) -> None:
+    """The optimum's factor values (with ISO grades), the surface's prediction beside the verifying run."""
     goals = ", ".join(f"{o.goal} {o.response} (weight {o.weight:g})" for o in objectives)
     out.print(f"[bold]optimum[/] by {found.method}: {goals}")
     t = table("factor", "value", title="optimum")
@@ -188,6 +191,8 @@ def _print_optimum(study, found, objectives) -> None:
         t.add_row(r.name, _fmt(predicted), _fmt(run), f"{100 * differences.get(r.name, math.nan):+.1f} %"
                   if r.name in differences else "-")
     print_table(out, t)
+    for note in found.notes:
+        out.print(f"note: {note}", markup=False)
 
 
 def _print_front(study, dataset, objectives, output: Path) -> None:

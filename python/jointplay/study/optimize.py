@@ -50,6 +50,8 @@ class Optimum:
     labels: dict[str, str] = field(default_factory=dict)
     objective: float = math.nan
     evaluations: int = 0
+    #: What limits trust in the optimum (a surface that fits poorly), one line each.
+    notes: list[str] = field(default_factory=list)
 
     def differences(self) -> dict[str, float]:
         """(verified - predicted) / |verified| per response with both."""
@@ -117,8 +119,26 @@ def optimize_surface(study, dataset, objectives: list[Objective], *, verify: boo
     coded, value, evaluations = _search(study.factors, objective, seed)
     optimum = _optimum(study, coded, "surface", value, evaluations)
     optimum.predicted = {r: float(s.predict(coded[None, :])[0]) for r, s in surfaces.items()}
+    optimum.notes = [f"the surface of {r} is {s.verdict} ({s.verdict_text()}): its prediction is a rough guide, the "
+                     "verifying run is what counts" for r, s in surfaces.items() if s.verdict != "trustworthy"]
     if verify:
         _verify(study, optimum)
+    return optimum
+
+
+def best_case(study, dataset, objectives: list[Objective]) -> Optimum:
+    """The finished case with the best weighted objective (scales as :func:`optimize_surface`): a point that
+    was run, whatever the surfaces' quality."""
+    scale = scales(dataset, objectives)
+    value = sum(o.weight * o.sign * np.asarray(dataset[o.response].values, dtype=float) / scale[o.response]
+                for o in objectives)
+    value = np.where(np.isfinite(value), value, np.inf)
+    k = int(np.argmin(value))
+    optimum = _optimum(study, np.asarray(dataset["coded"].values[k], dtype=float), f"best case of the design (case {k})",
+                       float(value[k]), len(value))
+    optimum.values = {f.name: float(dataset[f.name].values[k]) for f in study.factors}
+    optimum.labels = {f.name: point_label(f, optimum.values[f.name]) for f in study.factors}
+    optimum.verified = {r.name: float(dataset[r.name].values[k]) for r in study.responses}
     return optimum
 
 
@@ -223,7 +243,9 @@ def point_label(factor, value: float) -> str:
 
         # a band holds its upper end (docs/theory/iso-286-fits.md): the low end of a grades range is named
         # by the range's own lowest grade
-        diametral = max(2.0 * value, 2.0 * factor.low * (1 + 1e-9)) if factor.low is not None else 2.0 * value
+        diametral = 2.0 * value
+        if factor.low is not None and value - factor.low <= 1e-6 * (factor.high - factor.low):
+            diametral = 2.0 * factor.low + 2.0 * iso286.BAND_SLACK_UM / iso286.UM_PER_M
         try:
             text += f" ({iso286.grade_of_clearance(diametral, factor.nominal)})"
         except ModelError:
