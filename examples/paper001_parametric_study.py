@@ -7,9 +7,14 @@ joint lubricated, in three series (two crank revolutions each):
 - crank speed 300 / 500 / 800 / 1000 rpm at 0.5 mm and 400 cP;
 - viscosity 400 / 300 / 180 cP at 0.5 mm and 500 rpm.
 
+The nine distinct cases run as one study (``jointplay.Study`` around the
+model built here, an explicit table of clearance, crank speed, viscosity,
+end time and output step; ``--workers N`` runs them on N processes). The
+minimum film is the one tracked at every step, the peak force likewise.
 Writes, per series, the slider acceleration, the joint reaction force and
-the minimum film thickness against crank angle, and a table of the minimum
-film thickness per case (Markdown and CSV).
+the minimum film thickness against crank angle, a table of the minimum
+film thickness per case (Markdown and CSV), and the study's Dataset
+(``paper001_study.nc``).
 
 CHOSEN here (paper 001's joint table did not survive): the geometry of the
 dry example (bearing radius 10 mm, length 40 mm, so L/D = 2, a long
@@ -24,7 +29,7 @@ the paper's numbers; the trends are what the study shows. The film at
 c = 0.1 mm cannot be thicker than 0.1 mm, so across clearances the relative
 film h_min / c is the fair comparison (it is in the table).
 
-Run: python examples/paper001_parametric_study.py [--out DIR] [--revolutions N]
+Run: python examples/paper001_parametric_study.py [--out DIR] [--revolutions N] [--workers N]
 """
 
 from __future__ import annotations
