@@ -318,3 +318,24 @@ def test_the_best_case_of_the_design_is_the_case_with_the_best_weighted_objectiv
     k = int(np.argmax(ds["final_height"].values))
     assert found.values == {"speed": float(ds["speed"].values[k]), "g": float(ds["g"].values[k])}
     assert found.verified["final_height"] == float(ds["final_height"].values[k]) and found.predicted == {}
+
+
+def test_optuna_searches_the_simulator_too():
+    pytest.importorskip("optuna", reason="the optuna extra is installed by make setup")
+    from jointplay.study.optimize import Objective, optimize_simulator
+
+    study = Study(DATA / "throw.toml",
+                  factors=[continuous("speed", "bodies.ball.velocity.1", "1 m/s", "3 m/s", "f"),
+                           discrete("g", "model.gravity.1", ["-9 m/s^2", "-11 m/s^2"], "f")],
+                  responses=[{"name": "final_height", "kind": "final", "channel": "ball.y"}])
+    found = optimize_simulator(study, [Objective("final_height", "maximize")], method="optuna", budget=30, seed=2)
+    assert found.values["g"] == -9.0 and found.values["speed"] > 2.5
+    assert found.verified["final_height"] == pytest.approx(height(found.values["speed"], 9.0, T_END), abs=1e-9)
+    with pytest.raises(jp.ModelError, match="differential_evolution or optuna"):
+        optimize_simulator(study, [Objective("final_height")], method="annealing")
+
+
+def test_a_progress_bar_shows_the_cases_and_the_time_left(capsys):
+    throw_study().run(progress=True)
+    shown = capsys.readouterr().out
+    assert "cases" in shown and "9/9" in shown
