@@ -339,3 +339,13 @@ def test_a_progress_bar_shows_the_cases_and_the_time_left(capsys):
     throw_study().run(progress=True)
     shown = capsys.readouterr().out
     assert "cases" in shown and "9/9" in shown
+
+
+def test_a_scheduler_address_runs_the_cases_on_that_cluster_and_a_bad_one_is_named(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    study = throw_study()
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        ds = study.run(tmp_path / "s", scheduler=cluster.scheduler_address)
+    assert ds.identical(study.run())
+    with pytest.raises(jp.ModelError, match="cannot reach a Dask scheduler"):
+        study.run(scheduler="tcp://127.0.0.1:9")
