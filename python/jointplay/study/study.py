@@ -33,7 +33,14 @@ Progress = Callable[[int, int], None]
 
 
 class Study:
-    """A designed set of runs of one model (see the module doc)."""
+    """A designed set of runs of one model (see the module doc).
+
+    ``model``: a model file's path, a :class:`~jointplay.Model` or a parsed model document; ``factors``,
+    ``design`` and ``responses``: the tables of a study file (or Factor and Response objects); ``t_end``
+    and ``options``: the run's end time and options over the model's ``[simulation]`` table;
+    ``channels`` kept per case every ``channel_step``; ``fixed``: ``--set`` overrides of every case;
+    ``seed`` of random designs. ``file_values``: the values come from a study file, so a bare number of
+    a time needs a unit as in a model file (from Python a bare time is in seconds)."""
 
     def __init__(self, model, factors: Sequence[Factor | dict], design: str | dict = "full_factorial",
                  responses: Sequence = (), *, t_end: float | str | None = None, options: dict | None = None,
