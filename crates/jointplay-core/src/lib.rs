@@ -38,6 +38,7 @@ pub mod hydraulic;
 pub mod integrate;
 pub mod interrupt;
 pub mod joint;
+pub mod kinematics;
 pub mod linalg;
 pub mod lubrication;
 pub mod modal;
