@@ -23,10 +23,16 @@
 use std::borrow::Cow;
 use std::ops::Range;
 
-use super::{CoordinateChannels, MassBlock, PlanarRigidBody, SectionSite, Site};
-use crate::beam::{vibration_modes, BeamElement, BeamSection, BeamStrains, ElementOrder, MAX_ELEMENT_COORDINATES};
 use nalgebra::DMatrix;
-use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
+
+use super::planar_embedding::embedded_in_the_plane;
+use super::planar_rigid::point_acceleration;
+use super::{position_channels_of, velocity_channels_of, BodyModel, ChannelName, CoordinateChannels, MassBlock};
+use crate::beam::{vibration_modes, BeamElement, BeamSection, BeamStrains, ElementOrder, MAX_ELEMENT_COORDINATES};
+use crate::kinematics::marker::{Marker, MarkerFrames, SectionSite, Site, SpatialMarker};
+use crate::kinematics::planar::{cross, perp, Frame, Vec2};
+use crate::kinematics::spatial::{SpatialFrame, Vec3};
+use crate::kinematics::wrench::Wrench;
 use crate::linalg::PatternLdl;
 
 /// How a beam is divided into elements of equal length.
@@ -177,19 +183,8 @@ impl BeamBody {
     pub fn rigid_velocities(&self, velocity: Vec2, angular_velocity: f64) -> Vec<f64> {
         let q = self.reference_coordinates();
         let mut v = vec![0.0; q.len()];
-        Self::rigid_motion_velocities(&q, velocity, angular_velocity, &mut v);
+        self.rigid_motion_velocities(&q, velocity, angular_velocity, &mut v);
         v
-    }
-
-    /// Nodal velocities `v` of the beam at nodal positions `q` moving as a rigid
-    /// body: the first node at `velocity` [m/s], every section turning at
-    /// `angular_velocity` [rad/s] (node `k`: `velocity + omega x (r_k - r_0)`, `omega`).
-    pub fn rigid_motion_velocities(q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]) {
-        let origin = Vec2::new(q[0], q[1]);
-        for (node, rates) in q.chunks_exact(3).zip(v.chunks_exact_mut(3)) {
-            let u = velocity + perp(Vec2::new(node[0], node[1]) - origin) * angular_velocity;
-            rates.copy_from_slice(&[u.x, u.y, angular_velocity]);
-        }
     }
 
     /// The section at `arclength` [m] along the unstressed beam from its first end.
@@ -229,12 +224,6 @@ impl BeamBody {
         Frame::from_coordinates_after(previous, &position, &rates)
     }
 
-    /// The element's nodes' coordinates: the marker's block.
-    pub fn marker_coordinates(marker: &Marker) -> Range<usize> {
-        let s = Self::section(marker);
-        s.first as usize..s.first as usize + 3 * s.nodes as usize
-    }
-
     /// Adds `weight_a g` to the three coordinates of every node `a` of the section, `out` starting at its first.
     #[inline]
     fn spread(site: &SectionSite, g: [f64; 3], out: &mut [f64]) {
@@ -245,61 +234,10 @@ impl BeamBody {
         }
     }
 
-    /// The rigid frame's rows `scale [1, 0, -(A s)_y]`, `scale [0, 1, (A s)_x]` spread over the nodes.
-    pub fn marker_jacobian(frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
-        let s = frame.rotate(marker.local) * scale;
-        jx.fill(0.0);
-        jy.fill(0.0);
-        let site = Self::section(marker);
-        Self::spread(site, [scale, 0.0, -s.y], jx);
-        Self::spread(site, [0.0, scale, s.x], jy);
-    }
-
-    /// `along . [[1, 0, -(A s)_y], [0, 1, (A s)_x]]` spread over the nodes.
-    pub fn add_marker_jacobian(frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
-        let s = frame.rotate(marker.local);
-        Self::spread(Self::section(marker), [along.x, along.y, along.dot(&perp(s))], out);
-    }
-
-    /// `scale` on every node's angle, with its weight.
-    pub fn add_marker_angle_jacobian(marker: &Marker, scale: f64, out: &mut [f64]) {
-        Self::spread(Self::section(marker), [0.0, 0.0, scale], out);
-    }
-
-    /// The section's interpolated accelerations, then the rigid formula.
-    pub fn marker_acceleration(frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
-        let site = Self::section(marker);
-        let first = site.first as usize;
-        let mut section = [0.0; 3];
-        for (k, w) in site.weights[..site.nodes as usize].iter().enumerate() {
-            for i in 0..3 {
-                section[i] += w * a[first + 3 * k + i];
-            }
-        }
-        PlanarRigidBody::marker_acceleration(frame, &section, marker.local)
-    }
-
-    /// The force and its moment about the section's origin, spread over the nodes.
-    pub fn add_point_force(frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
-        let site = Self::section(marker);
-        Self::spread(site, [f.x, f.y, cross(p - frame.position, f)], &mut out[site.first as usize..]);
-    }
-
-    /// The moment on the nodes' angles, spread with the weights.
-    pub fn add_moment(marker: &Marker, m: f64, out: &mut [f64]) {
-        let site = Self::section(marker);
-        Self::spread(site, [0.0, 0.0, m], &mut out[site.first as usize..]);
-    }
-
     /// Lower entries `(i, j, M_ij)`, `i >= j`, of the consistent mass [kg, kg m, kg m^2],
     /// in the body's velocity coordinates.
     pub fn mass_entries(&self) -> &[(u32, u32, f64)] {
         &self.mass_entries
-    }
-
-    /// The mass block: constant, factored.
-    pub fn mass_block(&self) -> MassBlock<'_> {
-        MassBlock::ConstantFactored { program: &self.mass_program, factor: &self.mass_factor }
     }
 
     /// The consistent mass and the tangent stiffness of the whole beam at `q`,
@@ -353,33 +291,14 @@ impl BeamBody {
         }
     }
 
-    /// The weight on the nodes' positions.
-    pub fn add_gravity(&self, g: Vec2, out: &mut [f64]) {
-        for (node, m) in out.chunks_exact_mut(3).zip(&self.node_masses) {
-            node[0] += m * g.x;
-            node[1] += m * g.y;
-        }
-    }
-
     /// `-integral g . r dm` [J].
-    pub fn gravity_potential_energy(&self, g: Vec2, q: &[f64]) -> f64 {
+    pub fn gravity_potential_energy(&self, g: Vec3, q: &[f64]) -> f64 {
         q.chunks_exact(3).zip(&self.node_masses).map(|(node, m)| -m * (g.x * node[0] + g.y * node[1])).sum()
     }
 
     /// The strain energy of every element [J].
     pub fn strain_energy(&self, q: &[f64]) -> f64 {
         self.elements.iter().enumerate().map(|(e, element)| element.strain_energy(&q[self.element_coordinates(e)])).sum()
-    }
-
-    /// `v^T M v / 2` [J].
-    pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
-        self.mass_entries
-            .iter()
-            .map(|&(i, j, m)| {
-                let (i, j) = (i as usize, j as usize);
-                if i == j { 0.5 * m * v[i] * v[i] } else { m * v[i] * v[j] }
-            })
-            .sum()
     }
 
     /// Strains and stress resultants `(N [N], Q [N], M [N m])` at a section, with the
@@ -401,9 +320,12 @@ impl BeamBody {
         (strains, resultants)
     }
 
+}
+
+impl BeamBody {
 
     /// Channels of every node's coordinates: `node<k>_x`, `node<k>_y`, `node<k>_angle` and their rates.
-    pub fn coordinate_channels(&self) -> Vec<CoordinateChannels> {
+    fn coordinate_channels(&self) -> Vec<CoordinateChannels> {
         let named = |k: usize, quantity: &str, unit: &'static str, what: &str| (Cow::Owned(format!("node{k}_{quantity}")), unit, Cow::Owned(format!("node {k} {what}")));
         (0..self.n_nodes)
             .flat_map(|k| {
@@ -419,4 +341,197 @@ impl BeamBody {
             })
             .collect()
     }
+
+
+    /// The accelerations of a section's frame, interpolated from its nodes' in `a` [m/s^2, rad/s^2].
+    #[inline]
+    fn section_accelerations(site: &SectionSite, a: &[f64]) -> [f64; 3] {
+        let first = site.first as usize;
+        let mut section = [0.0; 3];
+        for (k, w) in site.weights[..site.nodes as usize].iter().enumerate() {
+            for i in 0..3 {
+                section[i] += w * a[first + 3 * k + i];
+            }
+        }
+        section
+    }
+}
+
+impl BodyModel for BeamBody {
+    #[inline]
+    fn nq(&self) -> usize {
+        self.n_coordinates()
+    }
+
+    #[inline]
+    fn nv(&self) -> usize {
+        self.n_coordinates()
+    }
+
+    /// The first node's frame.
+    #[inline]
+    fn frame(&self, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        Self::section_frame(&Self::FIRST_NODE, q, v, previous)
+    }
+
+    /// A section's frame, or the first node's.
+    #[inline]
+    fn site_frame(&self, site: &Site, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        match site {
+            Site::Section(section) => Self::section_frame(section, q, v, previous),
+            Site::Reference | Site::ModalNode(_) => self.frame(q, v, previous),
+        }
+    }
+
+    /// The rigid frame's rows `scale [1, 0, -(A s)_y]`, `scale [0, 1, (A s)_x]` spread over the nodes.
+    #[inline]
+    fn marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
+        let s = frame.rotate(marker.local) * scale;
+        jx.fill(0.0);
+        jy.fill(0.0);
+        let site = Self::section(marker);
+        Self::spread(site, [scale, 0.0, -s.y], jx);
+        Self::spread(site, [0.0, scale, s.x], jy);
+    }
+
+    /// The element's nodes' coordinates: the marker's block.
+    fn marker_coordinates(&self, marker: &Marker) -> Range<usize> {
+        let s = Self::section(marker);
+        s.first as usize..s.first as usize + 3 * s.nodes as usize
+    }
+
+    /// `along . [[1, 0, -(A s)_y], [0, 1, (A s)_x]]` spread over the nodes.
+    #[inline]
+    fn add_marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
+        let s = frame.rotate(marker.local);
+        Self::spread(Self::section(marker), [along.x, along.y, along.dot(&perp(s))], out);
+    }
+
+    /// `scale` on every node's angle, with its weight.
+    #[inline]
+    fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]) {
+        Self::spread(Self::section(marker), [0.0, 0.0, scale], out);
+    }
+
+    /// `-omega^2 A s` of the section's frame, whose coordinates are linear in the nodes' [m/s^2].
+    #[inline]
+    fn marker_bias_acceleration(&self, _body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
+        point_acceleration(frame, &[0.0; 3], marker.local)
+    }
+
+    /// None: the section's angle is linear in the nodes'.
+    #[inline]
+    fn marker_bias_angular_acceleration(&self, _frame: &Frame, _marker: &Marker) -> f64 {
+        0.0
+    }
+
+    /// The section's interpolated accelerations, then the rigid formula.
+    #[inline]
+    fn marker_acceleration(&self, _body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
+        point_acceleration(frame, &Self::section_accelerations(Self::section(marker), a), marker.local)
+    }
+
+    /// The section's interpolated angular acceleration [rad/s^2].
+    #[inline]
+    fn marker_angular_acceleration(&self, _frame: &Frame, a: &[f64], marker: &Marker) -> f64 {
+        Self::section_accelerations(Self::section(marker), a)[2]
+    }
+
+    /// Constant, factored.
+    #[inline]
+    fn mass_block(&self) -> MassBlock<'_> {
+        MassBlock::ConstantFactored { program: &self.mass_program, factor: &self.mass_factor }
+    }
+
+    /// By the factor made at compile time.
+    #[inline]
+    fn solve_mass(&self, _q: &[f64], f: &[f64], out: &mut [f64], _scratch: &mut [f64]) {
+        out.copy_from_slice(f);
+        self.mass_program.solve(&self.mass_factor, out);
+    }
+
+    /// The internal forces.
+    #[inline]
+    fn has_body_forces(&self) -> bool {
+        true
+    }
+
+    /// Minus the internal forces (nodal coordinates in the inertial frame: M is constant, no inertial terms).
+    #[inline]
+    fn add_body_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]) {
+        self.subtract_internal_forces(q, v, out);
+    }
+
+    /// Node `k`: `velocity + omega x (r_k - r_0)`, `omega`, the first node at
+    /// `velocity` [m/s], every section turning at `angular_velocity` [rad/s].
+    fn rigid_motion_velocities(&self, q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]) {
+        let origin = Vec2::new(q[0], q[1]);
+        for (node, rates) in q.chunks_exact(3).zip(v.chunks_exact_mut(3)) {
+            let u = velocity + perp(Vec2::new(node[0], node[1]) - origin) * angular_velocity;
+            rates.copy_from_slice(&[u.x, u.y, angular_velocity]);
+        }
+    }
+
+    /// The nodes' centripetal accelerations `-omega^2 (r_k - r_0)` [m/s^2].
+    fn rigid_motion_bias_accelerations(&self, q: &[f64], angular_velocity: f64, a: &mut [f64]) {
+        a.fill(0.0);
+        let (x0, y0) = (q[0], q[1]);
+        for (node, out) in q.chunks_exact(3).zip(a.chunks_exact_mut(3)) {
+            out[0] = -angular_velocity * angular_velocity * (node[0] - x0);
+            out[1] = -angular_velocity * angular_velocity * (node[1] - y0);
+        }
+    }
+
+    /// The force and its moment about the section's origin, spread over the nodes.
+    #[inline]
+    fn add_point_force(&self, _body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
+        let site = Self::section(marker);
+        Self::spread(site, [f.x, f.y, cross(p - frame.position, f)], &mut out[site.first as usize..]);
+    }
+
+    /// The moment on the nodes' angles, spread with the weights.
+    #[inline]
+    fn add_moment(&self, marker: &Marker, m: f64, out: &mut [f64]) {
+        let site = Self::section(marker);
+        Self::spread(site, [0.0, 0.0, m], &mut out[site.first as usize..]);
+    }
+
+    fn gravity_load_is_constant(&self) -> bool {
+        true
+    }
+
+    /// The weight on the nodes' positions.
+    #[inline]
+    fn add_gravity(&self, g: Vec3, _q: &[f64], out: &mut [f64]) {
+        for (node, m) in out.chunks_exact_mut(3).zip(&self.node_masses) {
+            node[0] += m * g.x;
+            node[1] += m * g.y;
+        }
+    }
+
+    /// Of gravity and the strain energy [J].
+    fn potential_energy(&self, g: Vec3, q: &[f64]) -> f64 {
+        self.gravity_potential_energy(g, q) + self.strain_energy(q)
+    }
+
+    /// `v^T M v / 2` [J].
+    fn kinetic_energy(&self, _q: &[f64], v: &[f64]) -> f64 {
+        self.mass_entries
+            .iter()
+            .map(|&(i, j, m)| {
+                let (i, j) = (i as usize, j as usize);
+                if i == j { 0.5 * m * v[i] * v[i] } else { m * v[i] * v[j] }
+            })
+            .sum()
+    }
+
+    fn position_channels(&self) -> Vec<ChannelName> {
+        position_channels_of(self.coordinate_channels())
+    }
+
+    fn velocity_channels(&self) -> Vec<(ChannelName, ChannelName)> {
+        velocity_channels_of(self.coordinate_channels())
+    }
+
+    embedded_in_the_plane!();
 }

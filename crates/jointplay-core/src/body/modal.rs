@@ -25,12 +25,17 @@
 //! `docs/theory/modal-body.md`.
 
 use std::borrow::Cow;
+use std::ops::Range;
 
 use nalgebra::DMatrix;
 
-use super::{channel, BeamBody, CoordinateChannels, SectionSite, Site};
+use super::planar_embedding::embedded_in_the_plane;
+use super::{channel, position_channels_of, velocity_channels_of, BeamBody, BodyModel, ChannelName, CoordinateChannels, MassBlock};
 use crate::beam::{vibration_modes, BeamStrains};
-use crate::dynamics::frame::{cross, perp, Frame, Marker, Vec2};
+use crate::kinematics::marker::{Marker, MarkerFrames, SectionSite, Site, SpatialMarker};
+use crate::kinematics::planar::{cross, perp, Frame, Vec2};
+use crate::kinematics::spatial::{SpatialFrame, Vec3};
+use crate::kinematics::wrench::Wrench;
 use crate::modal::{check_free_structure, craig_bampton_modes, dot, BodyMassSolve, FrameReference, InertiaInvariants, NodalCoordinates};
 
 /// Most modes of one body: the hot loop keeps its vectors on the stack (an
@@ -45,13 +50,6 @@ pub const MAX_STRUCTURE_NODES: usize = 400;
 
 /// Most coordinates of one body.
 const MAX_COORDINATES: usize = 3 + MAX_MODES;
-
-/// Where on a modal body a marker's frame is: a node of its structure.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ModalNodeSite {
-    /// The node (counted in the structure's order).
-    pub node: u32,
-}
 
 /// A free planar finite-element structure in its own axes: mass and
 /// stiffness (dense, symmetric, over the nodal `(u_x, u_y, theta)` node after
@@ -404,12 +402,6 @@ impl ModalBody {
         (&rows[..m], &rows[m..2 * m], &rows[2 * m..])
     }
 
-    /// The body frame's pose and velocity from `(x, y, phi)` and their rates.
-    #[inline]
-    pub fn frame(q: &[f64], v: &[f64], previous: &Frame) -> Frame {
-        Frame::from_coordinates_after(previous, q, v)
-    }
-
     /// Frame of node `a`: position `R + A (X_a + Phi_a eta)`, angle `phi + Psi_a eta` and their rates.
     pub fn node_frame(&self, a: usize, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
         let body = Frame::from_coordinates(q, v);
@@ -428,83 +420,6 @@ impl ModalBody {
     #[inline]
     fn modal_column(body: &Frame, rows: (&[f64], &[f64], &[f64]), s: Vec2, i: usize) -> Vec2 {
         body.rotate(Vec2::new(rows.0[i], rows.1[i])) + perp(s) * rows.2[i]
-    }
-
-    /// `scale d(v_P)/d(v)`: `scale [I, perp(P - R), A Phi_a + perp(s) Psi_a]`, rows x and y.
-    pub fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
-        let s = frame.rotate(marker.local);
-        let d = (frame.position + s - body.position) * scale;
-        jx[..3].copy_from_slice(&[scale, 0.0, -d.y]);
-        jy[..3].copy_from_slice(&[0.0, scale, d.x]);
-        let rows = self.rows(self.node(marker));
-        for i in 0..self.n_modes() {
-            let c = Self::modal_column(body, rows, s, i) * scale;
-            jx[3 + i] = c.x;
-            jy[3 + i] = c.y;
-        }
-    }
-
-    /// Adds `along . d(v_P)/d(v)` to `out`.
-    pub fn add_marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
-        let s = frame.rotate(marker.local);
-        let d = frame.position + s - body.position;
-        out[0] += along.x;
-        out[1] += along.y;
-        out[2] += along.dot(&perp(d));
-        let rows = self.rows(self.node(marker));
-        for i in 0..self.n_modes() {
-            out[3 + i] += along.dot(&Self::modal_column(body, rows, s, i));
-        }
-    }
-
-    /// Adds `scale d(omega_P)/d(v)` = `scale [0, 0, 1, Psi_a]` to `out`.
-    pub fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]) {
-        out[2] += scale;
-        let (_, _, rt) = self.rows(self.node(marker));
-        for (o, r) in out[3..].iter_mut().zip(rt) {
-            *o += scale * r;
-        }
-    }
-
-    /// `omega^2 d + 2 omega perp(v_a - R_dot) - omega_a^2 s` [m/s^2]: the point's
-    /// acceleration at zero coordinate accelerations (`d` the node from the frame
-    /// origin, `v_a` its velocity, `omega_a` its section's rate, `s` the point from the node).
-    pub fn marker_bias_acceleration(body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
-        let s = frame.rotate(marker.local);
-        let d = frame.position - body.position;
-        let omega = body.angular_velocity;
-        d * (omega * omega) + perp(frame.velocity - body.velocity) * (2.0 * omega) - s * (frame.angular_velocity * frame.angular_velocity)
-    }
-
-    /// The bias acceleration plus the Jacobian times the accelerations `a` [m/s^2].
-    pub fn marker_acceleration(&self, body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
-        let s = frame.rotate(marker.local);
-        let d = frame.position + s - body.position;
-        let rows = self.rows(self.node(marker));
-        let modal: Vec2 = (0..self.n_modes()).map(|i| Self::modal_column(body, rows, s, i) * a[3 + i]).sum();
-        Self::marker_bias_acceleration(body, frame, marker) + Vec2::new(a[0], a[1]) + perp(d) * a[2] + modal
-    }
-
-    /// Adds the generalised force of `f` [N] at `p` [m] (moving with `marker`): the transpose of its Jacobian times `f`.
-    pub fn add_point_force(&self, body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
-        let s = p - frame.position;
-        out[0] += f.x;
-        out[1] += f.y;
-        out[2] += cross(p - body.position, f);
-        let rows = self.rows(self.node(marker));
-        for i in 0..self.n_modes() {
-            out[3 + i] += f.dot(&Self::modal_column(body, rows, s, i));
-        }
-    }
-
-    /// Adds the generalised force of the moment `m` [N m] on the node's section: `m [0, 0, 1, Psi_a]`.
-    pub fn add_moment(&self, marker: &Marker, m: f64, out: &mut [f64]) {
-        self.add_marker_angle_jacobian(marker, m, out);
-    }
-
-    /// Values of scratch the mass solve needs: `m` ([`BodyMassSolve::work_len`]).
-    pub fn mass_scratch_len(&self) -> usize {
-        self.mass_solve.work_len()
     }
 
     /// `Mbar(eta)`, row-major `(3 + m)^2`, into `out`.
@@ -552,25 +467,6 @@ impl ModalBody {
         inv.inertia + 2.0 * dot(&inv.inertia_linear, eta) + quadratic
     }
 
-    /// `out = M(q)^-1 f`: `f` turned into the body frame, solved with `Mbar(eta)`
-    /// by its modal block factored once and the Schur complement of the frame's
-    /// coordinates ([`BodyMassSolve`], `scratch` of [`Self::mass_scratch_len`]
-    /// values), turned back. A mass that is not definite (a non-finite state)
-    /// gives NaN, which the engine reports.
-    pub fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
-        let (sin, cos) = q[2].sin_cos();
-        out.copy_from_slice(f);
-        out[0] = cos * f[0] + sin * f[1];
-        out[1] = -sin * f[0] + cos * f[1];
-        if !self.mass_solve.solve(&q[3..], out, scratch) {
-            out.fill(f64::NAN);
-            return;
-        }
-        let (x, y) = (out[0], out[1]);
-        out[0] = cos * x - sin * y;
-        out[1] = sin * x + cos * y;
-    }
-
     /// `p = Mbar(eta) u` over the `3 + m` body-frame velocities `u`.
     fn times_body_mass(&self, eta: &[f64], u: &[f64], p: &mut [f64]) {
         let (inv, m) = (&self.invariants, self.n_modes());
@@ -604,23 +500,6 @@ impl ModalBody {
         u[..v.len()].copy_from_slice(v);
         u[0] = cos * v[0] + sin * v[1];
         u[1] = -sin * v[0] + cos * v[1];
-    }
-
-    /// Adds the quadratic velocity vector, minus the elastic and damping forces, to `out`.
-    pub fn add_body_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]) {
-        let (n, m) = (self.n_coordinates(), self.n_modes());
-        let (mut qv, mut u) = ([0.0; MAX_COORDINATES], [0.0; MAX_COORDINATES]);
-        Self::body_velocities(q, v, &mut u[..n]);
-        self.quadratic_velocity_vector(&q[3..], &u[..n], &mut qv[..n]);
-        let (sin, cos) = q[2].sin_cos();
-        out[0] += cos * qv[0] - sin * qv[1];
-        out[1] += sin * qv[0] + cos * qv[1];
-        out[2] += qv[2];
-        let (eta, rates) = (&q[3..], &v[3..]);
-        for i in 0..m {
-            let row = i * m..(i + 1) * m;
-            out[3 + i] += qv[3 + i] - dot(&self.stiffness[row.clone()], eta) - dot(&self.damping[row], rates);
-        }
     }
 
     /// `dT/dq - M_dot q_dot` in body-frame components (`u` the body-frame
@@ -660,47 +539,17 @@ impl ModalBody {
         }
     }
 
-    /// Generalised gravity `-dV/dq`, `V = -g . (m R + A s(eta))`, `s = s_0 + S_t eta`.
-    pub fn add_gravity(&self, g: Vec2, q: &[f64], out: &mut [f64]) {
-        let (inv, m) = (&self.invariants, self.n_modes());
-        let (sin, cos) = q[2].sin_cos();
-        let g_body = Vec2::new(cos * g.x + sin * g.y, -sin * g.x + cos * g.y);
-        out[0] += inv.mass * g.x;
-        out[1] += inv.mass * g.y;
-        out[2] += cross(self.first_moment(&q[3..]), g_body);
-        for i in 0..m {
-            out[3 + i] += inv.first_moment_modes[i] * g_body.x + inv.first_moment_modes[m + i] * g_body.y;
-        }
-    }
-
     /// `s(eta) = s_0 + S_t eta` in the body frame [kg m].
     fn first_moment(&self, eta: &[f64]) -> Vec2 {
         let (inv, m) = (&self.invariants, self.n_modes());
         inv.first_moment + Vec2::new(dot(&inv.first_moment_modes[..m], eta), dot(&inv.first_moment_modes[m..], eta))
     }
 
-    /// Gravity's potential `-g . (m R + A s(eta))` plus the strain energy `eta^T K_ee eta / 2` [J].
-    pub fn potential_energy(&self, g: Vec2, q: &[f64]) -> f64 {
-        let m = self.n_modes();
-        let eta = &q[3..];
-        let (sin, cos) = q[2].sin_cos();
-        let s = self.first_moment(eta);
-        let centre = Vec2::new(q[0], q[1]) * self.invariants.mass + Vec2::new(cos * s.x - sin * s.y, sin * s.x + cos * s.y);
-        let strain: f64 = (0..m).map(|i| eta[i] * dot(&self.stiffness[i * m..(i + 1) * m], eta)).sum();
-        -g.dot(&centre) + 0.5 * strain
-    }
+}
 
-    /// `u^T Mbar(eta) u / 2` [J].
-    pub fn kinetic_energy(&self, q: &[f64], v: &[f64]) -> f64 {
-        let n = self.n_coordinates();
-        let (mut u, mut p) = ([0.0; MAX_COORDINATES], [0.0; MAX_COORDINATES]);
-        Self::body_velocities(q, v, &mut u[..n]);
-        self.times_body_mass(&q[3..], &u[..n], &mut p[..n]);
-        0.5 * dot(&u[..n], &p[..n])
-    }
-
+impl ModalBody {
     /// Channels: the frame's `x`, `y`, `angle` (as a rigid body's) and `eta1`, `eta2`, ... with their rates.
-    pub fn coordinate_channels(&self) -> Vec<CoordinateChannels> {
+    fn coordinate_channels(&self) -> Vec<CoordinateChannels> {
         let frame = [
             CoordinateChannels { position: channel("x", "m", "frame origin x"), velocity: channel("vx", "m/s", "frame origin velocity x"), acceleration: channel("ax", "m/s^2", "frame origin acceleration x") },
             CoordinateChannels { position: channel("y", "m", "frame origin y"), velocity: channel("vy", "m/s", "frame origin velocity y"), acceleration: channel("ay", "m/s^2", "frame origin acceleration y") },
@@ -714,6 +563,229 @@ impl ModalBody {
         });
         frame.into_iter().chain(modes).collect()
     }
+}
+
+impl BodyModel for ModalBody {
+    #[inline]
+    fn nq(&self) -> usize {
+        self.n_coordinates()
+    }
+
+    #[inline]
+    fn nv(&self) -> usize {
+        self.n_coordinates()
+    }
+
+    /// The body frame's pose and velocity from `(x, y, phi)` and their rates.
+    #[inline]
+    fn frame(&self, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        Frame::from_coordinates_after(previous, q, v)
+    }
+
+    /// A node's frame, or the body frame.
+    #[inline]
+    fn site_frame(&self, site: &Site, q: &[f64], v: &[f64], previous: &Frame) -> Frame {
+        match site {
+            Site::ModalNode(node) => self.node_frame(node.node as usize, q, v, previous),
+            Site::Reference | Site::Section(_) => self.frame(q, v, previous),
+        }
+    }
+
+    /// `scale d(v_P)/d(v)`: `scale [I, perp(P - R), A Phi_a + perp(s) Psi_a]`, rows x and y.
+    fn marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
+        let s = frame.rotate(marker.local);
+        let d = (frame.position + s - body.position) * scale;
+        jx[..3].copy_from_slice(&[scale, 0.0, -d.y]);
+        jy[..3].copy_from_slice(&[0.0, scale, d.x]);
+        let rows = self.rows(self.node(marker));
+        for i in 0..self.n_modes() {
+            let c = Self::modal_column(body, rows, s, i) * scale;
+            jx[3 + i] = c.x;
+            jy[3 + i] = c.y;
+        }
+    }
+
+    /// All `3 + m` coordinates.
+    fn marker_coordinates(&self, _marker: &Marker) -> Range<usize> {
+        0..self.n_coordinates()
+    }
+
+    /// Adds `along . d(v_P)/d(v)` to `out`.
+    fn add_marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
+        let s = frame.rotate(marker.local);
+        let d = frame.position + s - body.position;
+        out[0] += along.x;
+        out[1] += along.y;
+        out[2] += along.dot(&perp(d));
+        let rows = self.rows(self.node(marker));
+        for i in 0..self.n_modes() {
+            out[3 + i] += along.dot(&Self::modal_column(body, rows, s, i));
+        }
+    }
+
+    /// Adds `scale d(omega_P)/d(v)` = `scale [0, 0, 1, Psi_a]` to `out`.
+    fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]) {
+        out[2] += scale;
+        let (_, _, rt) = self.rows(self.node(marker));
+        for (o, r) in out[3..].iter_mut().zip(rt) {
+            *o += scale * r;
+        }
+    }
+
+    /// `omega^2 d + 2 omega perp(v_a - R_dot) - omega_a^2 s` [m/s^2]: the point's
+    /// acceleration at zero coordinate accelerations (`d` the node from the frame
+    /// origin, `v_a` its velocity, `omega_a` its section's rate, `s` the point from the node).
+    fn marker_bias_acceleration(&self, body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
+        let s = frame.rotate(marker.local);
+        let d = frame.position - body.position;
+        let omega = body.angular_velocity;
+        d * (omega * omega) + perp(frame.velocity - body.velocity) * (2.0 * omega) - s * (frame.angular_velocity * frame.angular_velocity)
+    }
+
+    /// None: the node's section angle `phi + Psi_a eta` is linear in the coordinates.
+    #[inline]
+    fn marker_bias_angular_acceleration(&self, _frame: &Frame, _marker: &Marker) -> f64 {
+        0.0
+    }
+
+    /// The bias acceleration plus the Jacobian times the accelerations `a` [m/s^2].
+    fn marker_acceleration(&self, body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
+        let s = frame.rotate(marker.local);
+        let d = frame.position + s - body.position;
+        let rows = self.rows(self.node(marker));
+        let modal: Vec2 = (0..self.n_modes()).map(|i| Self::modal_column(body, rows, s, i) * a[3 + i]).sum();
+        self.marker_bias_acceleration(body, frame, marker) + Vec2::new(a[0], a[1]) + perp(d) * a[2] + modal
+    }
+
+    /// `alpha + Psi_a eta_ddot` [rad/s^2].
+    fn marker_angular_acceleration(&self, _frame: &Frame, a: &[f64], marker: &Marker) -> f64 {
+        let (_, _, rt) = self.rows(self.node(marker));
+        a[2] + dot(rt, &a[3..])
+    }
+
+    /// Dependent on the modal amplitudes.
+    #[inline]
+    fn mass_block(&self) -> MassBlock<'_> {
+        MassBlock::ConfigurationDependent
+    }
+
+    /// Values of scratch the mass solve needs: `m` ([`BodyMassSolve::work_len`]).
+    fn mass_scratch_len(&self) -> usize {
+        self.mass_solve.work_len()
+    }
+
+    /// `out = M(q)^-1 f`: `f` turned into the body frame, solved with `Mbar(eta)`
+    /// by its modal block factored once and the Schur complement of the frame's
+    /// coordinates ([`BodyMassSolve`], `scratch` of [`Self::mass_scratch_len`]
+    /// values), turned back. A mass that is not definite (a non-finite state)
+    /// gives NaN, which the engine reports.
+    fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]) {
+        let (sin, cos) = q[2].sin_cos();
+        out.copy_from_slice(f);
+        out[0] = cos * f[0] + sin * f[1];
+        out[1] = -sin * f[0] + cos * f[1];
+        if !self.mass_solve.solve(&q[3..], out, scratch) {
+            out.fill(f64::NAN);
+            return;
+        }
+        let (x, y) = (out[0], out[1]);
+        out[0] = cos * x - sin * y;
+        out[1] = sin * x + cos * y;
+    }
+
+    /// The quadratic velocity vector, elastic and damping forces.
+    #[inline]
+    fn has_body_forces(&self) -> bool {
+        true
+    }
+
+    /// Adds the quadratic velocity vector, minus the elastic and damping forces, to `out`.
+    fn add_body_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]) {
+        let (n, m) = (self.n_coordinates(), self.n_modes());
+        let (mut qv, mut u) = ([0.0; MAX_COORDINATES], [0.0; MAX_COORDINATES]);
+        Self::body_velocities(q, v, &mut u[..n]);
+        self.quadratic_velocity_vector(&q[3..], &u[..n], &mut qv[..n]);
+        let (sin, cos) = q[2].sin_cos();
+        out[0] += cos * qv[0] - sin * qv[1];
+        out[1] += sin * qv[0] + cos * qv[1];
+        out[2] += qv[2];
+        let (eta, rates) = (&q[3..], &v[3..]);
+        for i in 0..m {
+            let row = i * m..(i + 1) * m;
+            out[3 + i] += qv[3 + i] - dot(&self.stiffness[row.clone()], eta) - dot(&self.damping[row], rates);
+        }
+    }
+
+    /// The frame's coordinates take the rigid motion; modal rates zero.
+    fn rigid_motion_velocities(&self, _q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]) {
+        v.fill(0.0);
+        v[..3].copy_from_slice(&[velocity.x, velocity.y, angular_velocity]);
+    }
+
+    /// Adds the generalised force of `f` [N] at `p` [m] (moving with `marker`): the transpose of its Jacobian times `f`.
+    fn add_point_force(&self, body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
+        let s = p - frame.position;
+        out[0] += f.x;
+        out[1] += f.y;
+        out[2] += cross(p - body.position, f);
+        let rows = self.rows(self.node(marker));
+        for i in 0..self.n_modes() {
+            out[3 + i] += f.dot(&Self::modal_column(body, rows, s, i));
+        }
+    }
+
+    /// Adds the generalised force of the moment `m` [N m] on the node's section: `m [0, 0, 1, Psi_a]`.
+    fn add_moment(&self, marker: &Marker, m: f64, out: &mut [f64]) {
+        self.add_marker_angle_jacobian(marker, m, out);
+    }
+
+    /// The weight's moment and modal loads turn with the frame.
+    fn gravity_load_is_constant(&self) -> bool {
+        false
+    }
+
+    /// Generalised gravity `-dV/dq`, `V = -g . (m R + A s(eta))`, `s = s_0 + S_t eta`.
+    fn add_gravity(&self, g: Vec3, q: &[f64], out: &mut [f64]) {
+        let (inv, m) = (&self.invariants, self.n_modes());
+        let (sin, cos) = q[2].sin_cos();
+        let g_body = Vec2::new(cos * g.x + sin * g.y, -sin * g.x + cos * g.y);
+        out[0] += inv.mass * g.x;
+        out[1] += inv.mass * g.y;
+        out[2] += cross(self.first_moment(&q[3..]), g_body);
+        for i in 0..m {
+            out[3 + i] += inv.first_moment_modes[i] * g_body.x + inv.first_moment_modes[m + i] * g_body.y;
+        }
+    }
+
+    /// Gravity's potential `-g . (m R + A s(eta))` plus the strain energy `eta^T K_ee eta / 2` [J].
+    fn potential_energy(&self, g: Vec3, q: &[f64]) -> f64 {
+        let m = self.n_modes();
+        let eta = &q[3..];
+        let (sin, cos) = q[2].sin_cos();
+        let s = self.first_moment(eta);
+        let centre = Vec2::new(q[0], q[1]) * self.invariants.mass + Vec2::new(cos * s.x - sin * s.y, sin * s.x + cos * s.y);
+        let strain: f64 = (0..m).map(|i| eta[i] * dot(&self.stiffness[i * m..(i + 1) * m], eta)).sum();
+        -Vec2::new(g.x, g.y).dot(&centre) + 0.5 * strain
+    }
+
+    /// `u^T Mbar(eta) u / 2` [J].
+    fn kinetic_energy(&self, q: &[f64], v: &[f64]) -> f64 {
+        let n = self.n_coordinates();
+        let (mut u, mut p) = ([0.0; MAX_COORDINATES], [0.0; MAX_COORDINATES]);
+        Self::body_velocities(q, v, &mut u[..n]);
+        self.times_body_mass(&q[3..], &u[..n], &mut p[..n]);
+        0.5 * dot(&u[..n], &p[..n])
+    }
+
+    fn position_channels(&self) -> Vec<ChannelName> {
+        position_channels_of(self.coordinate_channels())
+    }
+
+    fn velocity_channels(&self) -> Vec<(ChannelName, ChannelName)> {
+        velocity_channels_of(self.coordinate_channels())
+    }
+
+    embedded_in_the_plane!();
 }
 
 /// The modes of the reduced body held at its frame's reference conditions:

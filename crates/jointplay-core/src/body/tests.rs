@@ -4,7 +4,8 @@
 //! acceleration along a motion.
 
 use super::*;
-use crate::dynamics::frame::{BodyIndex, Frame};
+use crate::kinematics::marker::BodyIndex;
+use crate::kinematics::planar::Frame;
 
 fn bar() -> BodyKind {
     BodyKind::PlanarRigid(PlanarRigidBody::new(2.5, 0.03))
@@ -69,7 +70,7 @@ fn kinetic_energy_gravity_and_the_mass_solve_agree_with_the_mass_properties() {
     let expected: f64 = V.iter().zip(w).map(|(v, w)| 0.5 * v * v / w).sum();
     assert!((body.kinetic_energy(&Q, &V) - expected).abs() < 1e-14);
     // the gravity force is minus the gradient of its potential
-    let g = Vec2::new(0.5, -9.81);
+    let g = Vec3::new(0.5, -9.81, 0.0);
     let mut force = [0.0; 3];
     body.add_gravity(g, &Q, &mut force);
     let h = 1e-3;

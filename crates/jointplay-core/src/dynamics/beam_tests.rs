@@ -6,8 +6,10 @@
 //! beam against the same mechanism with a rigid link.
 
 use super::*;
-use crate::body::{BodyKind, Site};
-use crate::dynamics::frame::{Frame, Vec2};
+use crate::body::{BodyKind, BodyModel};
+use crate::kinematics::marker::Site;
+use crate::kinematics::planar::{Frame, Vec2};
+use crate::kinematics::spatial::Vec3;
 use crate::integrate::{IntegratorOptions, Method};
 use crate::spec::ModelSpec;
 
@@ -57,7 +59,7 @@ fn a_beam_marker_moves_as_its_jacobian_says_and_a_point_force_does_its_virtual_w
     let kind = &m.bodies[0].kind;
     let (q, v) = deformed(&m);
     let (_, marker) = m.points.iter().find(|(name, _)| name == "beam.P").unwrap().clone();
-    let marker = crate::dynamics::frame::Marker { local: Vec2::new(0.02, -0.015), ..marker };
+    let marker = crate::kinematics::marker::Marker { local: Vec2::new(0.02, -0.015), ..marker };
     let Site::Section(site) = marker.site else { panic!("a beam point has a section") };
     let point_at = |q: &[f64]| kind.site_frame(&marker.site, q, &v, &Frame::GROUND).point(marker.local);
     let frame = kind.site_frame(&marker.site, &q, &v, &Frame::GROUND);
@@ -121,7 +123,7 @@ fn the_mass_solve_inverts_the_assembled_element_masses_and_gives_the_kinetic_ene
     assert!((beam.mass() - 1.5 * 2.0).abs() < 1e-12);
     // gravity: its generalised force is minus the gradient of its potential energy
     let (q, _) = deformed(&m);
-    let g = Vec2::new(0.5, -9.81);
+    let g = Vec3::new(0.5, -9.81, 0.0);
     let mut weight = vec![0.0; n];
     m.bodies[0].kind.add_gravity(g, &q, &mut weight);
     let h = 1e-6;
@@ -138,7 +140,7 @@ fn the_mass_solve_inverts_the_assembled_element_masses_and_gives_the_kinetic_ene
 fn linear_momentum(beam: &crate::body::BeamBody, v: &[f64]) -> Vec2 {
     let mut momentum = Vec2::zeros();
     let mut weight = vec![0.0; v.len()];
-    beam.add_gravity(Vec2::new(1.0, 0.0), &mut weight);
+    beam.add_gravity(Vec3::new(1.0, 0.0, 0.0), &[], &mut weight);
     for (node, w) in v.chunks_exact(3).zip(weight.chunks_exact(3)) {
         // (the x-weight of a node is its share of the mass)
         momentum += Vec2::new(node[0], node[1]) * w[0];
@@ -218,7 +220,7 @@ fn the_spin_up_beam_stretches_as_the_centrifugal_closed_form_says() {
     let outcome = simulate(&m, &mut state, 17.0, &options, None);
     assert!(outcome.error.is_none(), "{:?}", outcome.error);
     let tr = &outcome.trajectory;
-    let tip = m.bodies[1].kind.coordinate_channels().len() / 3 - 1;
+    let tip = m.bodies[1].kind.position_channels().len() / 3 - 1;
     let (x, y) = (tr.channel(&format!("beam.node{tip}_x")).unwrap(), tr.channel(&format!("beam.node{tip}_y")).unwrap());
     let angle = tr.channel("hub.angle").unwrap();
     // the stretch along the hub's direction over the last 2 s (steady spin), averaged over the vibration the ramp left

@@ -3,9 +3,9 @@
 
 use std::ops::Range;
 
-use super::frame::cross;
+use crate::kinematics::planar::cross;
 use super::model::ElementKind;
-use crate::body::BodyKind;
+use crate::body::{BodyKind, BodyModel};
 use super::{Model, Workspace};
 
 /// Name, unit and meaning of one channel.

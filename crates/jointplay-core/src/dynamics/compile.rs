@@ -5,9 +5,11 @@ use std::collections::HashMap;
 
 use super::channels::{Channel, ChannelInfo, ChannelRead, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
-use super::frame::{perp, BodyIndex, Frame, Marker, Vec2};
+use crate::kinematics::marker::{BodyIndex, Marker, ModalNodeSite, Site};
+use crate::kinematics::planar::{perp, Frame, Vec2};
+use crate::kinematics::spatial::Vec3;
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
-use crate::body::{BodyKind, MassBlock, ModalNodeSite, PlanarRigidBody, Site};
+use crate::body::{BodyKind, BodyModel, MassBlock, PlanarRigidBody};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
@@ -79,7 +81,7 @@ impl<'s> Compiler<'s> {
             points: Vec::new(),
             sections: Vec::new(),
             gauges: Vec::new(),
-            gravity: Vec2::new(spec.gravity[0], spec.gravity[1]),
+            gravity: Vec3::new(spec.gravity[0], spec.gravity[1], 0.0),
             layout: Default::default(),
             constraints: Vec::new(),
             n_dynamic_constraints: 0,
@@ -669,14 +671,16 @@ impl<'s> Compiler<'s> {
     /// The position, velocity and acceleration channels the kind of body `k` declares.
     fn body_channels(&mut self, k: usize, name: &str) {
         let address = self.model.layout.bodies[k];
-        let coordinates = self.model.bodies[k].kind.coordinate_channels();
-        let sources = [Source::Coordinate as fn(usize) -> Source, Source::Velocity, Source::Acceleration];
-        for (which, source) in sources.into_iter().enumerate() {
-            for (i, c) in coordinates.iter().enumerate() {
-                let (quantity, unit, description) = [&c.position, &c.velocity, &c.acceleration][which];
-                let first = if which == 0 { address.q } else { address.v };
-                self.channel(name, quantity, unit, description.to_string(), source(first + i));
-            }
+        let kind = &self.model.bodies[k].kind;
+        let (positions, rates) = (kind.position_channels(), kind.velocity_channels());
+        for (i, (quantity, unit, description)) in positions.iter().enumerate() {
+            self.channel(name, quantity, unit, description.to_string(), Source::Coordinate(address.q + i));
+        }
+        for (i, ((quantity, unit, description), _)) in rates.iter().enumerate() {
+            self.channel(name, quantity, unit, description.to_string(), Source::Velocity(address.v + i));
+        }
+        for (i, (_, (quantity, unit, description))) in rates.iter().enumerate() {
+            self.channel(name, quantity, unit, description.to_string(), Source::Acceleration(address.v + i));
         }
     }
 

@@ -6,7 +6,7 @@
 
 use super::assembly_checks::{body_size, frames_at, mm, significant};
 use super::equations::{jacobian_times, linearise_constraints, update_frames};
-use super::frame::Frame;
+use crate::kinematics::planar::Frame;
 use super::{Model, Workspace};
 use crate::body::BodyKind;
 use crate::error::SimulationError;

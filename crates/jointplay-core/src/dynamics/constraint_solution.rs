@@ -26,6 +26,7 @@
 use super::constraint_jacobian::{dot, JacobianBlock};
 use super::model::SchurTerm;
 use super::{Model, Workspace};
+use crate::body::BodyModel;
 use crate::linalg::{cholesky_solve, RankDeficiency};
 
 /// Inverse penalty `eps` relative to the largest eigenvalue of `S`. Chosen by

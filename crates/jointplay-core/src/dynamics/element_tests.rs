@@ -3,7 +3,8 @@
 //! through the contract, and events and memory of several elements routed
 //! to their own element in a run.
 
-use super::frame::{BodyIndex, Frame};
+use crate::kinematics::marker::BodyIndex;
+use crate::kinematics::planar::Frame;
 use super::*;
 use crate::force::{ElementFault, ElementMemory, ElementWork, ForceElement};
 use crate::joint::ContactMemory;

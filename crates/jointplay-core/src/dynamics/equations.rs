@@ -9,7 +9,8 @@
 //! small system `(Phi_q M^-1 Phi_q^T) lambda = Phi_q M^-1 Q - gamma` and
 //! then `q_ddot = M^-1 (Q - Phi_q^T lambda)`.
 
-use super::frame::Frame;
+use crate::body::BodyModel;
+use crate::kinematics::planar::Frame;
 use super::generalised_force::GeneralisedForces;
 use super::constraint_solution;
 use super::{Model, Workspace};

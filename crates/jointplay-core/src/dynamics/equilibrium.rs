@@ -26,7 +26,8 @@ use nalgebra::{DMatrix, DVector};
 
 use super::assembly::assemble;
 use super::equations::{applied_forces, constraint_residuals, jacobian_transpose_times, linearise_constraints, update_frames};
-use super::frame::{Frame, Vec2};
+use crate::body::BodyModel;
+use crate::kinematics::planar::{Frame, Vec2};
 use super::state::State;
 use super::{Model, Workspace};
 use crate::error::SimulationError;

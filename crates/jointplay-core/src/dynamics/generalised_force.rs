@@ -1,7 +1,10 @@
 //! The generalised applied force `Q` being assembled, seen by elements:
 //! they add point forces and moments at markers and never index coordinates.
 
-use super::frame::{Frame, Marker, Vec2};
+use crate::body::BodyModel;
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::{Frame, Vec2};
+use crate::kinematics::spatial::Vec3;
 use super::layout::StateLayout;
 use super::model::Body;
 
@@ -42,7 +45,7 @@ impl<'a> GeneralisedForces<'a> {
     }
 
     /// Adds uniform gravity `g` [m/s^2] on every body at the positions `q`.
-    pub fn add_gravity(&mut self, g: Vec2, q: &[f64]) {
+    pub fn add_gravity(&mut self, g: Vec3, q: &[f64]) {
         for (body, address) in self.bodies.iter().zip(&self.layout.bodies) {
             body.kind.add_gravity(g, &q[address.q_range()], &mut self.values[address.v_range()]);
         }

@@ -23,10 +23,11 @@
 
 use super::constraint_solution;
 use super::equations::{jacobian_times, jacobian_transpose_times, update_frames};
-use super::frame::{Frame, Marker};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::Frame;
 use super::generalised_force::GeneralisedForces;
 use super::{Model, Workspace};
-use crate::body::BodyKind;
+use crate::body::{BodyKind, BodyModel};
 use crate::error::SimulationError;
 use crate::force::{ElementMemory, ElementWork, ForceElement};
 

@@ -5,6 +5,7 @@
 //! right-hand side (equal where A = M^-1, different by exactly the neglected
 //! terms under constraints), and runs with it against runs with forward differences.
 
+use crate::body::BodyModel;
 use super::beam_tests::{deformed, free_beam, model, slider_crank, spin_up_beam};
 use super::equations::{applied_forces, constrained_accelerations, update_frames};
 use super::jacobian::{Contribution, StructuredJacobian};
@@ -65,13 +66,13 @@ pub(super) fn mixed_state(m: &Model) -> Vec<f64> {
         rate[2] += -0.4 * (0.5 * k as f64).sin();
     }
     // the journal centre (block.J) onto the bearing's (the beam's end section) plus clearance and 5 um along x
-    let mut frames = vec![frame::Frame::GROUND; m.n_frames()];
+    let mut frames = vec![crate::kinematics::planar::Frame::GROUND; m.n_frames()];
     let (q, v, _) = m.layout.split(&y);
     update_frames(m, q, v, &mut frames);
     let (_, bearing) = m.points.iter().find(|(name, _)| name == "arm.end").unwrap();
     let (_, journal) = m.points.iter().find(|(name, _)| name == "block.J").unwrap();
     let centre = frames[bearing.frame].point(bearing.local);
-    let target = centre + frame::Vec2::new(1e-3 + 5e-6, 0.0);
+    let target = centre + crate::kinematics::planar::Vec2::new(1e-3 + 5e-6, 0.0);
     let offset = target - frames[journal.frame].point(journal.local);
     y[block.q] += offset.x;
     y[block.q + 1] += offset.y;
@@ -397,7 +398,7 @@ fn the_spin_up_beam_with_the_structured_jacobian_follows_the_finite_difference_r
     // axial vibration's phase error: 900 N apart here, 1200 N at 1.01 rtol; not compared.)
     let m = spin_up_beam(6.0, 4, 0.0);
     let integrator = IntegratorOptions { method: Method::NumericalDifferentiation, rtol: 1e-5, atol: 1e-7, output_step: Some(0.02), max_order: 2, ..IntegratorOptions::default() };
-    let tip = m.bodies[1].kind.coordinate_channels().len() / 3 - 1;
+    let tip = m.bodies[1].kind.position_channels().len() / 3 - 1;
     let (x, y) = (format!("beam.node{tip}_x"), format!("beam.node{tip}_y"));
     compare_runs("spin-up beam", &m, 17.0, integrator, Stabilization::Baumgarte { alpha: 10.0, beta: 10.0 }, &[&x, &y], &[5e-3, 5e-3]);
 }

@@ -6,8 +6,8 @@
 
 use std::ops::Range;
 
-use super::frame::BodyIndex;
-use crate::body::BodyKind;
+use crate::kinematics::marker::BodyIndex;
+use crate::body::{BodyKind, BodyModel};
 
 /// Addresses of one body's coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

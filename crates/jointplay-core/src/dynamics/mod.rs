@@ -19,7 +19,6 @@ mod equations;
 mod extrema;
 mod extrema_summary;
 mod formulation_choice;
-pub mod frame;
 mod generalised_force;
 mod jacobian;
 pub mod joint_coordinates;

@@ -5,8 +5,9 @@
 
 use super::beam_tests::model;
 use super::*;
-use crate::body::{BodyKind, ModalNodeSite, Site};
-use crate::dynamics::frame::{Frame, Vec2};
+use crate::body::{BodyKind, BodyModel};
+use crate::kinematics::marker::{ModalNodeSite, Site};
+use crate::kinematics::planar::{Frame, Vec2};
 use crate::integrate::{IntegratorOptions, Method};
 use nalgebra::DMatrix;
 

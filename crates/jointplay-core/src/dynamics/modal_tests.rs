@@ -9,8 +9,9 @@
 
 use super::beam_tests::{model, run_slider_crank, spin_up_beam};
 use super::*;
-use crate::body::{BodyKind, ModalNodeSite, Site};
-use crate::dynamics::frame::{Frame, Vec2};
+use crate::body::{BodyKind, BodyModel};
+use crate::kinematics::marker::{ModalNodeSite, Site};
+use crate::kinematics::planar::{Frame, Vec2};
 use crate::integrate::{IntegratorOptions, Method};
 
 /// The section of the free-flight and cantilever tests: EA, GA, EI, rho A, rho I.

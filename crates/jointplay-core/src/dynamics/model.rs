@@ -1,11 +1,13 @@
 //! The compiled, immutable description of a mechanism.
 
 use super::channels::{Channel, ChannelRead};
-use super::frame::{BodyIndex, Frame, Marker, Vec2};
+use crate::kinematics::marker::{BodyIndex, Marker, SectionSite, Site};
+use crate::kinematics::planar::{Frame, Vec2};
+use crate::kinematics::spatial::Vec3;
 use super::joint_coordinates::JointTree;
 use super::constraint_jacobian::JacobianPattern;
 use super::layout::StateLayout;
-use crate::body::{BodyKind, SectionSite, Site};
+use crate::body::{BodyKind, BodyModel};
 use crate::force::{ElementMemory, ForceElement, OutputInfo};
 use crate::joint::{ClearanceRevolute, Constraint};
 use crate::linalg::PatternLdl;
@@ -120,8 +122,8 @@ pub struct Model {
     pub gauges: Vec<StrainGauge>,
     /// Where every body's coordinates and every element's states sit in `y = [q, v, z]`.
     pub layout: StateLayout,
-    /// Gravitational acceleration [m/s^2].
-    pub gravity: Vec2,
+    /// Gravitational acceleration [m/s^2] (planar bodies feel its in-plane part).
+    pub gravity: Vec3,
     /// The diagonal of `M^-1` over all velocity coordinates when every body's
     /// mass block is constant and diagonal (a fast path of [`Self::solve_mass`]
     /// and of the constraint matrix); `None` otherwise [1/kg, 1/(kg m^2)].

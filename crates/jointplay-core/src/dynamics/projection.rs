@@ -16,6 +16,7 @@ const SINGULAR_ITERATIONS: usize = 40;
 
 /// Factor on the position tolerance a projection at a singular position may leave (see [`singular_stagnation`]).
 const SINGULAR_TOLERANCE_FACTOR: f64 = 1e3;
+use crate::body::BodyModel;
 use crate::error::SimulationError;
 
 /// Newton on `Phi(q, t) = 0` for the first `n_constraints` constraints.

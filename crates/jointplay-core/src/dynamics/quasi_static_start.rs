@@ -25,11 +25,11 @@ use nalgebra::{DMatrix, DVector};
 
 use super::equations::{accelerations, constraint_residuals, update_frames, Stabilization};
 use super::equilibrium::Linearisation;
-use super::frame::Vec2;
+use crate::kinematics::planar::Vec2;
 use super::model::VelocityStart;
 use super::rigid_motion_start::{follow_rigid_motion, free_rigid_motions};
 use super::{Model, Workspace};
-use crate::body::BodyKind;
+use crate::body::{BodyKind, BodyModel};
 use crate::error::SimulationError;
 use crate::force::ElementMemory;
 

@@ -17,11 +17,11 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::equations::jacobian_times;
-use super::frame::Vec2;
+use crate::kinematics::planar::Vec2;
 use super::model::VelocityStart;
 use super::projection::velocity_residuals;
 use super::{Model, Workspace};
-use crate::body::BodyKind;
+use crate::body::{BodyKind, BodyModel};
 use crate::error::SimulationError;
 
 /// Singular values of `A L^-T` below this fraction of the largest are dropped

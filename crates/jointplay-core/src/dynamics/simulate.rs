@@ -7,7 +7,7 @@ use super::equations::{update_frames, Stabilization};
 use super::formulation_choice::{choose_formulation, FormulationChoice};
 use super::joint_coordinates::{self, Formulation, JointTree};
 use super::extrema::ExtremaTracker;
-use super::frame::Marker;
+use crate::kinematics::marker::Marker;
 use super::extrema_summary::{is_peak_unit, Extrema, JointToSummarize};
 use super::system::{MechanismSystem, StepEndCache, Tracking};
 use super::{Model, Progress, State, Workspace};

@@ -8,7 +8,7 @@ use super::extrema::{ExtremaTracker, StepProbe};
 use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
 use super::joint_coordinates::{self, joint_accelerations, JointTree};
-use super::frame::Marker;
+use crate::kinematics::marker::Marker;
 use super::jacobian::StructuredJacobian;
 use super::newton_parts;
 use super::projection::{project_positions, project_velocities};
@@ -16,7 +16,7 @@ use super::simulate::{Diagnostics, SimulationOptions};
 use super::{Model, Progress, Workspace};
 use crate::error::SimulationError;
 use crate::force::{ElementFault, ElementMemory};
-use crate::body::BodyKind;
+use crate::body::{BodyKind, BodyModel};
 use crate::integrate::{JacobianCost, NewtonParts, NewtonStructure, OdeSystem, SystemJacobian};
 
 /// Newton iterations allowed when projecting after a step: the drift of one

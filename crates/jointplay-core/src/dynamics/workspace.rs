@@ -1,7 +1,8 @@
 //! Scratch buffers reused by every evaluation so that the right-hand side
 //! never allocates.
 
-use super::frame::Frame;
+use crate::body::BodyModel;
+use crate::kinematics::planar::Frame;
 use super::jacobian::StructuredJacobian;
 use super::joint_coordinates::JointWorkspace;
 use super::Model;

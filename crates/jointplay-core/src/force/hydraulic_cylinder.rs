@@ -5,7 +5,8 @@
 //! `docs/theory/hydraulic-cylinder.md`.
 
 use super::ForceOutput;
-use crate::dynamics::frame::{Frame, Marker};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
 use crate::hydraulic::{CylinderFault, HydraulicCylinder};
 use crate::motion::TimeFunction;
@@ -32,9 +33,9 @@ pub struct CylinderActuator {
 /// The attachment line at one instant.
 struct Line {
     /// Unit vector from the first attachment to the second [-].
-    direction: crate::dynamics::frame::Vec2,
+    direction: crate::kinematics::planar::Vec2,
     /// Attachment points [m].
-    points: [crate::dynamics::frame::Vec2; 2],
+    points: [crate::kinematics::planar::Vec2; 2],
     /// Stroke s [m].
     stroke: f64,
     /// Stroke rate ds/dt [m/s].
@@ -59,7 +60,7 @@ impl CylinderActuator {
         let d = points[1] - points[0];
         let length = d.norm();
         // (coincident attachments: no direction; the compiler refuses a zero retracted length)
-        let direction = if length > 0.0 { d / length } else { crate::dynamics::frame::Vec2::zeros() };
+        let direction = if length > 0.0 { d / length } else { crate::kinematics::planar::Vec2::zeros() };
         let relative = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
         Line { direction, points, stroke: length - self.retracted_length, stroke_rate: direction.dot(&relative) }
     }

@@ -22,10 +22,10 @@ pub use rotational_spring_damper::RotationalSpringDamper;
 pub use spring_damper::SpringDamper;
 pub use torque::AppliedTorque;
 
-use crate::dynamics::frame::BodyIndex;
+use crate::kinematics::marker::BodyIndex;
 use crate::error::SimulationError;
 use crate::joint::{ClearanceRevolute, ClearanceWork, ContactMemory};
-use crate::dynamics::frame::Frame;
+use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
 
 /// Most outputs a force element without its own evaluation record reports.

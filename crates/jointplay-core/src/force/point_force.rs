@@ -1,7 +1,8 @@
 //! A prescribed force at a body point, global components as functions of time.
 
 use super::ForceOutput;
-use crate::dynamics::frame::{Frame, Marker, Vec2};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::{Frame, Vec2};
 use crate::dynamics::GeneralisedForces;
 use crate::motion::TimeFunction;
 

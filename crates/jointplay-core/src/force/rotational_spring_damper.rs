@@ -4,7 +4,8 @@
 //! `theta = phi_j - phi_i`; the first body gets `-T`.
 
 use super::ForceOutput;
-use crate::dynamics::frame::{Frame, Marker};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
 
 /// Torsional spring and damper.

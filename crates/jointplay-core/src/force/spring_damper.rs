@@ -2,7 +2,8 @@
 //! tension `F = k (l - l0) + c l_dot`, pulling the points together.
 
 use super::ForceOutput;
-use crate::dynamics::frame::{Frame, Marker};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
 
 /// Point-to-point spring and damper.

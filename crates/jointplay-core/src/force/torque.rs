@@ -2,7 +2,7 @@
 //! model files name it) as a function of time.
 
 use super::ForceOutput;
-use crate::dynamics::frame::Marker;
+use crate::kinematics::marker::Marker;
 use crate::dynamics::GeneralisedForces;
 use crate::motion::TimeFunction;
 

@@ -4,7 +4,8 @@
 //! along the axis it is the displacement driver of that joint.
 
 use super::{ConstraintRows, MarkerLoad, Target};
-use crate::dynamics::frame::{perp, Marker, Frame, Vec2};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::{perp, Frame, Vec2};
 
 /// Projection of the point-to-point vector on a body-fixed direction is prescribed.
 #[derive(Clone, Debug, PartialEq)]

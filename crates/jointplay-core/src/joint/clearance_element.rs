@@ -7,7 +7,8 @@
 //! [`super::clearance_revolute`] and [`super::lubricated_film`].
 
 use super::{ClearanceRevolute, ContactEvaluation, FilmEvaluation, Lubrication};
-use crate::dynamics::frame::{BodyIndex, Frame};
+use crate::kinematics::marker::BodyIndex;
+use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
 use crate::force::{Acceptance, ElementFault, OutputInfo};
 use crate::lubrication::reynolds::ReynoldsSolver;

@@ -11,7 +11,8 @@
 //! the opposite force at `Q_i`.
 
 use crate::contact::{ContactStiffness, NormalForceLaw};
-use crate::dynamics::frame::{perp, Marker, Frame, Vec2};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::{perp, Frame, Vec2};
 use crate::friction::FrictionLaw;
 
 /// A dry revolute clearance joint.

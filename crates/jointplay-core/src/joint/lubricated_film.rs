@@ -7,7 +7,7 @@
 //! and the shear torque `T_j` acts on the journal; the massless film's
 //! moment balance gives the bearing `-(T_j + e x F)`.
 
-use crate::dynamics::frame::{cross, Frame, Vec2};
+use crate::kinematics::planar::{cross, Frame, Vec2};
 use crate::lubrication::squeeze_film::SqueezeFilm;
 use crate::lubrication::transition::{LubricationRegime, TransitionLaw};
 use std::sync::Arc;
@@ -118,8 +118,8 @@ impl Lubrication {
     pub fn apply(
         evaluation: &FilmEvaluation,
         forces: &mut crate::dynamics::GeneralisedForces,
-        bearing: (&Frame, &crate::dynamics::frame::Marker, Vec2),
-        journal: (&Frame, &crate::dynamics::frame::Marker, Vec2),
+        bearing: (&Frame, &crate::kinematics::marker::Marker, Vec2),
+        journal: (&Frame, &crate::kinematics::marker::Marker, Vec2),
     ) {
         let f = evaluation.force_on_journal;
         let e = journal.2 - bearing.2;

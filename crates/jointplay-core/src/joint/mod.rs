@@ -19,7 +19,9 @@ pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication};
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
 
-use crate::dynamics::frame::{BodyIndex, Frame, Marker, Vec2};
+use crate::body::BodyModel;
+use crate::kinematics::marker::{BodyIndex, Marker};
+use crate::kinematics::planar::{Frame, Vec2};
 use crate::dynamics::{Body, JacobianPattern};
 use crate::motion::{MotionSample, TimeFunction};
 

@@ -2,7 +2,8 @@
 //! the fixed joint, and the temporary lock of a clearance joint at assembly.
 
 use super::{ConstraintRows, MarkerLoad};
-use crate::dynamics::frame::{Marker, Frame, Vec2};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::{Frame, Vec2};
 
 /// Two body points held at a constant global offset (zero for a revolute joint).
 #[derive(Clone, Debug, PartialEq)]

@@ -3,7 +3,8 @@
 //! revolute joint.
 
 use super::{ConstraintRows, MarkerLoad, Target};
-use crate::dynamics::frame::{Frame, Marker, Vec2};
+use crate::kinematics::marker::Marker;
+use crate::kinematics::planar::{Frame, Vec2};
 
 /// The angle of the second frame relative to the first is prescribed.
 #[derive(Clone, Debug, PartialEq)]

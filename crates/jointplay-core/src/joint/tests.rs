@@ -5,7 +5,8 @@
 
 use super::*;
 use crate::body::{BodyKind, PlanarRigidBody};
-use crate::dynamics::frame::{cross, BodyIndex, Marker, Frame, Vec2};
+use crate::kinematics::marker::{BodyIndex, Marker};
+use crate::kinematics::planar::{cross, Frame, Vec2};
 use crate::dynamics::{Body, JacobianPattern, MarkerColumns};
 use crate::motion::{Sine, TimeFunction};
 

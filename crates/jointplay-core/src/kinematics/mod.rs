@@ -1,8 +1,8 @@
 //! The kinematic vocabulary every body and element speaks: poses with an
-//! orientation, their velocities (twists), the loads they carry (wrenches)
-//! and the rotation conventions.
+//! orientation, their velocities (twists), the loads they carry (wrenches),
+//! markers and the rotation conventions.
 //!
-//! The vocabulary is spatial. Planar bodies keep a planar [`crate::dynamics::frame::Frame`]
+//! The vocabulary is spatial. Planar bodies keep a planar [`planar::Frame`]
 //! (their fast path) and are embedded in it as Drake embeds its planar joint in a
 //! 3D plant: they move in the plane `z = 0` and turn about `z`
 //! ([`spatial::SpatialFrame::from_planar`]), so a spatial element works on any body.
@@ -12,6 +12,8 @@
 //! (Hamilton product, active rotation, body to global).
 
 pub mod euler;
+pub mod marker;
+pub mod planar;
 pub mod quaternion;
 pub mod spatial;
 pub mod wrench;

@@ -2,7 +2,7 @@
 
 use nalgebra::{Matrix3, Vector3};
 
-use crate::dynamics::frame::Frame;
+use super::planar::Frame;
 
 /// 3D vector [m, m/s, N, ...].
 pub type Vec3 = Vector3<f64>;
@@ -121,7 +121,7 @@ mod tests {
     fn embedded_planar_frame_moves_points_as_the_planar_frame() {
         let planar = Frame::from_coordinates(&[0.3, -0.1, 0.7], &[1.5, -2.0, 3.0]);
         let spatial = SpatialFrame::from_planar(&planar);
-        let s = crate::dynamics::frame::Vec2::new(0.2, -0.4);
+        let s = crate::kinematics::planar::Vec2::new(0.2, -0.4);
         let (p, v) = (planar.point(s), planar.point_velocity(s));
         let (p3, v3) = (spatial.point(Vec3::new(s.x, s.y, 0.05)), spatial.point_velocity(Vec3::new(s.x, s.y, 0.05)));
         assert!((p3 - Vec3::new(p.x, p.y, 0.05)).norm() < 1e-15);

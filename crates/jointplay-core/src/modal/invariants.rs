@@ -28,7 +28,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::NodalCoordinates;
-use crate::dynamics::frame::Vec2;
+use crate::kinematics::planar::Vec2;
 
 /// The invariants of one body, matrices row-major.
 #[derive(Clone, Debug, PartialEq)]

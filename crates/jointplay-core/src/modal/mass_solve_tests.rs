@@ -8,8 +8,8 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::beam::{BeamSection, ElementOrder};
-use crate::body::{BeamBody, BeamMesh, BodyKind, ModalBody};
-use crate::dynamics::frame::Vec2;
+use crate::body::{BeamBody, BeamMesh, BodyKind, BodyModel, ModalBody};
+use crate::kinematics::planar::Vec2;
 use crate::modal::{BodyMassSolve, FrameReference, InertiaInvariants, NodalCoordinates};
 
 /// A 1 m beam (EI = 100 N m^2, rho A = 2 kg/m) of `elements` quadratic elements along (0.6, 0.8).

@@ -8,8 +8,10 @@
 use nalgebra::DMatrix;
 
 use crate::beam::{BeamSection, ElementOrder};
-use crate::body::{BeamBody, BeamMesh, BodyKind, ModalBody, ModalNodeSite, Site};
-use crate::dynamics::frame::{BodyIndex, Frame, Marker, Vec2};
+use crate::body::{BeamBody, BeamMesh, BodyKind, BodyModel, ModalBody};
+use crate::kinematics::marker::{BodyIndex, Marker, ModalNodeSite, Site};
+use crate::kinematics::planar::{Frame, Vec2};
+use crate::kinematics::spatial::Vec3;
 use crate::modal::{FrameReference, NodalCoordinates};
 
 /// A 1 m beam (EI = 100 N m^2, rho A = 2 kg/m) of `elements` quadratic elements, placed at an angle.
@@ -191,7 +193,7 @@ fn the_body_forces_are_lagranges_velocity_terms_minus_the_elastic_force() {
     kind.add_body_forces(&q, &v, &mut got);
     for k in 0..n {
         let kinetic = (kind.kinetic_energy(&shifted(k, h), &v) - kind.kinetic_energy(&shifted(k, -h), &v)) / (2.0 * h);
-        let strain = (kind.potential_energy(Vec2::zeros(), &shifted(k, h)) - kind.potential_energy(Vec2::zeros(), &shifted(k, -h))) / (2.0 * h);
+        let strain = (kind.potential_energy(Vec3::zeros(), &shifted(k, h)) - kind.potential_energy(Vec3::zeros(), &shifted(k, -h))) / (2.0 * h);
         let expected = kinetic - m_dot_v[k] - strain;
         assert!((got[k] - expected).abs() < 1e-5 * expected.abs().max(1.0), "coordinate {k}: {} vs {expected}", got[k]);
     }
@@ -200,7 +202,7 @@ fn the_body_forces_are_lagranges_velocity_terms_minus_the_elastic_force() {
 #[test]
 fn gravity_is_minus_the_gradient_of_its_potential() {
     let (kind, q, _) = moving_body();
-    let g = Vec2::new(0.5, -9.81);
+    let g = Vec3::new(0.5, -9.81, 0.0);
     let mut weight = vec![0.0; q.len()];
     kind.add_gravity(g, &q, &mut weight);
     let h = 1e-6;
@@ -208,7 +210,7 @@ fn gravity_is_minus_the_gradient_of_its_potential() {
         let (mut plus, mut minus) = (q.clone(), q.clone());
         plus[k] += h;
         minus[k] -= h;
-        let gravity = |q: &[f64]| kind.potential_energy(g, q) - kind.potential_energy(Vec2::zeros(), q);
+        let gravity = |q: &[f64]| kind.potential_energy(g, q) - kind.potential_energy(Vec3::zeros(), q);
         let gradient = (gravity(&plus) - gravity(&minus)) / (2.0 * h);
         assert!((gradient + weight[k]).abs() < 1e-7, "coordinate {k}: {} vs {}", weight[k], -gradient);
     }

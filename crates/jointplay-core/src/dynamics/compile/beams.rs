@@ -2,7 +2,7 @@
 
 use crate::beam::{BeamMaterial, BeamSection, ElementOrder, SectionShape};
 use crate::body::{BeamBody, BeamMesh};
-use crate::dynamics::frame::Vec2;
+use crate::kinematics::planar::Vec2;
 use crate::error::ModelErrors;
 use crate::spec::{BeamMaterialSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec};
 

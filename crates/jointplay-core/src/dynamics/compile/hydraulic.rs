@@ -1,7 +1,7 @@
 //! Building a hydraulic cylinder element from its description.
 
 use super::laws::build_function;
-use crate::dynamics::frame::Marker;
+use crate::kinematics::marker::Marker;
 use crate::error::ModelErrors;
 use crate::force::CylinderActuator;
 use crate::friction::LugreFriction;

@@ -18,7 +18,7 @@
 //! absolute angle, so its `s_dot` is `sigma (theta_dot_k - omega_p)`.
 
 use super::tree::{EdgeCoordinate, EdgeJoint, JointTree, TreeEdge, ANY_DOFS};
-use crate::dynamics::frame::{perp, Frame, Vec2};
+use crate::kinematics::planar::{perp, Frame, Vec2};
 
 /// The joint's relative coordinate `s` (revolute: `phi_second - phi_first`),
 /// its rate and, when driven, its acceleration at `t`. The coordinate of a

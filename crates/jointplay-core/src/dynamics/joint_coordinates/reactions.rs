@@ -14,7 +14,7 @@
 //! on the element's second body at its joint point.
 
 use super::tree::{EdgeJoint, JointTree, TreeEdge};
-use crate::dynamics::frame::{cross, Frame, Vec2};
+use crate::kinematics::planar::{cross, Frame, Vec2};
 use crate::dynamics::model::IdealElement;
 use crate::dynamics::{Model, Workspace};
 

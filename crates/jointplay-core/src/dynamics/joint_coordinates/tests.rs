@@ -7,7 +7,7 @@
 //! joint axis that turns with its body).
 
 use super::*;
-use crate::dynamics::frame::Frame;
+use crate::kinematics::planar::Frame;
 use crate::dynamics::{assemble, compile, simulate, Model, SimulationOptions, Workspace};
 use crate::integrate::IntegratorOptions;
 use crate::spec::ModelSpec;

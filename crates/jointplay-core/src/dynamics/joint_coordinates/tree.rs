@@ -2,7 +2,8 @@
 //! the coordinate that joint contributes, found from the compiled elements.
 
 use crate::body::BodyKind;
-use crate::dynamics::frame::{BodyIndex, Marker, Vec2};
+use crate::kinematics::marker::{BodyIndex, Marker};
+use crate::kinematics::planar::Vec2;
 use crate::dynamics::model::{ElementKind, Model};
 use crate::joint::{ConstraintKind, Target};
 use crate::motion::TimeFunction;

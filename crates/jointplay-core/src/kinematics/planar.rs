@@ -1,56 +1,11 @@
-//! Position and velocity of a body frame, evaluated once per right-hand side,
-//! and markers (points with a frame on a body).
+//! The planar vocabulary: vectors of the plane and the pose and velocity of a
+//! planar frame, the planar bodies' fast path (embedded in space by
+//! [`super::spatial::SpatialFrame::from_planar`]).
 
 use nalgebra::Vector2;
 
-use crate::body::Site;
-
 /// 2D vector [m, m/s, N, ...].
 pub type Vec2 = Vector2<f64>;
-
-/// Index of a body in a model; 0 is the ground.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct BodyIndex(pub usize);
-
-impl BodyIndex {
-    /// The fixed frame.
-    pub const GROUND: BodyIndex = BodyIndex(0);
-
-    /// True for the ground.
-    pub fn is_ground(self) -> bool {
-        self.0 == 0
-    }
-}
-
-/// A marker: a point of a body and a frame there; what joints, force
-/// elements, sensors and channels attach to (they never index coordinates:
-/// a body kind turns a marker into a pose, a velocity and a Jacobian, see
-/// [`crate::body::BodyKind`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Marker {
-    /// The body it belongs to.
-    pub body: BodyIndex,
-    /// Index of its frame among the frames of an evaluation: the body's own
-    /// (`body.0`) at the body's reference site, else a section frame of a
-    /// flexible body (after the bodies' frames, see `Model::sections`).
-    pub frame: usize,
-    /// Where its frame is on the body.
-    pub site: Site,
-    /// Coordinates of the point in that frame [m].
-    pub local: Vec2,
-}
-
-impl Marker {
-    /// The point `local` [m] of `body`'s reference frame.
-    pub const fn at(body: BodyIndex, local: Vec2) -> Self {
-        Self { body, frame: body.0, site: Site::Reference, local }
-    }
-
-    /// The origin of `body`'s reference frame.
-    pub const fn reference(body: BodyIndex) -> Self {
-        Self::at(body, Vec2::new(0.0, 0.0))
-    }
-}
 
 /// `perp(v)`: `v` turned by +90 degrees, so that `d(A s)/dphi = perp(A s)`
 /// and `omega x v = omega perp(v)`.
