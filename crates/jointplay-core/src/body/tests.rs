@@ -1,10 +1,12 @@
 //! The body contract checked against what it must equal independently of
 //! its code: finite differences of the marker position, the virtual work of
 //! a point force, `v^T M v / 2` from the inverse mass, and the point
-//! acceleration along a motion.
+//! acceleration along a motion; the planar kinds' spatial answers (a rigid
+//! body, a beam's section, a modal body's node) against their planar ones and
+//! against finite differences and the virtual power of their embedded frames.
 
 use super::*;
-use crate::kinematics::marker::BodyIndex;
+use crate::kinematics::marker::{BodyIndex, MarkerFrames, Site, SpatialMarker};
 use crate::kinematics::planar::Frame;
 
 fn bar() -> BodyKind {
@@ -126,5 +128,210 @@ fn a_slender_beam_body_has_the_euler_bernoulli_natural_frequencies() {
     }
     for (k, beta) in FREE_FREE_BETA_L.iter().enumerate() {
         assert!((free[k] / (beta * beta * unit) - 1.0).abs() < 2e-3, "free-free mode {}: {} Hz", k + 1, free[k]);
+    }
+}
+
+/// One planar kind with a spatial marker on one of its sites, at a state away
+/// from special values: positions `q`, velocities `v`, accelerations `a`.
+struct EmbeddedCase {
+    name: &'static str,
+    kind: BodyKind,
+    marker: SpatialMarker,
+    q: Vec<f64>,
+    v: Vec<f64>,
+    a: Vec<f64>,
+}
+
+/// A marker 0.04 m above the plane with axes turned off the body's.
+fn spatial_marker(site: Site, local: Vec2) -> SpatialMarker {
+    let axes = *nalgebra::Rotation3::from_axis_angle(&nalgebra::Vector3::y_axis(), 0.4).matrix();
+    SpatialMarker { body: BodyIndex(1), frame: 1, site, local: Vec3::new(local.x, local.y, 0.04), axes }
+}
+
+/// Values of `n` coordinates away from special values, of amplitude `scale`.
+fn wavy(n: usize, phase: f64, scale: f64) -> Vec<f64> {
+    (0..n).map(|k| scale * (phase + 1.7 * k as f64).sin()).collect()
+}
+
+/// A rigid body, a section of a beam within its second element and a node of a modal body.
+fn embedded_cases() -> Vec<EmbeddedCase> {
+    use crate::beam::{BeamSection, ElementOrder};
+    use crate::kinematics::marker::ModalNodeSite;
+    use crate::modal::FrameReference;
+    let section = BeamSection { axial_stiffness: 2.0e6, shear_stiffness: 8.0e5, bending_stiffness: 100.0, mass_per_length: 2.0, rotary_inertia_per_length: 1.0e-4 };
+    let mesh = BeamMesh { order: ElementOrder::Quadratic, elements: 3 };
+    let beam = BeamBody::straight(Vec2::new(0.3, -0.2), Vec2::new(0.9, 0.6), section, mesh, 0.0).unwrap();
+    let site = beam.site_at(0.47).unwrap();
+    // (the beam's nodes moved off the straight line, so that its sections turn and stretch)
+    let beam_q: Vec<f64> = beam.reference_coordinates().iter().zip(wavy(beam.n_coordinates(), 0.3, 0.02)).map(|(q, d)| q + d).collect();
+    let n_beam = beam.n_coordinates();
+    let (modal, pose) = ModalBody::from_beam(&beam, &[0, beam.n_nodes() - 1], FrameReference::Chord, 3, 0.0).unwrap();
+    let n_modal = modal.n_coordinates();
+    let mut modal_q = wavy(n_modal, 0.9, 0.005);
+    for (q, p) in modal_q.iter_mut().zip(pose) {
+        *q += p;
+    }
+    vec![
+        EmbeddedCase { name: "rigid", kind: bar(), marker: spatial_marker(Site::Reference, LOCAL), q: Q.to_vec(), v: V.to_vec(), a: vec![3.0, -1.5, 40.0] },
+        EmbeddedCase { name: "beam section", kind: BodyKind::Beam(beam), marker: spatial_marker(Site::Section(site), Vec2::new(0.01, -0.02)), q: beam_q, v: wavy(n_beam, 1.1, 1.5), a: wavy(n_beam, 2.0, 30.0) },
+        EmbeddedCase {
+            name: "modal node",
+            kind: BodyKind::Modal(Box::new(modal)),
+            marker: spatial_marker(Site::ModalNode(ModalNodeSite { node: 3 }), Vec2::new(-0.01, 0.03)),
+            q: modal_q,
+            v: wavy(n_modal, 0.2, 1.2),
+            a: wavy(n_modal, 1.4, 25.0),
+        },
+    ]
+}
+
+impl EmbeddedCase {
+    /// The planar body and site frames at `(q, v)`.
+    fn planar_frames(&self, q: &[f64], v: &[f64]) -> (Frame, Frame) {
+        (self.kind.frame(q, v, &Frame::GROUND), self.kind.site_frame(&self.marker.site, q, v, &Frame::GROUND))
+    }
+
+    /// The body and site frames in space at `(q, v)`.
+    fn spatial_frames(&self, q: &[f64], v: &[f64]) -> (SpatialFrame, SpatialFrame) {
+        let (body, site) = self.planar_frames(q, v);
+        (self.kind.spatial_site_frame(&Site::Reference, q, v, &body), self.kind.spatial_site_frame(&self.marker.site, q, v, &site))
+    }
+
+    /// The marker's own spatial frame at `(q, v)`: its point, axes and their velocities.
+    fn marker_frame(&self, q: &[f64], v: &[f64]) -> SpatialFrame {
+        self.marker.frame_on(&self.spatial_frames(q, v).1)
+    }
+
+    /// The positions `q` displaced by `dv`.
+    fn displaced(&self, dv: &[f64]) -> Vec<f64> {
+        let mut q = self.q.clone();
+        self.kind.displace(&mut q, dv);
+        q
+    }
+
+    /// The unit velocity of coordinate `k`.
+    fn unit(&self, k: usize, length: f64) -> Vec<f64> {
+        let mut e = vec![0.0; self.kind.nv()];
+        e[k] = length;
+        e
+    }
+
+    /// Calls `check` with the marker's frames at `(q, v)`.
+    fn with_frames<R>(&self, check: impl FnOnce(MarkerFrames<'_>) -> R) -> R {
+        let (body, site) = self.planar_frames(&self.q, &self.v);
+        let (body3, site3) = self.spatial_frames(&self.q, &self.v);
+        check(MarkerFrames { body: &body, site: &site, body3: &body3, site3: &site3 })
+    }
+}
+
+/// `vee(W)`: the vector of a skew-symmetric matrix `W = [w]x`.
+fn vee(w: &crate::kinematics::spatial::Mat3) -> Vec3 {
+    Vec3::new(w[(2, 1)] - w[(1, 2)], w[(0, 2)] - w[(2, 0)], w[(1, 0)] - w[(0, 1)]) / 2.0
+}
+
+#[test]
+fn embedded_jacobians_are_the_planar_ones_and_the_derivatives_of_the_embedded_marker_frame() {
+    let h = 1e-6;
+    for case in embedded_cases() {
+        let block = case.kind.marker_coordinates(&case.marker.planar());
+        let planar = case.marker.planar();
+        for (axis, along) in [Vec3::x(), Vec3::y(), Vec3::z(), Vec3::new(0.3, -0.8, 0.5)].into_iter().enumerate() {
+            let (mut point, mut angular) = (vec![0.0; block.len()], vec![0.0; block.len()]);
+            case.with_frames(|at| {
+                case.kind.add_spatial_point_jacobian(at, &case.marker, along, &mut point);
+                case.kind.add_spatial_angular_jacobian(at, &case.marker, along, &mut angular);
+            });
+            // against the planar Jacobians: the in-plane direction, and the z part of the turn
+            let (mut planar_point, mut planar_angle) = (vec![0.0; block.len()], vec![0.0; block.len()]);
+            let (body, site) = case.planar_frames(&case.q, &case.v);
+            case.kind.add_marker_jacobian(&body, &site, &planar, Vec2::new(along.x, along.y), &mut planar_point);
+            case.kind.add_marker_angle_jacobian(&planar, along.z, &mut planar_angle);
+            assert_eq!((&point, &angular), (&planar_point, &planar_angle), "{}: direction {axis}", case.name);
+            // against central differences of the embedded marker frame's point and axes
+            for (k, coordinate) in block.clone().enumerate() {
+                let (plus, minus) = (case.displaced(&case.unit(coordinate, h)), case.displaced(&case.unit(coordinate, -h)));
+                let (up, down) = (case.marker_frame(&plus, &case.v), case.marker_frame(&minus, &case.v));
+                let velocity = (up.position - down.position) / (2.0 * h);
+                let turn = vee(&(up.rotation * down.rotation.transpose())) / (2.0 * h);
+                assert!((along.dot(&velocity) - point[k]).abs() < 1e-8, "{}: point, coordinate {coordinate}: {} vs {}", case.name, along.dot(&velocity), point[k]);
+                assert!((along.dot(&turn) - angular[k]).abs() < 1e-8, "{}: angle, coordinate {coordinate}: {} vs {}", case.name, along.dot(&turn), angular[k]);
+            }
+            // and J v is the marker frame's velocity and angular velocity
+            let frame = case.marker_frame(&case.q, &case.v);
+            let times_v = |row: &[f64]| row.iter().zip(&case.v[block.clone()]).map(|(j, v)| j * v).sum::<f64>();
+            assert!((times_v(&point) - along.dot(&frame.velocity)).abs() < 1e-12, "{}", case.name);
+            assert!((times_v(&angular) - along.dot(&frame.angular_velocity)).abs() < 1e-12, "{}", case.name);
+        }
+    }
+}
+
+#[test]
+fn embedded_accelerations_are_the_planar_ones_and_the_derivatives_of_the_marker_frame_along_a_motion() {
+    for case in embedded_cases() {
+        let planar = case.marker.planar();
+        let zero = vec![0.0; case.kind.nv()];
+        let ((point, angular), (bias, angular_bias)) =
+            case.with_frames(|at| (case.kind.spatial_marker_acceleration(at, &case.marker, &case.a), case.kind.spatial_bias_acceleration(at, &case.marker)));
+        let (body, site) = case.planar_frames(&case.q, &case.v);
+        let planar_point = case.kind.marker_acceleration(&body, &site, &case.a, &planar);
+        let planar_bias = case.kind.marker_bias_acceleration(&body, &site, &planar);
+        assert_eq!(point, Vec3::new(planar_point.x, planar_point.y, 0.0), "{}", case.name);
+        assert_eq!(bias, Vec3::new(planar_bias.x, planar_bias.y, 0.0), "{}", case.name);
+        assert_eq!(angular_bias, Vec3::zeros(), "{}", case.name);
+        // along q(t) = q + v t + a t^2 / 2 (q_dot = v): central differences of the marker frame's velocities
+        for (accelerations, (point, angular)) in [(&case.a, (point, angular)), (&zero, (bias, angular_bias))] {
+            let at = |t: f64| {
+                let dv: Vec<f64> = case.v.iter().zip(accelerations).map(|(v, a)| v * t + 0.5 * a * t * t).collect();
+                let v: Vec<f64> = case.v.iter().zip(accelerations).map(|(v, a)| v + a * t).collect();
+                case.marker_frame(&case.displaced(&dv), &v)
+            };
+            let h = 1e-5;
+            let (later, earlier) = (at(h), at(-h));
+            let expected_point = (later.velocity - earlier.velocity) / (2.0 * h);
+            let expected_angular = (later.angular_velocity - earlier.angular_velocity) / (2.0 * h);
+            let scale = 1.0 + expected_point.norm();
+            assert!((point - expected_point).norm() < 1e-6 * scale, "{}: {point:?} vs {expected_point:?}", case.name);
+            assert!((angular - expected_angular).norm() < 1e-6 * (1.0 + expected_angular.norm()), "{}: {angular:?} vs {expected_angular:?}", case.name);
+        }
+    }
+}
+
+#[test]
+fn an_embedded_wrench_does_the_virtual_work_of_its_force_and_moment_on_the_marker_frame() {
+    use crate::kinematics::wrench::Wrench;
+    // out of the plane parts included: they do no work on a body moving in the plane
+    let wrench = Wrench { force: Vec3::new(-40.0, 75.0, 12.0), moment: Vec3::new(3.0, -2.0, 4.0) };
+    for case in embedded_cases() {
+        let n = case.kind.nv();
+        let point = case.marker_frame(&case.q, &case.v).position;
+        let mut generalised = vec![0.0; n];
+        case.with_frames(|at| case.kind.add_wrench(at, &case.marker, point, &wrench, &mut generalised));
+        // each coordinate's unit velocity: the power of the wrench on the marker frame moving with it
+        for k in 0..n {
+            let moving = case.marker_frame(&case.q, &case.unit(k, 1.0));
+            let power = wrench.force.dot(&moving.velocity) + wrench.moment.dot(&moving.angular_velocity);
+            assert!((generalised[k] - power).abs() < 1e-12 * (1.0 + power.abs()), "{}: coordinate {k}: {} vs {power}", case.name, generalised[k]);
+        }
+        // and the planar point force with the moment about z
+        let (body, site) = case.planar_frames(&case.q, &case.v);
+        let mut planar = vec![0.0; n];
+        case.kind.add_point_force(&body, &site, &case.marker.planar(), Vec2::new(point.x, point.y), Vec2::new(wrench.force.x, wrench.force.y), &mut planar);
+        case.kind.add_moment(&case.marker.planar(), wrench.moment.z, &mut planar);
+        assert_eq!(generalised, planar, "{}", case.name);
+    }
+}
+
+#[test]
+fn positions_difference_is_the_increment_displace_applies() {
+    for case in embedded_cases() {
+        let dv = wavy(case.kind.nv(), 0.5, 0.1);
+        let moved = case.displaced(&dv);
+        let mut back = vec![0.0; dv.len()];
+        case.kind.difference(&case.q, &moved, &mut back);
+        assert!(back.iter().zip(&dv).all(|(b, d)| (b - d).abs() < 1e-15), "{}", case.name);
+        let mut normalised = moved.clone();
+        case.kind.normalise_positions(&mut normalised);
+        assert_eq!(normalised, moved, "{}: planar positions are always valid", case.name);
+        assert_eq!((case.kind.position_channels().len(), case.kind.velocity_channels().len()), (case.kind.nq(), case.kind.nv()), "{}", case.name);
     }
 }
