@@ -5,12 +5,14 @@
 //! angular velocity `omega` in BODY coordinates. The mass is constant,
 //! `diag(m, m, m, J)` with `J` the inertia tensor about the centre of mass in
 //! body coordinates, and the equations of motion of the angular coordinates
-//! are Euler's, `J omega_dot + omega x J omega = M_body`.
+//! are Euler's, `J omega_dot + omega x J omega = M_body` (the Newton-Euler
+//! equations as Shabana, "Dynamics of Multibody Systems", writes them).
 //!
 //! Why body rates: `J` is then constant (the global tensor `R J R^T` changes as
 //! the body turns), so the mass block is factored once and the only velocity
 //! term is the gyroscopic `-omega x (J omega)`; the orientation moves on the
-//! quaternion by `q_dot = q (0, omega) / 2` and is integrated and differenced
+//! quaternion by `q_dot = q (0, omega) / 2` (Sola, "Quaternion kinematics for
+//! the error-state Kalman filter", 2017, eq. 214) and is integrated and differenced
 //! by a body-frame rotation vector, as MuJoCo's free joint does
 //! (`mj_integratePos`, `mj_differentiatePos`). Theory:
 //! `docs/theory/spatial-rigid-body.md`.
