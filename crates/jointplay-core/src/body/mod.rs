@@ -36,10 +36,12 @@ mod beam;
 mod modal;
 mod planar_embedding;
 mod planar_rigid;
+mod spatial_rigid;
 
 pub use beam::{BeamBody, BeamMesh};
 pub use modal::{ModalBody, Structure, MAX_MODES, MAX_STRUCTURE_NODES};
 pub use planar_rigid::PlanarRigidBody;
+pub use spatial_rigid::SpatialRigidBody;
 
 use std::ops::Range;
 
