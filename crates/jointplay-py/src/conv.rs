@@ -251,6 +251,13 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
                 let held: Vec<f64> = modal.held_frequencies().iter().map(|w| w / std::f64::consts::TAU).collect();
                 e.set_item("held_frequencies", held)?;
             }
+            BodyKind::SpatialRigid(rigid) => {
+                e.set_item("kind", "spatial_rigid")?;
+                e.set_item("mass", rigid.mass)?;
+                let inertia: Vec<Vec<f64>> = (0..3).map(|i| (0..3).map(|j| rigid.inertia[(i, j)]).collect()).collect();
+                e.set_item("inertia", inertia)?;
+                e.set_item("euler_sequence", rigid.euler_sequence.name())?;
+            }
         }
         bodies.append(e)?;
     }

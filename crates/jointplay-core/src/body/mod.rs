@@ -224,6 +224,17 @@ pub trait BodyModel {
     /// in velocity-coordinate order (`nv`).
     fn velocity_channels(&self) -> Vec<(ChannelName, ChannelName)>;
 
+    /// Channels the body derives from its coordinates (a spatial body's global
+    /// angular velocity and Euler angles); none here.
+    fn derived_channels(&self) -> Vec<ChannelName> {
+        Vec::new()
+    }
+
+    /// Value of derived channel `which` at the positions `q` and velocities `v` [SI units].
+    fn derived_value(&self, _q: &[f64], _v: &[f64], _which: usize) -> f64 {
+        f64::NAN
+    }
+
     /// The spatial frame of the site whose planar frame is `planar`.
     fn spatial_site_frame(&self, site: &Site, q: &[f64], v: &[f64], planar: &Frame) -> SpatialFrame;
 
@@ -313,6 +324,8 @@ macro_rules! bodies {
                 fn tolerance_scales(&self, q: &mut [f64], v: &mut [f64]);
                 fn position_channels(&self) -> Vec<ChannelName>;
                 fn velocity_channels(&self) -> Vec<(ChannelName, ChannelName)>;
+                fn derived_channels(&self) -> Vec<ChannelName>;
+                fn derived_value(&self, q: &[f64], v: &[f64], which: usize) -> f64;
                 #[inline] fn spatial_site_frame(&self, site: &Site, q: &[f64], v: &[f64], planar: &Frame) -> SpatialFrame;
                 #[inline] fn add_spatial_point_jacobian(&self, at: MarkerFrames<'_>, marker: &SpatialMarker, along: Vec3, out: &mut [f64]);
                 #[inline] fn add_spatial_angular_jacobian(&self, at: MarkerFrames<'_>, marker: &SpatialMarker, along: Vec3, out: &mut [f64]);
@@ -331,6 +344,8 @@ bodies! {
     Beam(BeamBody),
     /// Modal body: floating frame `(x, y, phi)` plus modal amplitudes.
     Modal(Box<ModalBody>),
+    /// Spatial rigid body: centre of mass and unit quaternion, `(x, y, z, w, qx, qy, qz)`.
+    SpatialRigid(SpatialRigidBody),
 }
 
 /// The mass block of one body kind, as the equations of motion use it.

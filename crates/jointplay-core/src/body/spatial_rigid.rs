@@ -25,7 +25,11 @@
 //! the angular one (column wz).
 
 use super::{channel, ChannelName, MassBlock};
-use crate::dynamics::frame::{cross, perp, Frame, Vec2};
+use std::ops::Range;
+
+use super::BodyModel;
+use crate::kinematics::marker::{Marker, MarkerFrames, Site, SpatialMarker};
+use crate::kinematics::planar::{cross, perp, Frame, Vec2};
 use crate::kinematics::euler::EulerSequence;
 use crate::kinematics::quaternion;
 use crate::kinematics::spatial::{Mat3, SpatialFrame, Vec3};
@@ -46,6 +50,9 @@ pub struct SpatialRigidBody {
     pub inertia: Mat3,
     /// `M^-1` as the equations of motion use it.
     inverse_mass: InverseMass,
+    /// The Euler sequence of its orientation channels (3-2-1, `ZYX`, by default:
+    /// free of gimbal lock at the identity, where bodies often start).
+    pub euler_sequence: EulerSequence,
 }
 
 /// The inverse of `diag(m, m, m, J)`.
@@ -79,7 +86,7 @@ impl SpatialRigidBody {
         }
         let inertia = validated_inertia(inertia)?;
         let inverse_mass = InverseMass::of(mass, &inertia)?;
-        Ok(Self { mass, inertia, inverse_mass })
+        Ok(Self { mass, inertia, inverse_mass, euler_sequence: EulerSequence::ZYX })
     }
 
     /// Body of mass `mass` [kg] with principal moments `principal` [kg m^2] along its body axes.
@@ -237,7 +244,7 @@ impl SpatialRigidBody {
 
     /// `out = M^-1 f` [m/s^2, rad/s^2].
     #[inline]
-    pub fn solve_mass(&self, f: &[f64], out: &mut [f64]) {
+    pub fn solve_inverse_mass(&self, f: &[f64], out: &mut [f64]) {
         match &self.inverse_mass {
             InverseMass::Diagonal(w) => {
                 for ((o, w), f) in out.iter_mut().zip(w).zip(f) {
@@ -253,7 +260,7 @@ impl SpatialRigidBody {
 
     /// Adds the gyroscopic force `-omega x (J omega)` [N m] to the angular coordinates of `out`.
     #[inline]
-    pub fn add_body_forces(&self, v: &[f64], out: &mut [f64]) {
+    pub fn add_gyroscopic_forces(&self, v: &[f64], out: &mut [f64]) {
         let omega = body_rates(v);
         add_to(out, Vec3::zeros(), -omega.cross(&(self.inertia * omega)));
     }
@@ -293,7 +300,7 @@ impl SpatialRigidBody {
 
     /// `m g` [N] on `(vx, vy, vz)`.
     #[inline]
-    pub fn add_gravity(&self, g: Vec3, out: &mut [f64]) {
+    pub fn add_weight(&self, g: Vec3, out: &mut [f64]) {
         add_to(out, g * self.mass, Vec3::zeros());
     }
 
@@ -303,7 +310,7 @@ impl SpatialRigidBody {
     }
 
     /// `(m |v_G|^2 + omega . J omega) / 2` [J].
-    pub fn kinetic_energy(&self, v: &[f64]) -> f64 {
+    pub fn kinetic_energy_of_motion(&self, v: &[f64]) -> f64 {
         let (velocity, omega) = (Vec3::new(v[0], v[1], v[2]), body_rates(v));
         0.5 * (self.mass * velocity.norm_squared() + omega.dot(&(self.inertia * omega)))
     }
@@ -437,3 +444,200 @@ fn add_to(out: &mut [f64], linear: Vec3, angular: Vec3) {
 #[cfg(test)]
 #[path = "spatial_rigid_tests.rs"]
 mod tests;
+
+impl BodyModel for SpatialRigidBody {
+    #[inline]
+    fn nq(&self) -> usize {
+        Self::NQ
+    }
+
+    #[inline]
+    fn nv(&self) -> usize {
+        Self::NV
+    }
+
+    /// The projection on the plane (see the module's documentation).
+    #[inline]
+    fn frame(&self, q: &[f64], v: &[f64], _previous: &Frame) -> Frame {
+        Self::frame(q, v)
+    }
+
+    /// Every site is the frame at the centre of mass.
+    #[inline]
+    fn site_frame(&self, _site: &Site, q: &[f64], v: &[f64], _previous: &Frame) -> Frame {
+        Self::frame(q, v)
+    }
+
+    #[inline]
+    fn marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
+        Self::marker_jacobian(frame, marker.local, scale, jx, jy);
+    }
+
+    /// All six velocities.
+    #[inline]
+    fn marker_coordinates(&self, _marker: &Marker) -> Range<usize> {
+        0..Self::NV
+    }
+
+    #[inline]
+    fn add_marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
+        Self::add_marker_jacobian(frame, marker.local, along, out);
+    }
+
+    #[inline]
+    fn add_marker_angle_jacobian(&self, _marker: &Marker, scale: f64, out: &mut [f64]) {
+        Self::add_marker_angle_jacobian(scale, out);
+    }
+
+    /// `-omega_z^2 A s` in the plane.
+    #[inline]
+    fn marker_bias_acceleration(&self, _body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
+        let s = frame.rotate(marker.local);
+        -s * (frame.angular_velocity * frame.angular_velocity)
+    }
+
+    #[inline]
+    fn marker_bias_angular_acceleration(&self, _frame: &Frame, _marker: &Marker) -> f64 {
+        0.0
+    }
+
+    #[inline]
+    fn marker_acceleration(&self, _body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
+        Self::marker_acceleration(frame, a, marker.local)
+    }
+
+    #[inline]
+    fn marker_angular_acceleration(&self, _frame: &Frame, a: &[f64], _marker: &Marker) -> f64 {
+        Self::marker_angular_acceleration(a)
+    }
+
+    #[inline]
+    fn mass_block(&self) -> MassBlock<'_> {
+        self.mass_block()
+    }
+
+    #[inline]
+    fn solve_mass(&self, _q: &[f64], f: &[f64], out: &mut [f64], _scratch: &mut [f64]) {
+        self.solve_inverse_mass(f, out);
+    }
+
+    /// `q_dot = N(q) v` differs from `v` (the quaternion's rates).
+    #[inline]
+    fn has_identity_position_rates(&self) -> bool {
+        false
+    }
+
+    /// The gyroscopic force.
+    #[inline]
+    fn has_body_forces(&self) -> bool {
+        true
+    }
+
+    #[inline]
+    fn add_body_forces(&self, _q: &[f64], v: &[f64], out: &mut [f64]) {
+        self.add_gyroscopic_forces(v, out);
+    }
+
+    #[inline]
+    fn position_rates(&self, q: &[f64], v: &[f64], qdot: &mut [f64]) {
+        Self::position_rates(q, v, qdot);
+    }
+
+    fn rigid_motion_velocities(&self, q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]) {
+        Self::rigid_motion_velocities(q, velocity, angular_velocity, v);
+    }
+
+    #[inline]
+    fn displace(&self, q: &mut [f64], dv: &[f64]) {
+        Self::displace(q, dv);
+    }
+
+    #[inline]
+    fn normalise_positions(&self, q: &mut [f64]) {
+        Self::normalise_positions(q);
+    }
+
+    #[inline]
+    fn difference(&self, from: &[f64], to: &[f64], dv: &mut [f64]) {
+        Self::difference(from, to, dv);
+    }
+
+    #[inline]
+    fn add_point_force(&self, _body: &Frame, frame: &Frame, _marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
+        Self::add_point_force(frame, p, f, out);
+    }
+
+    #[inline]
+    fn add_moment(&self, _marker: &Marker, m: f64, out: &mut [f64]) {
+        Self::add_moment(m, out);
+    }
+
+    fn gravity_load_is_constant(&self) -> bool {
+        true
+    }
+
+    #[inline]
+    fn add_gravity(&self, g: Vec3, _q: &[f64], out: &mut [f64]) {
+        self.add_weight(g, out);
+    }
+
+    fn potential_energy(&self, g: Vec3, q: &[f64]) -> f64 {
+        self.potential_energy(g, q)
+    }
+
+    fn kinetic_energy(&self, _q: &[f64], v: &[f64]) -> f64 {
+        self.kinetic_energy_of_motion(v)
+    }
+
+    fn tolerance_scales(&self, q: &mut [f64], v: &mut [f64]) {
+        Self::tolerance_scales(q, v);
+    }
+
+    fn position_channels(&self) -> Vec<ChannelName> {
+        Self::position_channels()
+    }
+
+    fn velocity_channels(&self) -> Vec<(ChannelName, ChannelName)> {
+        Self::velocity_channels()
+    }
+
+    fn derived_channels(&self) -> Vec<ChannelName> {
+        Self::derived_channels(self.euler_sequence)
+    }
+
+    fn derived_value(&self, q: &[f64], v: &[f64], which: usize) -> f64 {
+        let mut out = [0.0; 6];
+        Self::derived_values(q, v, self.euler_sequence, &mut out);
+        out[which]
+    }
+
+    #[inline]
+    fn spatial_site_frame(&self, _site: &Site, q: &[f64], v: &[f64], _planar: &Frame) -> SpatialFrame {
+        Self::spatial_frame(q, v)
+    }
+
+    #[inline]
+    fn add_spatial_point_jacobian(&self, at: MarkerFrames<'_>, marker: &SpatialMarker, along: Vec3, out: &mut [f64]) {
+        Self::add_spatial_point_jacobian(at.site3, marker.local, along, out);
+    }
+
+    #[inline]
+    fn add_spatial_angular_jacobian(&self, at: MarkerFrames<'_>, _marker: &SpatialMarker, along: Vec3, out: &mut [f64]) {
+        Self::add_spatial_angular_jacobian(at.site3, along, out);
+    }
+
+    #[inline]
+    fn spatial_bias_acceleration(&self, at: MarkerFrames<'_>, marker: &SpatialMarker) -> (Vec3, Vec3) {
+        Self::spatial_bias_acceleration(at.site3, marker.local)
+    }
+
+    #[inline]
+    fn spatial_marker_acceleration(&self, at: MarkerFrames<'_>, marker: &SpatialMarker, a: &[f64]) -> (Vec3, Vec3) {
+        Self::spatial_marker_acceleration(at.site3, marker.local, a)
+    }
+
+    #[inline]
+    fn add_wrench(&self, at: MarkerFrames<'_>, _marker: &SpatialMarker, point: Vec3, wrench: &Wrench, out: &mut [f64]) {
+        Self::add_wrench(at.site3, point, wrench, out);
+    }
+}

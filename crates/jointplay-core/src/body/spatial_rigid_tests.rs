@@ -183,9 +183,9 @@ fn a_wrench_does_the_virtual_work_of_the_force_and_the_moment() {
 fn contract_accelerations(body: &SpatialRigidBody, q: &[f64], p: Vec3, wrench: &Wrench) -> [f64; 6] {
     let mut force = [0.0; 6];
     SpatialRigidBody::add_wrench(&frame(q, &V), p, wrench, &mut force);
-    body.add_body_forces(&V, &mut force);
+    body.add_gyroscopic_forces(&V, &mut force);
     let mut a = [0.0; 6];
-    body.solve_mass(&force, &mut a);
+    body.solve_inverse_mass(&force, &mut a);
     a
 }
 
@@ -220,11 +220,11 @@ fn kinetic_energy_is_that_of_the_global_inertia() {
     let at = frame(&q, &V);
     let global_inertia = at.rotation * body.inertia * at.rotation.transpose();
     let expected = 0.5 * 2.5 * at.velocity.norm_squared() + 0.5 * at.angular_velocity.dot(&(global_inertia * at.angular_velocity));
-    assert!((body.kinetic_energy(&V) - expected).abs() < 1e-14 * expected);
+    assert!((body.kinetic_energy_of_motion(&V) - expected).abs() < 1e-14 * expected);
     // gravity: the force is minus the gradient of the potential along the translations
     let g = Vec3::new(0.5, -9.81, 1.0);
     let mut force = [0.0; 6];
-    body.add_gravity(g, &mut force);
+    body.add_weight(g, &mut force);
     for (k, force) in force.iter().enumerate() {
         let h = 1e-3;
         let gradient = (body.potential_energy(g, &displaced(&q, &unit(k, h))) - body.potential_energy(g, &displaced(&q, &unit(k, -h)))) / (2.0 * h);
@@ -238,8 +238,8 @@ fn torque_free_step(body: &SpatialRigidBody, y: &[f64; 13], h: f64) -> [f64; 13]
         let mut dy = [0.0; 13];
         SpatialRigidBody::position_rates(&y[..7], &y[7..], &mut dy[..7]);
         let mut force = [0.0; 6];
-        body.add_body_forces(&y[7..], &mut force);
-        body.solve_mass(&force, &mut dy[7..]);
+        body.add_gyroscopic_forces(&y[7..], &mut force);
+        body.solve_inverse_mass(&force, &mut dy[7..]);
         dy
     };
     let shifted = |k: &[f64; 13], c: f64| std::array::from_fn::<f64, 13, _>(|i| y[i] + c * k[i]);
@@ -274,7 +274,7 @@ fn a_tumbling_body_keeps_energy_and_angular_momentum_and_flips_with_the_elliptic
     let mut y = [0.0; 13];
     y[3] = 1.0;
     y[10..].copy_from_slice(&[0.02, 1.0, 0.02]);
-    let (energy, momentum) = (body.kinetic_energy(&y[7..]), angular_momentum(&body, &y));
+    let (energy, momentum) = (body.kinetic_energy_of_motion(&y[7..]), angular_momentum(&body, &y));
     // Landau-Lifshitz §37 (M^2 > 2 E I_2): omega_2 ~ sn(tau, k), period 4 K(k) in tau,
     // tau = t sqrt((I3 - I2)(M^2 - 2 E I1) / (I1 I2 I3))
     let (m2, e2) = (momentum.norm_squared(), 2.0 * energy);
@@ -289,7 +289,7 @@ fn a_tumbling_body_keeps_energy_and_angular_momentum_and_flips_with_the_elliptic
         }
         (y, t) = (next, t + h);
     }
-    let relative_energy = (body.kinetic_energy(&y[7..]) - energy).abs() / energy;
+    let relative_energy = (body.kinetic_energy_of_motion(&y[7..]) - energy).abs() / energy;
     let relative_momentum = (angular_momentum(&body, &y) - momentum).norm() / momentum.norm();
     assert!(relative_energy < 1e-10, "energy drifted by {relative_energy:e}");
     assert!(relative_momentum < 1e-10, "angular momentum drifted by {relative_momentum:e}");

@@ -109,7 +109,7 @@ fn refuse_implausible_start(model: &Model, t0: f64, q: &[f64], ws: &mut Workspac
         }
     }
     let zero = vec![0.0; model.n_velocities()];
-    update_frames(model, q, &zero, &mut ws.frames);
+    update_frames(model, q, &zero, &mut ws.frames, &mut ws.spatial_frames);
     for (_, name, joint) in model.clearance_joints() {
         let penetration = joint.penetration(&ws.frames);
         if penetration > joint.max_penetration {
@@ -282,7 +282,7 @@ fn lengths_apart(before: f64, after: f64) -> (String, String) {
 /// The frames (ground, bodies, sections) at positions `q`, at rest.
 pub(super) fn frames_at(model: &Model, q: &[f64], ws: &mut Workspace) -> Vec<Frame> {
     let zero = vec![0.0; model.n_velocities()];
-    update_frames(model, q, &zero, &mut ws.frames);
+    update_frames(model, q, &zero, &mut ws.frames, &mut ws.spatial_frames);
     ws.frames.clone()
 }
 

@@ -1,6 +1,7 @@
 //! Output channels `"<element>.<quantity>"` in SI units and their values
 //! at a sample (the [`super::Trajectory`] records them).
 
+use super::spatial_reactions::{spatial_driver_effort, spatial_reactions};
 use std::ops::Range;
 
 use crate::kinematics::planar::cross;
@@ -36,6 +37,8 @@ pub(crate) enum Source {
     Gauge(usize, u8),
     /// 0 kinetic, 1 potential, 2 total mechanical energy.
     Energy(u8),
+    /// Body `k`'s derived channel (a spatial body's global angular velocity, Euler angles).
+    Derived(usize, u8),
 }
 
 /// A channel and its source.
@@ -141,6 +144,9 @@ pub(crate) fn read_channels(model: &Model, reads: &[ChannelRead], y: &[f64], ws:
             ChannelRead::Velocities(r) => out.copy_from_slice(&v[r.clone()]),
             ChannelRead::Accelerations(r) => out.copy_from_slice(&ws.accelerations[r.clone()]),
             ChannelRead::ForceOutputs { element, outputs } => model.forces[*element].outputs(outputs.clone(), &ws.frames, &ws.element_work[*element], out),
+            ChannelRead::Reactions { element, outputs } if model.elements[*element].spatial_markers.is_some() => {
+                out.copy_from_slice(&spatial_reactions(model, *element, ws)[outputs.clone()]);
+            }
             ChannelRead::Reactions { element, outputs } => out.copy_from_slice(&reactions(model, *element, ws)[outputs.clone()]),
             ChannelRead::Energies(r) => {
                 let [kinetic, potential] = kinetic_and_potential_energy(model, y, ws);
@@ -153,7 +159,7 @@ pub(crate) fn read_channels(model: &Model, reads: &[ChannelRead], y: &[f64], ws:
 
 /// Whether ideal element `e` is a driver (one output, its effort).
 fn is_driver(model: &Model, e: usize) -> bool {
-    matches!(model.elements[e].kind, ElementKind::AngleDriver | ElementKind::DisplacementDriver)
+    matches!(model.elements[e].kind, ElementKind::AngleDriver | ElementKind::DisplacementDriver | ElementKind::SpatialAngleDriver | ElementKind::SpatialDisplacementDriver)
 }
 
 /// The value of one channel; `energy` is `[kinetic, potential]` [J] of the sample.
@@ -162,9 +168,18 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
         Source::Coordinate(k) => y[k],
         Source::Velocity(k) => y[model.layout.nq + k],
         Source::Acceleration(k) => ws.accelerations[k],
+        Source::Ideal(e, which) if model.elements[e].spatial_markers.is_some() => match model.elements[e].kind {
+            ElementKind::SpatialAngleDriver => spatial_driver_effort(model, e, ws, true),
+            ElementKind::SpatialDisplacementDriver => spatial_driver_effort(model, e, ws, false),
+            _ => spatial_reactions(model, e, ws)[which as usize],
+        },
         Source::Ideal(e, which) => if is_driver(model, e) { driver_effort(model, e, ws) } else { reactions(model, e, ws)[which as usize] },
         Source::Force(f, which) => model.forces[f].output(which as usize, &ws.frames, &ws.element_work[f]),
         Source::Gauge(k, which) => gauge_value(model, k, which, y),
+        Source::Derived(k, which) => {
+            let (address, (q, v, _)) = (&model.layout.bodies[k], model.layout.split(y));
+            model.bodies[k].kind.derived_value(&q[address.q_range()], &v[address.v_range()], which as usize)
+        }
         Source::Energy(0) => energy[0],
         Source::Energy(1) => energy[1],
         Source::Energy(_) => energy[0] + energy[1],
@@ -216,7 +231,7 @@ fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 
     let mut g = [0.0; 3];
     for k in element.constraints.clone() {
         let rows = model.row_offsets[k]..model.row_offsets[k + 1];
-        let load = model.constraints[k].kind.loads(&ws.frames, &ws.multipliers[rows])[slot];
+        let load = model.constraints[k].kind.loads(&ws.frames(), &ws.multipliers[rows])[slot];
         g[0] += sign * load.force.x;
         g[1] += sign * load.force.y;
         g[2] += sign * (load.moment + cross(load.point - centre, load.force));

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 
 use super::channels::{Channel, ChannelInfo, ChannelRead, Source};
 use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
-use crate::kinematics::marker::{BodyIndex, Marker, ModalNodeSite, Site};
+use crate::kinematics::marker::{BodyIndex, Marker, ModalNodeSite, Site, SpatialMarker};
 use crate::kinematics::planar::{perp, Frame, Vec2};
 use crate::kinematics::spatial::Vec3;
 use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
@@ -15,7 +15,7 @@ use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
 use super::joint_coordinates::JointTree;
-use crate::spec::{BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, SensorSpec, GROUND};
+use crate::spec::{BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, PointSpec, SensorSpec, GROUND};
 
 #[path = "compile/beams.rs"]
 mod beams;
@@ -27,6 +27,8 @@ mod laws;
 mod lubrication;
 #[path = "compile/modal.rs"]
 mod modal;
+#[path = "compile/spatial.rs"]
+mod spatial;
 
 use laws::{build_friction, build_function, build_normal_force_law, build_stiffness};
 use beams::build_beam;
@@ -48,16 +50,31 @@ fn given_rigid_motion(velocity: Option<[f64; 2]>, angular_velocity: Option<f64>)
     (Vec2::new(vx, vy), angular_velocity.unwrap_or(0.0), start)
 }
 
+/// Whether a description has spatial bodies, joints or force elements.
+fn is_spatial(spec: &ModelSpec) -> bool {
+    let some = |n: Option<usize>| n.is_some_and(|n| n > 0);
+    some(spec.spatial_bodies.as_ref().map(Vec::len)) || some(spec.spatial_joints.as_ref().map(Vec::len)) || some(spec.spatial_forces.as_ref().map(Vec::len))
+}
+
 /// Compiles a model description; returns every problem found.
 pub fn compile(spec: &ModelSpec) -> Result<Model, ModelErrors> {
     let mut c = Compiler::new(spec);
     c.bodies();
     c.joints();
+    c.spatial_joints();
     c.drivers();
     c.forces();
+    c.spatial_forces();
     c.sensors();
     c.locks();
     c.finish()
+}
+
+/// A spatial joint, for its drivers: its kind and its two marker frames.
+#[derive(Clone, Copy)]
+struct SpatialJointEntry {
+    kind: crate::spec::SpatialJointKind,
+    markers: [SpatialMarker; 2],
 }
 
 struct Compiler<'s> {
@@ -65,6 +82,10 @@ struct Compiler<'s> {
     errors: ModelErrors,
     body_index: HashMap<&'s str, BodyIndex>,
     points: HashMap<String, Marker>,
+    /// Every named point as a marker with a frame (planar points embedded).
+    spatial_points: HashMap<String, SpatialMarker>,
+    /// Spatial joint name -> kind and markers, for drivers.
+    spatial_joint_index: HashMap<&'s str, SpatialJointEntry>,
     model: Model,
     /// joint name -> (kind, element index) for drivers
     joint_index: HashMap<&'s str, (ElementKind, usize)>,
@@ -81,7 +102,8 @@ impl<'s> Compiler<'s> {
             points: Vec::new(),
             sections: Vec::new(),
             gauges: Vec::new(),
-            gravity: Vec3::new(spec.gravity[0], spec.gravity[1], 0.0),
+            gravity: Vec3::from(spec.gravity),
+            spatial: is_spatial(spec),
             layout: Default::default(),
             constraints: Vec::new(),
             n_dynamic_constraints: 0,
@@ -108,6 +130,8 @@ impl<'s> Compiler<'s> {
             errors: ModelErrors::default(),
             body_index: HashMap::new(),
             points: HashMap::new(),
+            spatial_points: HashMap::new(),
+            spatial_joint_index: HashMap::new(),
             model,
             joint_index: HashMap::new(),
             assembly_locks: Vec::new(),
@@ -133,7 +157,7 @@ impl<'s> Compiler<'s> {
     fn bodies(&mut self) {
         self.body_index.insert(GROUND, BodyIndex::GROUND);
         for (k, p) in self.spec.ground_points.iter().enumerate() {
-            self.add_point(BodyIndex::GROUND, GROUND, &p.name, p.position, format!("ground_points[{k}]"));
+            self.add_point(BodyIndex::GROUND, GROUND, p, format!("ground_points[{k}]"));
         }
         for (k, b) in self.spec.bodies.iter().enumerate() {
             let loc = format!("bodies[{k}]");
@@ -148,7 +172,7 @@ impl<'s> Compiler<'s> {
             self.model.initial_velocities.extend([b.velocity[0], b.velocity[1], b.angular_velocity]);
             self.model.bodies.push(Body { name: b.name.clone(), kind, velocity_start: VelocityStart::Approximate });
             for (i, p) in b.points.iter().enumerate() {
-                self.add_point(index, &b.name, &p.name, p.position, format!("{loc}.points[{i}]"));
+                self.add_point(index, &b.name, p, format!("{loc}.points[{i}]"));
             }
             self.body_channels(k, &b.name);
         }
@@ -158,6 +182,7 @@ impl<'s> Compiler<'s> {
         for (k, b) in self.spec.modal_bodies.iter().flatten().enumerate() {
             self.modal_body(&format!("modal_bodies[{k}]"), b);
         }
+        self.spatial_bodies();
     }
 
     /// A modal body: its body, coordinates, interface nodes and points, and channels.
@@ -217,7 +242,7 @@ impl<'s> Compiler<'s> {
 
     /// A marker at a section of a flexible body (with its frame, shared by the markers at the same section).
     fn section_marker(&mut self, body: BodyIndex, site: Site, local: Vec2) -> Marker {
-        let total_bodies = self.spec.bodies.len() + self.spec.beams.len() + self.spec.modal_bodies.as_ref().map_or(0, Vec::len);
+        let total_bodies = self.spec.bodies.len() + self.spec.beams.len() + self.spec.modal_bodies.as_ref().map_or(0, Vec::len) + self.spec.spatial_bodies.as_ref().map_or(0, Vec::len);
         let section = Section { body, site };
         let k = self.model.sections.iter().position(|s| *s == section).unwrap_or_else(|| {
             self.model.sections.push(section);
@@ -226,11 +251,10 @@ impl<'s> Compiler<'s> {
         Marker { body, frame: 1 + total_bodies + k, site, local }
     }
 
-    fn add_point(&mut self, body: BodyIndex, body_name: &str, name: &str, position: [f64; 2], location: String) {
-        if position.iter().any(|v| !v.is_finite()) {
-            self.errors.push(format!("{location}.position"), format!("must be finite, got {position:?}"));
-        }
-        self.name_point(body_name, name, Marker::at(body, Vec2::new(position[0], position[1])), location);
+    /// A named point of a planar body's (or the ground's) reference frame, with its frame for spatial joints.
+    fn add_point(&mut self, body: BodyIndex, body_name: &str, point: &PointSpec, location: String) {
+        let axes = spatial::marker_axes(point.axes, &location, &mut self.errors);
+        self.add_spatial_point(body, body_name, &point.name, point.position, axes, location);
     }
 
     /// Names `marker` `"<body_name>.<name>"`.
@@ -239,6 +263,8 @@ impl<'s> Compiler<'s> {
         if name.is_empty() || name.contains('.') {
             self.errors.push(format!("{location}.name"), format!("must be a non-empty name without '.', got {name:?}"));
         }
+        let embedded = spatial::embedded_marker(marker, 0.0, nalgebra::Matrix3::identity());
+        self.spatial_points.entry(full.clone()).or_insert(embedded);
         if self.points.insert(full.clone(), marker).is_some() {
             self.errors.push(format!("{location}.name"), format!("point {full:?} is defined twice"));
         }
@@ -312,6 +338,7 @@ impl<'s> Compiler<'s> {
             frames: [first.frame, second.frame],
             axis,
             constraints: start..self.model.constraints.len(),
+            spatial_markers: None,
         });
         owner
     }
@@ -435,6 +462,12 @@ impl<'s> Compiler<'s> {
     fn driver(&mut self, loc: &str, d: &'s DriverSpec) {
         self.claim_name(&d.name, &format!("{loc}.name"));
         let function = build_function(&d.function, &format!("{loc}.function"), &mut self.errors);
+        if let Some(&entry) = self.spatial_joint_index.get(d.joint.as_str()) {
+            if let Some(function) = function {
+                self.spatial_driver(loc, &d.name, &d.joint, entry, function);
+            }
+            return;
+        }
         let Some(&(kind, joint)) = self.joint_index.get(d.joint.as_str()) else {
             self.errors.push(format!("{loc}.joint"), format!("unknown revolute or translational joint {:?}", d.joint));
             return;
@@ -681,6 +714,9 @@ impl<'s> Compiler<'s> {
         }
         for (i, (_, (quantity, unit, description))) in rates.iter().enumerate() {
             self.channel(name, quantity, unit, description.to_string(), Source::Acceleration(address.v + i));
+        }
+        for (i, (quantity, unit, description)) in self.model.bodies[k].kind.derived_channels().iter().enumerate() {
+            self.channel(name, quantity, unit, description.to_string(), Source::Derived(k, i as u8));
         }
     }
 

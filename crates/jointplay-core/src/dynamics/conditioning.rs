@@ -84,7 +84,7 @@ fn mass_extremes(model: &Model, frames: &[Frame]) -> (Extreme, Extreme) {
 /// largest; `without` leaves out the rows of one element.
 pub(crate) fn relative_smallest_singular_value(model: &Model, n_constraints: usize, t: f64, q: &[f64], without: Option<usize>, ws: &mut Workspace) -> f64 {
     let zero = vec![0.0; model.n_velocities()];
-    update_frames(model, q, &zero, &mut ws.frames);
+    update_frames(model, q, &zero, &mut ws.frames, &mut ws.spatial_frames);
     let rows = linearise_constraints(model, n_constraints, t, ws);
     let kept: Vec<usize> = (0..rows).filter(|&r| Some(model.row_owner[r]) != without).collect();
     let nv = model.n_velocities();

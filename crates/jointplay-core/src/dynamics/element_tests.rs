@@ -134,8 +134,9 @@ fn the_clearance_joint_as_an_element_reports_its_event_memory_and_outputs() {
     // the outputs read the latched memory through apply
     let mut work = element.new_work();
     let mut q = vec![0.0; model.n_velocities()];
-    let mut forces = GeneralisedForces::new(&mut q, &model.bodies, &model.layout, &frames);
-    element.apply(&frames, 0.0, (&[], &mut []), &memory, &mut work, false, &mut forces).unwrap();
+    let frames3 = crate::kinematics::frames::Frames { planar: &frames, spatial: &[] };
+    let mut forces = GeneralisedForces::new(&mut q, &model.bodies, &model.layout, frames3);
+    element.apply(&frames3, 0.0, (&[], &mut []), &memory, &mut work, false, &mut forces).unwrap();
     let direct = joint.evaluate(&frames, latched.onset_velocity);
     let names: Vec<&str> = element.channels().iter().map(|c| c.0).collect();
     let out = |name: &str| element.output(names.iter().position(|n| *n == name).unwrap(), &frames, &work);

@@ -10,7 +10,10 @@
 //! then `q_ddot = M^-1 (Q - Phi_q^T lambda)`.
 
 use crate::body::BodyModel;
+use crate::kinematics::frames::Frames;
+use crate::kinematics::marker::Site;
 use crate::kinematics::planar::Frame;
+use crate::kinematics::spatial::SpatialFrame;
 use super::generalised_force::GeneralisedForces;
 use super::constraint_solution;
 use super::{Model, Workspace};
@@ -37,14 +40,31 @@ pub enum Stabilization {
 
 /// Computes the frames of all bodies and then of all sections (markers on
 /// flexible bodies) from the positions `q` and velocities `v` (reusing the
-/// trigonometry of a frame whose orientation did not change).
-pub fn update_frames(model: &Model, q: &[f64], v: &[f64], frames: &mut [Frame]) {
+/// trigonometry of a frame whose orientation did not change), and their
+/// spatial frames when `spatial` holds them (a model with spatial elements).
+pub fn update_frames(model: &Model, q: &[f64], v: &[f64], frames: &mut [Frame], spatial: &mut [SpatialFrame]) {
     let (bodies, sections) = frames[1..].split_at_mut(model.bodies.len());
     for ((body, address), frame) in model.bodies.iter().zip(&model.layout.bodies).zip(bodies) {
         body.kind.update_frame(&q[address.q_range()], &v[address.v_range()], frame);
     }
     for (section, frame) in model.sections.iter().zip(sections) {
         *frame = model.section_frame(section, q, v, frame);
+    }
+    if !spatial.is_empty() {
+        update_spatial_frames(model, q, v, frames, spatial);
+    }
+}
+
+/// The spatial frames of the bodies and sections whose planar frames are `frames`.
+fn update_spatial_frames(model: &Model, q: &[f64], v: &[f64], frames: &[Frame], spatial: &mut [SpatialFrame]) {
+    let n = model.bodies.len();
+    for (k, (body, address)) in model.bodies.iter().zip(&model.layout.bodies).enumerate() {
+        spatial[k + 1] = body.kind.spatial_site_frame(&Site::Reference, &q[address.q_range()], &v[address.v_range()], &frames[k + 1]);
+    }
+    for (k, section) in model.sections.iter().enumerate() {
+        let address = &model.layout.bodies[section.body.0 - 1];
+        let kind = &model.bodies[section.body.0 - 1].kind;
+        spatial[n + 1 + k] = kind.spatial_site_frame(&section.site, &q[address.q_range()], &v[address.v_range()], &frames[n + 1 + k]);
     }
 }
 
@@ -63,7 +83,7 @@ pub(crate) fn linearise_constraints(model: &Model, n_constraints: usize, t: f64,
             nu: &mut ws.nu,
             gamma: &mut ws.gamma,
         };
-        c.kind.linearise(&ws.frames, t, target);
+        c.kind.linearise(&Frames { planar: &ws.frames, spatial: &ws.spatial_frames }, t, target);
     }
     rows
 }
@@ -72,7 +92,7 @@ pub(crate) fn linearise_constraints(model: &Model, n_constraints: usize, t: f64,
 pub(crate) fn constraint_residuals(model: &Model, n_constraints: usize, t: f64, ws: &mut Workspace) -> (f64, usize) {
     for (k, c) in model.constraints[..n_constraints].iter().enumerate() {
         let (a, b) = (model.row_offsets[k], model.row_offsets[k + 1]);
-        c.kind.residual(&ws.frames, t, &mut ws.residual[a..b]);
+        c.kind.residual(&Frames { planar: &ws.frames, spatial: &ws.spatial_frames }, t, &mut ws.residual[a..b]);
     }
     let rows = model.row_offsets[n_constraints];
     ws.residual[..rows].iter().enumerate().fold((0.0, 0), |(m, i), (r, v)| if v.abs() > m { (v.abs(), r) } else { (m, i) })
@@ -133,7 +153,8 @@ pub(crate) fn applied_forces(model: &Model, memory: &[ElementMemory], t: f64, (q
             body.kind.add_body_forces(&q[address.q_range()], &v[address.v_range()], &mut ws.generalised_force[address.v_range()]);
         }
     }
-    let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout, &ws.frames);
+    let frames = Frames { planar: &ws.frames, spatial: &ws.spatial_frames };
+    let mut forces = GeneralisedForces::new(&mut ws.generalised_force, &model.bodies, &model.layout, frames);
     if ws.gravity_load.is_none() {
         forces.add_gravity(model.gravity, q);
     }
@@ -141,7 +162,7 @@ pub(crate) fn applied_forces(model: &Model, memory: &[ElementMemory], t: f64, (q
         let states = model.layout.force_states[k].clone();
         let own = (&z[states.clone()], &mut ws.element_state_rates[states]);
         element
-            .apply(&ws.frames, t, own, &memory[k], &mut ws.element_work[k], ws.detailed, &mut forces)
+            .apply(&frames, t, own, &memory[k], &mut ws.element_work[k], ws.detailed, &mut forces)
             .map_err(|fault| fault.at(t, &model.force_names[k]))?;
     }
     Ok(())
@@ -161,7 +182,7 @@ pub fn accelerations(
     let (q, qdot, z) = model.layout.split(y);
     // the factor depends on the positions only: kept from a projection at the same (t, q)
     let factored = holds_factor(ws, model.row_offsets[model.n_dynamic_constraints], t, q);
-    update_frames(model, q, qdot, &mut ws.frames);
+    update_frames(model, q, qdot, &mut ws.frames, &mut ws.spatial_frames);
     applied_forces(model, memory, t, (q, qdot, z), ws)?;
     constrained_accelerations(model, t, (q, qdot), stabilization, factored, ws)?;
     check_finite(model, t, ws)

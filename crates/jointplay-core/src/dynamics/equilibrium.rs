@@ -22,6 +22,7 @@
 //! stiffness or joint can carry (a free body under gravity) leaves a
 //! least-squares residual: there is no equilibrium, and the error names the body.
 
+use crate::kinematics::frames::Frames;
 use nalgebra::{DMatrix, DVector};
 
 use super::assembly::assemble;
@@ -179,7 +180,7 @@ fn lock_force_on_journal(model: &Model, k: usize, t: f64, q: &[f64], multipliers
     let ConstraintKind::PointCoincidence(lock) = &model.constraints[k].kind else { return Vec2::zeros() };
     let Some(address) = model.layout.body(lock.second.body) else { return Vec2::zeros() };
     let rows = model.row_offsets[model.constraints.len()];
-    update_frames(model, q, &vec![0.0; model.layout.nv], &mut ws.frames);
+    update_frames(model, q, &vec![0.0; model.layout.nv], &mut ws.frames, &mut ws.spatial_frames);
     linearise_constraints(model, model.constraints.len(), t, ws);
     let mut lambda = vec![0.0; rows];
     let own = model.row_offsets[k]..model.row_offsets[k + 1];
@@ -356,6 +357,8 @@ struct Statics<'m> {
     t: f64,
     memory: Vec<ElementMemory>,
     reference_frames: Vec<Frame>,
+    /// Their spatial frames (in a spatial model).
+    reference_spatial_frames: Vec<crate::kinematics::spatial::SpatialFrame>,
     reference_states: Vec<f64>,
     states: Vec<f64>,
     zeros: Vec<f64>,
@@ -370,7 +373,7 @@ struct Statics<'m> {
 impl<'m> Statics<'m> {
     fn new(model: &'m Model, n_constraints: usize, t: f64, start: &State, ws: &mut Workspace) -> Self {
         let zeros = vec![0.0; model.layout.nv];
-        update_frames(model, start.coordinates(), &zeros, &mut ws.frames);
+        update_frames(model, start.coordinates(), &zeros, &mut ws.frames, &mut ws.spatial_frames);
         let reference_states = model.layout.split(&start.y).2.to_vec();
         let mut statics = Self {
             model,
@@ -378,6 +381,7 @@ impl<'m> Statics<'m> {
             t,
             memory: start.memory.clone(),
             reference_frames: ws.frames.clone(),
+            reference_spatial_frames: ws.spatial_frames.clone(),
             states: reference_states.clone(),
             reference_states,
             internal: zeros.clone(),
@@ -396,10 +400,11 @@ impl<'m> Statics<'m> {
         let model = self.model;
         let (n, rows) = (model.layout.nv, model.row_offsets[self.n_constraints]);
         let q = x.as_slice()[..n].to_vec();
-        update_frames(model, &q, &self.zeros, &mut ws.frames);
+        update_frames(model, &q, &self.zeros, &mut ws.frames, &mut ws.spatial_frames);
         for (k, element) in model.forces.iter().enumerate() {
             let range = model.layout.force_states[k].clone();
-            element.static_states(&self.reference_frames, &ws.frames, &self.reference_states[range.clone()], &mut self.states[range]);
+            let reference = Frames { planar: &self.reference_frames, spatial: &self.reference_spatial_frames };
+            element.static_states(&reference, &ws.frames(), &self.reference_states[range.clone()], &mut self.states[range]);
         }
         applied_forces(model, &self.memory, self.t, (&q, &self.zeros, &self.states), ws)?;
         if self.load_factor != 1.0 {

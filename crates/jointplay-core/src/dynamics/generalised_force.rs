@@ -2,9 +2,11 @@
 //! they add point forces and moments at markers and never index coordinates.
 
 use crate::body::BodyModel;
-use crate::kinematics::marker::Marker;
+use crate::kinematics::frames::Frames;
+use crate::kinematics::marker::{Marker, SpatialMarker};
 use crate::kinematics::planar::{Frame, Vec2};
 use crate::kinematics::spatial::Vec3;
+use crate::kinematics::wrench::Wrench;
 use super::layout::StateLayout;
 use super::model::Body;
 
@@ -16,13 +18,13 @@ pub struct GeneralisedForces<'a> {
     bodies: &'a [Body],
     /// Their addresses.
     layout: &'a StateLayout,
-    /// The frames of the evaluation (a body's reference frame is `frames[body.0]`).
-    frames: &'a [Frame],
+    /// The frames of the evaluation (a body's reference frame is `frames.planar[body.0]`).
+    frames: Frames<'a>,
 }
 
 impl<'a> GeneralisedForces<'a> {
     /// `values` (velocity length) for the bodies of `layout`, whose frames are `frames`.
-    pub fn new(values: &'a mut [f64], bodies: &'a [Body], layout: &'a StateLayout, frames: &'a [Frame]) -> Self {
+    pub fn new(values: &'a mut [f64], bodies: &'a [Body], layout: &'a StateLayout, frames: Frames<'a>) -> Self {
         Self { values, bodies, layout, frames }
     }
 
@@ -31,8 +33,19 @@ impl<'a> GeneralisedForces<'a> {
     #[inline]
     pub fn add_point_force(&mut self, marker: &Marker, frame: &Frame, p: Vec2, f: Vec2) {
         if let Some(address) = self.layout.body(marker.body) {
-            let body = &self.frames[marker.body.0];
+            let body = &self.frames.planar[marker.body.0];
             self.bodies[marker.body.0 - 1].kind.add_point_force(body, frame, marker, p, f, &mut self.values[address.v_range()]);
+        }
+    }
+
+    /// Adds the force `wrench.force` [N] at the global point `point` [m] (a
+    /// point moving with `marker`) and the moment `wrench.moment` [N m] (global)
+    /// on `marker`'s body (nothing on the ground).
+    #[inline]
+    pub fn add_wrench(&mut self, marker: &SpatialMarker, point: Vec3, wrench: &Wrench) {
+        if let Some(address) = self.layout.body(marker.body) {
+            let at = self.frames.of(marker);
+            self.bodies[marker.body.0 - 1].kind.add_wrench(at, marker, point, wrench, &mut self.values[address.v_range()]);
         }
     }
 

@@ -24,7 +24,9 @@
 use super::constraint_solution;
 use super::equations::{jacobian_times, jacobian_transpose_times, update_frames};
 use crate::kinematics::marker::Marker;
+use crate::kinematics::frames::Frames;
 use crate::kinematics::planar::Frame;
+use crate::kinematics::spatial::SpatialFrame;
 use super::generalised_force::GeneralisedForces;
 use super::{Model, Workspace};
 use crate::body::{BodyKind, BodyModel};
@@ -112,6 +114,8 @@ pub(crate) struct StructuredJacobian {
 struct Scratch {
     /// Frames at the perturbed state.
     frames: Vec<Frame>,
+    /// Their spatial frames (in a spatial model).
+    spatial_frames: Vec<SpatialFrame>,
     /// The force elements' own scratch (the workspace keeps the last evaluation's).
     work: Vec<ElementWork>,
     /// Generalised forces over all velocity coordinates (zero outside an evaluation).
@@ -131,6 +135,9 @@ fn force_markers(element: &ForceElement) -> [Option<Marker>; 2] {
         ForceElement::Torque(e) => [Some(e.body), None],
         ForceElement::HydraulicCylinder(e) => [Some(e.first), Some(e.second)],
         ForceElement::ClearanceRevolute(e) => [Some(e.bearing), Some(e.journal)],
+        ForceElement::SpatialSpringDamper(e) => [Some(e.first.planar()), Some(e.second.planar())],
+        ForceElement::Bushing(e) => [Some(e.first.planar()), Some(e.second.planar())],
+        ForceElement::PrescribedLoad(e) => [Some(e.marker.planar()), None],
     }
 }
 
@@ -227,6 +234,7 @@ impl StructuredJacobian {
             state: vec![0.0; n],
             scratch: Scratch {
                 frames: vec![Frame::GROUND; model.n_frames()],
+                spatial_frames: vec![SpatialFrame::GROUND; if model.spatial { model.n_frames() } else { 0 }],
                 work: model.forces.iter().map(ForceElement::new_work).collect(),
                 forces: vec![0.0; nv],
                 rates: vec![0.0; nz],
@@ -369,7 +377,7 @@ impl StructuredJacobian {
         // the unperturbed pass
         {
             let (q, v, _) = layout.split(&self.state);
-            update_frames(model, q, v, &mut self.scratch.frames);
+            update_frames(model, q, v, &mut self.scratch.frames, &mut self.scratch.spatial_frames);
         }
         for k in 0..self.contributions.len() {
             let rows = self.write_offsets[k]..self.write_offsets[k + 1];
@@ -390,7 +398,7 @@ impl StructuredJacobian {
             }
             if self.needs_frames[g] {
                 let (q, v, _) = layout.split(&self.state);
-                update_frames(model, q, v, &mut self.scratch.frames);
+                update_frames(model, q, v, &mut self.scratch.frames, &mut self.scratch.spatial_frames);
             }
             for (&(k, c), &entry) in self.hits[self.hit_offsets[g]..self.hit_offsets[g + 1]].iter().zip(&self.hit_entries[self.hit_offsets[g]..]) {
                 let rows = self.write_offsets[k]..self.write_offsets[k + 1];
@@ -525,9 +533,10 @@ fn evaluate(model: &Model, memory: &[ElementMemory], t: f64, contribution: Contr
         Contribution::Force(k) => {
             scratch.forces.fill(0.0);
             let states = layout.force_states[k].clone();
-            let mut forces = GeneralisedForces::new(&mut scratch.forces, &model.bodies, layout, &scratch.frames);
+            let frames = Frames { planar: &scratch.frames, spatial: &scratch.spatial_frames };
+            let mut forces = GeneralisedForces::new(&mut scratch.forces, &model.bodies, layout, frames);
             model.forces[k]
-                .apply(&scratch.frames, t, (&z[states.clone()], &mut scratch.rates[states]), &memory[k], &mut scratch.work[k], false, &mut forces)
+                .apply(&frames, t, (&z[states.clone()], &mut scratch.rates[states]), &memory[k], &mut scratch.work[k], false, &mut forces)
                 .map_err(|fault| fault.at(t, &model.force_names[k]))?;
             for (out, &r) in scratch.local.iter_mut().zip(rows) {
                 *out = if r < nv { scratch.forces[r] } else { scratch.rates[r - nv] };

@@ -68,7 +68,7 @@ pub(super) fn mixed_state(m: &Model) -> Vec<f64> {
     // the journal centre (block.J) onto the bearing's (the beam's end section) plus clearance and 5 um along x
     let mut frames = vec![crate::kinematics::planar::Frame::GROUND; m.n_frames()];
     let (q, v, _) = m.layout.split(&y);
-    update_frames(m, q, v, &mut frames);
+    update_frames(m, q, v, &mut frames, &mut []);
     let (_, bearing) = m.points.iter().find(|(name, _)| name == "arm.end").unwrap();
     let (_, journal) = m.points.iter().find(|(name, _)| name == "block.J").unwrap();
     let centre = frames[bearing.frame].point(bearing.local);
@@ -172,7 +172,7 @@ fn coloured_differences_of_the_local_forces_equal_column_by_column_differences_o
     let mut scratch = Workspace::new(&m);
     let full = differences(&y, &floors(n), nv + m.layout.nz, |y, out| {
         let (q, v, z) = m.layout.split(y);
-        update_frames(&m, q, v, &mut scratch.frames);
+        update_frames(&m, q, v, &mut scratch.frames, &mut scratch.spatial_frames);
         applied_forces(&m, &memory, 0.3, (q, v, z), &mut scratch).unwrap();
         out[..nv].copy_from_slice(&scratch.generalised_force);
         out[nv..].copy_from_slice(&scratch.element_state_rates);
@@ -252,7 +252,7 @@ fn three_jacobians(m: &Model, memory: &[ElementMemory], t: f64, y: &[f64], stabi
     let full = differences(y, &floors(n), n, |y, f| rhs(m, memory, t, y, stabilization, &mut scratch, f));
     let neglected = differences(y, &floors(n), n, |y, f| {
         let (q, v, _) = m.layout.split(y);
-        update_frames(m, q, v, &mut scratch.frames);
+        update_frames(m, q, v, &mut scratch.frames, &mut scratch.spatial_frames);
         scratch.generalised_force.copy_from_slice(&q0);
         constrained_accelerations(m, t, (q, v), stabilization, false, &mut scratch).unwrap();
         f.fill(0.0);

@@ -31,6 +31,7 @@ mod redundancy;
 mod rigid_placement;
 mod simulate;
 mod singular_diagnosis;
+mod spatial_reactions;
 mod state;
 mod system;
 mod trajectory;
@@ -72,3 +73,5 @@ mod modal_matrices_tests;
 mod jacobian_tests;
 #[cfg(test)]
 mod newton_parts_tests;
+#[cfg(test)]
+mod spatial_tests;

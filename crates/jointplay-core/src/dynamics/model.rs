@@ -1,7 +1,8 @@
 //! The compiled, immutable description of a mechanism.
 
 use super::channels::{Channel, ChannelRead};
-use crate::kinematics::marker::{BodyIndex, Marker, SectionSite, Site};
+use crate::kinematics::marker::{BodyIndex, Marker, SectionSite, Site, SpatialMarker};
+use crate::spec::SpatialJointKind;
 use crate::kinematics::planar::{Frame, Vec2};
 use crate::kinematics::spatial::Vec3;
 use super::joint_coordinates::JointTree;
@@ -54,6 +55,12 @@ pub enum ElementKind {
     DisplacementDriver,
     /// A clearance joint held at its initial eccentricity while assembling.
     AssemblyLock,
+    /// Ideal joint between two marker frames in space.
+    SpatialJoint(SpatialJointKind),
+    /// Driver of the rotation about a spatial joint's axis.
+    SpatialAngleDriver,
+    /// Driver of the displacement along a spatial joint's axis.
+    SpatialDisplacementDriver,
 }
 
 /// Reaction channels of an ideal joint that leaves the relative rotation free.
@@ -71,6 +78,25 @@ const REACTION_CHANNELS: [OutputInfo; 4] = [
     ("moment", "N m", "reaction on the second body from the first, moment about the joint point"),
 ];
 
+/// Reaction channels of a spatial joint: the wrench on the second body from
+/// the first at the second marker's point, global and in the joint's frame
+/// (the first marker's axes).
+pub const SPATIAL_REACTION_CHANNELS: [OutputInfo; 13] = [
+    ("fx", "N", "reaction on the second body from the first, global x"),
+    ("fy", "N", "reaction on the second body from the first, global y"),
+    ("fz", "N", "reaction on the second body from the first, global z"),
+    ("f", "N", "reaction on the second body from the first, magnitude"),
+    ("mx", "N m", "reaction moment on the second body about its marker point, global x"),
+    ("my", "N m", "reaction moment on the second body about its marker point, global y"),
+    ("mz", "N m", "reaction moment on the second body about its marker point, global z"),
+    ("joint_fx", "N", "reaction on the second body, along the joint frame's x"),
+    ("joint_fy", "N", "reaction on the second body, along the joint frame's y"),
+    ("joint_fz", "N", "reaction on the second body, along the joint frame's z (the axis)"),
+    ("joint_mx", "N m", "reaction moment on the second body, about the joint frame's x"),
+    ("joint_my", "N m", "reaction moment on the second body, about the joint frame's y"),
+    ("joint_mz", "N m", "reaction moment on the second body, about the joint frame's z (the axis)"),
+];
+
 impl ElementKind {
     /// Output channels: quantity, unit, description (reactions `0 fx, 1 fy, 2 |f|, 3 moment`;
     /// a driver's one channel is its effort).
@@ -81,6 +107,9 @@ impl ElementKind {
             Self::AngleDriver => &[("torque", "N m", "driver effort on the second body of the driven joint")],
             Self::DisplacementDriver => &[("force", "N", "driver effort along the axis on the second body of the driven joint")],
             Self::AssemblyLock => &[],
+            Self::SpatialJoint(_) => &SPATIAL_REACTION_CHANNELS,
+            Self::SpatialAngleDriver => &[("torque", "N m", "driver effort on the second body about the joint's axis")],
+            Self::SpatialDisplacementDriver => &[("force", "N", "driver effort on the second body along the joint's axis")],
         }
     }
 }
@@ -104,6 +133,8 @@ pub struct IdealElement {
     pub axis: Vec2,
     /// Indices of its constraints in `Model::constraints`.
     pub constraints: std::ops::Range<usize>,
+    /// The first and the second marker frame of a spatial joint or driver.
+    pub spatial_markers: Option<[SpatialMarker; 2]>,
 }
 
 /// The compiled mechanism. Built by [`super::compile`]; never changes.
@@ -124,6 +155,9 @@ pub struct Model {
     pub layout: StateLayout,
     /// Gravitational acceleration [m/s^2] (planar bodies feel its in-plane part).
     pub gravity: Vec3,
+    /// Whether the model has spatial bodies or elements: evaluations then keep
+    /// spatial frames of every body and section (planar bodies embedded).
+    pub spatial: bool,
     /// The diagonal of `M^-1` over all velocity coordinates when every body's
     /// mass block is constant and diagonal (a fast path of [`Self::solve_mass`]
     /// and of the constraint matrix); `None` otherwise [1/kg, 1/(kg m^2)].

@@ -31,7 +31,8 @@ pub(crate) fn structure(model: &Model, jacobian: &StructuredJacobian) -> Option<
                     }
                 }
             }
-            BodyKind::Modal(_) => return None,
+            // (configuration-dependent mass, or positions with q_dot != v: the whole right-hand side)
+            BodyKind::Modal(_) | BodyKind::SpatialRigid(_) => return None,
         }
     }
     let rows = model.n_dynamic_equations();
@@ -59,7 +60,7 @@ pub(crate) fn fill_mass(model: &Model, out: &mut [f64]) {
                     }
                 }
             }
-            BodyKind::Modal(_) => {}
+            BodyKind::Modal(_) | BodyKind::SpatialRigid(_) => {}
         }
     }
 }

@@ -39,7 +39,7 @@ pub(crate) fn project_positions(
     let mut previous = f64::INFINITY;
     loop {
         ws.scratch.fill(0.0);
-        update_frames(model, q, &ws.scratch, &mut ws.frames);
+        update_frames(model, q, &ws.scratch, &mut ws.frames, &mut ws.spatial_frames);
         let (largest, row) = constraint_residuals(model, n_constraints, t, ws);
         if largest <= tolerance || singular_stagnation(ws, largest, previous, tolerance) {
             return Ok((iteration, largest));
@@ -114,7 +114,7 @@ pub(crate) fn project_velocities(
 /// The velocity residuals `Phi_q q_dot - nu` of the first `n_constraints` constraints
 /// into `ws.multipliers`; returns the largest |residual| [m/s or rad/s] and its row.
 pub(crate) fn velocity_residuals(model: &Model, n_constraints: usize, t: f64, q: &[f64], qdot: &[f64], ws: &mut Workspace) -> (f64, usize) {
-    update_frames(model, q, qdot, &mut ws.frames);
+    update_frames(model, q, qdot, &mut ws.frames, &mut ws.spatial_frames);
     let rows = linearise_constraints(model, n_constraints, t, ws);
     let residual = &mut ws.multipliers;
     jacobian_times(model, rows, &ws.jacobian, qdot, residual);

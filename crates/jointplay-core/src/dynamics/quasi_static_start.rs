@@ -131,7 +131,7 @@ impl Start<'_> {
         for motion in &self.free {
             out.push(self.mass_product(q, motion));
         }
-        update_frames(model, q, &vec![0.0; model.layout.nv], &mut ws.frames);
+        update_frames(model, q, &vec![0.0; model.layout.nv], &mut ws.frames, &mut ws.spatial_frames);
         constraint_residuals(model, model.constraints.len(), self.t, ws);
         let rows = model.row_offsets[model.constraints.len()];
         Ok(DVector::from_iterator(rows + out.len(), ws.residual[..rows].iter().copied().chain(out)))

@@ -40,7 +40,7 @@ impl ConstraintRank {
 pub fn constraint_rank(model: &Model, state: &State, ws: &mut Workspace) -> ConstraintRank {
     let n = model.n_velocities();
     let (q, v, _) = model.layout.split(&state.y);
-    update_frames(model, q, v, &mut ws.frames);
+    update_frames(model, q, v, &mut ws.frames, &mut ws.spatial_frames);
     let rows = linearise_constraints(model, model.n_dynamic_constraints, state.time, ws);
     if rows == 0 {
         return ConstraintRank::default();

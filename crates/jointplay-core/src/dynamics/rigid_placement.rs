@@ -52,7 +52,7 @@ pub(crate) fn place_bodies_rigidly(model: &Model, n_constraints: usize, t: f64, 
 /// The constraint residuals at positions `q`.
 fn residuals(model: &Model, n_constraints: usize, t: f64, q: &[f64], ws: &mut Workspace) -> DVector<f64> {
     let zero = vec![0.0; model.n_velocities()];
-    update_frames(model, q, &zero, &mut ws.frames);
+    update_frames(model, q, &zero, &mut ws.frames, &mut ws.spatial_frames);
     constraint_residuals(model, n_constraints, t, ws);
     DVector::from_column_slice(&ws.residual[..model.row_offsets[n_constraints]])
 }
@@ -71,6 +71,8 @@ fn placed(model: &Model, poses: &DVector<f64>, size: f64) -> Vec<f64> {
         let triples = match body.kind {
             BodyKind::Beam(_) => q.len() / 3,
             BodyKind::PlanarRigid(_) | BodyKind::Modal(_) => 1,
+            // (planar whole-body motions; a spatial body stays where it was given)
+            BodyKind::SpatialRigid(_) => 0,
         };
         for node in q.chunks_exact_mut(3).take(triples) {
             let (dx, dy) = (node[0] - px, node[1] - py);

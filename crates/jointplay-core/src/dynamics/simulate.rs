@@ -261,7 +261,7 @@ fn joint_tree(model: &Model, formulation: Formulation, t0: f64) -> Result<(Optio
 /// The joint state `[theta, theta_dot, z]` of the (assembled) body-space state `y`.
 fn joint_state(model: &Model, tree: &JointTree, y: &[f64], ws: &mut Workspace) -> Vec<f64> {
     let (q, v, z) = model.layout.split(y);
-    update_frames(model, q, v, &mut ws.frames);
+    update_frames(model, q, v, &mut ws.frames, &mut ws.spatial_frames);
     let n = tree.n_dofs;
     let mut joint = vec![0.0; 2 * n + z.len()];
     let (theta, rest) = joint.split_at_mut(n);

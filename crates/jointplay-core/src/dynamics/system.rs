@@ -100,6 +100,13 @@ impl StepEndCache {
     }
 }
 
+/// Every body's positions moved back to valid ones (unit quaternions).
+fn normalise_positions(model: &Model, q: &mut [f64]) {
+    for (body, address) in model.bodies.iter().zip(&model.layout.bodies) {
+        body.kind.normalise_positions(&mut q[address.q_range()]);
+    }
+}
+
 impl MechanismSystem<'_> {
     /// Lets every element update its discrete memory at the accepted state (a clearance
     /// joint latches or clears its onset velocity) and check its bounds; true when some memory changed.
@@ -131,7 +138,7 @@ impl MechanismSystem<'_> {
     fn check_elements(&self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let z = self.element_states(y);
         for (k, element) in self.model.forces.iter().enumerate() {
-            element.check(&self.ws.frames, &z[self.model.layout.force_states[k].clone()]).map_err(|fault| fault.at(t, &self.model.force_names[k]))?;
+            element.check(&self.ws.frames(), &z[self.model.layout.force_states[k].clone()]).map_err(|fault| fault.at(t, &self.model.force_names[k]))?;
         }
         Ok(())
     }
@@ -166,7 +173,7 @@ impl MechanismSystem<'_> {
             Some(tree) => joint_coordinates::place(self.model, tree, t, y, self.ws),
             None => {
                 let (q, v, _) = self.model.layout.split(y);
-                update_frames(self.model, q, v, &mut self.ws.frames);
+                update_frames(self.model, q, v, &mut self.ws.frames, &mut self.ws.spatial_frames);
             }
         }
     }
@@ -422,6 +429,10 @@ impl OdeSystem for MechanismSystem<'_> {
     }
 
     fn accept(&mut self, t: f64, y: &mut [f64]) -> Result<bool, SimulationError> {
+        if !self.model.layout.identity_position_rates && self.tree.is_none() {
+            // positions back onto their manifold (unit quaternions), whatever the drift control
+            normalise_positions(self.model, self.model.layout.split_mut(y).0);
+        }
         if self.options.stabilization == Stabilization::Projection && !self.step_end.holds_projection(t, y) {
             self.project_state(t, y)?;
         }

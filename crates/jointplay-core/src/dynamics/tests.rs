@@ -504,7 +504,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     let mut ws = Workspace::new(&model);
     let state = assemble(&model, 0.0, &mut ws).unwrap();
     let n = model.n_velocities();
-    update_frames(&model, state.coordinates(), state.velocities(), &mut ws.frames);
+    update_frames(&model, state.coordinates(), state.velocities(), &mut ws.frames, &mut ws.spatial_frames);
     equations::linearise_constraints(&model, model.n_dynamic_constraints, 0.0, &mut ws);
     assert_eq!(super::constraint_solution::factor(&model, rows, state.coordinates(), &mut ws).unwrap(), super::constraint_solution::FactorKind::Pattern);
     let sparse = ws.schur[..rows * (rows + 1)].to_vec();

@@ -1,6 +1,8 @@
 //! Scratch buffers reused by every evaluation so that the right-hand side
 //! never allocates.
 
+use crate::kinematics::frames::Frames;
+use crate::kinematics::spatial::SpatialFrame;
 use crate::body::BodyModel;
 use crate::kinematics::planar::Frame;
 use super::jacobian::StructuredJacobian;
@@ -15,6 +17,9 @@ pub struct Workspace {
     pub frames: Vec<Frame>,
     /// Frames the event functions work in (only `Model::event_bodies` are kept current).
     pub event_frames: Vec<Frame>,
+    /// The spatial frames of the same (ground, bodies, sections), kept only in a
+    /// model with spatial elements or bodies (empty otherwise).
+    pub spatial_frames: Vec<SpatialFrame>,
     /// Generalised applied force `Q` over the velocity coordinates.
     pub generalised_force: Vec<f64>,
     /// The generalised force of gravity alone when it does not depend on the
@@ -78,6 +83,12 @@ pub struct Workspace {
 }
 
 impl Workspace {
+    /// The planar and spatial frames of the last evaluation.
+    #[inline]
+    pub fn frames(&self) -> Frames<'_> {
+        Frames { planar: &self.frames, spatial: &self.spatial_frames }
+    }
+
     /// Buffers for `model`.
     pub fn new(model: &Model) -> Self {
         let n = model.n_velocities();
@@ -85,6 +96,7 @@ impl Workspace {
         Self {
             frames: vec![Frame::GROUND; model.n_frames()],
             event_frames: vec![Frame::GROUND; model.n_frames()],
+            spatial_frames: vec![SpatialFrame::GROUND; if model.spatial { model.n_frames() } else { 0 }],
             generalised_force: vec![0.0; n],
             gravity_load: constant_gravity_load(model),
             jacobian: vec![0.0; model.jacobian_pattern.n_values()],

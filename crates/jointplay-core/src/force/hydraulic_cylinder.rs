@@ -5,8 +5,10 @@
 //! `docs/theory/hydraulic-cylinder.md`.
 
 use super::ForceOutput;
-use crate::kinematics::marker::Marker;
-use crate::kinematics::planar::Frame;
+use crate::kinematics::frames::Frames;
+use crate::kinematics::marker::{Marker, SpatialMarker};
+use crate::kinematics::spatial::Vec3;
+use crate::kinematics::wrench::Wrench;
 use crate::dynamics::GeneralisedForces;
 use crate::hydraulic::{CylinderFault, HydraulicCylinder};
 use crate::motion::TimeFunction;
@@ -28,14 +30,17 @@ pub struct CylinderActuator {
     pub cap_inflow: Option<TimeFunction>,
     /// Flow into the rod chamber [m^3/s], if any.
     pub rod_inflow: Option<TimeFunction>,
+    /// The attachments as markers in space (a cylinder of a spatial model),
+    /// read instead of `first` and `second`.
+    pub spatial_attachments: Option<[SpatialMarker; 2]>,
 }
 
-/// The attachment line at one instant.
+/// The attachment line at one instant (in the plane z = 0 for a planar cylinder).
 struct Line {
     /// Unit vector from the first attachment to the second [-].
-    direction: crate::kinematics::planar::Vec2,
+    direction: Vec3,
     /// Attachment points [m].
-    points: [crate::kinematics::planar::Vec2; 2],
+    points: [Vec3; 2],
     /// Stroke s [m].
     stroke: f64,
     /// Stroke rate ds/dt [m/s].
@@ -54,15 +59,42 @@ impl CylinderActuator {
         ("stick", "1", "1 while the seal sticks (|rate| below the stick velocity), else 0"),
     ];
 
-    fn line(&self, frames: &[Frame]) -> Line {
-        let (fi, fj) = (&frames[self.first.frame], &frames[self.second.frame]);
-        let points = [fi.point(self.first.local), fj.point(self.second.local)];
+    /// The attachment points and their velocities [m, m/s].
+    fn attachments(&self, frames: &Frames<'_>) -> ([Vec3; 2], Vec3) {
+        match &self.spatial_attachments {
+            Some([a, b]) => ([frames.point(a), frames.point(b)], frames.point_velocity(b) - frames.point_velocity(a)),
+            None => {
+                let (fi, fj) = (&frames.planar[self.first.frame], &frames.planar[self.second.frame]);
+                let embed = |p: crate::kinematics::planar::Vec2| Vec3::new(p.x, p.y, 0.0);
+                let relative = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
+                ([embed(fi.point(self.first.local)), embed(fj.point(self.second.local))], embed(relative))
+            }
+        }
+    }
+
+    fn line(&self, frames: &Frames<'_>) -> Line {
+        let (points, relative) = self.attachments(frames);
         let d = points[1] - points[0];
         let length = d.norm();
         // (coincident attachments: no direction; the compiler refuses a zero retracted length)
-        let direction = if length > 0.0 { d / length } else { crate::kinematics::planar::Vec2::zeros() };
-        let relative = fj.point_velocity(self.second.local) - fi.point_velocity(self.first.local);
+        let direction = if length > 0.0 { d / length } else { Vec3::zeros() };
         Line { direction, points, stroke: length - self.retracted_length, stroke_rate: direction.dot(&relative) }
+    }
+
+    /// Pushes the attachments apart with `push` [N] along the line.
+    fn push_apart(&self, frames: &Frames<'_>, line: &Line, push: Vec3, forces: &mut GeneralisedForces) {
+        match &self.spatial_attachments {
+            Some([a, b]) => {
+                let force = |f: Vec3| Wrench { force: f, moment: Vec3::zeros() };
+                forces.add_wrench(b, line.points[1], &force(push));
+                forces.add_wrench(a, line.points[0], &force(-push));
+            }
+            None => {
+                let (p, f) = (line.points.map(|p| p.xy()), push.xy());
+                forces.add_point_force(&self.second, &frames.planar[self.second.frame], p[1], f);
+                forces.add_point_force(&self.first, &frames.planar[self.first.frame], p[0], -f);
+            }
+        }
     }
 
     /// Inflows (Q_cap, Q_rod) [m^3/s] at `t`.
@@ -73,13 +105,11 @@ impl CylinderActuator {
 
     /// Applies the force along the line and writes the state rates into `z_rate`
     /// (same layout as `z`: p_cap, p_rod, bristle deflection).
-    pub fn apply(&self, frames: &[Frame], t: f64, z: &[f64], z_rate: &mut [f64], forces: &mut GeneralisedForces) -> ForceOutput {
+    pub fn apply(&self, frames: &Frames<'_>, t: f64, z: &[f64], z_rate: &mut [f64], forces: &mut GeneralisedForces) -> ForceOutput {
         let line = self.line(frames);
         let e = self.cylinder.evaluate_unchecked(line.stroke, line.stroke_rate, z, self.inflows(t));
         z_rate.copy_from_slice(e.state_rates());
-        let push = line.direction * e.force;
-        forces.add_point_force(&self.second, &frames[self.second.frame], line.points[1], push);
-        forces.add_point_force(&self.first, &frames[self.first.frame], line.points[0], -push);
+        self.push_apart(frames, &line, line.direction * e.force, forces);
         let stick = if e.stick { 1.0 } else { 0.0 };
         ForceOutput {
             values: [z[0], z[1], e.force, line.stroke, line.stroke_rate, e.friction_force, stick],
@@ -91,7 +121,7 @@ impl CylinderActuator {
     /// the attachments' placement `reference_frames` to the placement `frames`:
     /// each pressure follows its chamber's volume, `p = p0 - beta ln(V / V0)`
     /// (no inflow, the liquid's mass kept); the bristle deflection is kept.
-    pub fn closed_states(&self, reference_frames: &[Frame], frames: &[Frame], reference: &[f64], z: &mut [f64]) {
+    pub fn closed_states(&self, reference_frames: &Frames<'_>, frames: &Frames<'_>, reference: &[f64], z: &mut [f64]) {
         let g = self.cylinder.geometry();
         let (from, to) = (g.volumes(self.line(reference_frames).stroke), g.volumes(self.line(frames).stroke));
         let beta = self.cylinder.bulk_modulus();
@@ -102,7 +132,7 @@ impl CylinderActuator {
 
     /// Whether the state is inside the range of the law (stroke within [0, S],
     /// pressures above the floor); checked at every accepted step.
-    pub fn check(&self, frames: &[Frame], z: &[f64]) -> Result<(), CylinderFault> {
+    pub fn check(&self, frames: &Frames<'_>, z: &[f64]) -> Result<(), CylinderFault> {
         self.cylinder.check(self.line(frames).stroke, z)
     }
 

@@ -10,15 +10,21 @@
 //! kind of element: constraint rows ([`crate::joint::ConstraintKind`]).
 //! Gravity is a body load (`crate::body`).
 
+mod bushing;
 mod hydraulic_cylinder;
 mod point_force;
+mod prescribed_load;
 mod rotational_spring_damper;
+mod spatial_spring_damper;
 mod spring_damper;
 mod torque;
 
+pub use bushing::Bushing;
 pub use hydraulic_cylinder::CylinderActuator;
 pub use point_force::PointForce;
+pub use prescribed_load::{LoadFrame, LoadKind, PrescribedLoad};
 pub use rotational_spring_damper::RotationalSpringDamper;
+pub use spatial_spring_damper::SpatialSpringDamper;
 pub use spring_damper::SpringDamper;
 pub use torque::AppliedTorque;
 
@@ -27,6 +33,7 @@ use crate::error::SimulationError;
 use crate::joint::{ClearanceRevolute, ClearanceWork, ContactMemory};
 use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
+use crate::kinematics::frames::Frames;
 
 /// Most outputs a force element without its own evaluation record reports.
 pub const MAX_OUTPUTS: usize = 7;
@@ -135,6 +142,12 @@ pub enum ForceElement {
     HydraulicCylinder(CylinderActuator),
     /// Revolute joint with radial clearance (dry contact, optional film), with its contact onset as event.
     ClearanceRevolute(ClearanceRevolute),
+    /// Linear spring-damper between two points in space.
+    SpatialSpringDamper(SpatialSpringDamper),
+    /// Six-component spring-damper between two marker frames.
+    Bushing(Bushing),
+    /// Prescribed force or torque in space.
+    PrescribedLoad(PrescribedLoad),
 }
 
 impl ForceElement {
@@ -147,6 +160,9 @@ impl ForceElement {
             Self::Torque(_) => &AppliedTorque::CHANNELS,
             Self::HydraulicCylinder(_) => &CylinderActuator::CHANNELS,
             Self::ClearanceRevolute(e) => e.channels(),
+            Self::SpatialSpringDamper(_) => &SpatialSpringDamper::CHANNELS,
+            Self::Bushing(_) => &Bushing::CHANNELS,
+            Self::PrescribedLoad(e) => e.channels(),
         }
     }
 
@@ -161,7 +177,7 @@ impl ForceElement {
     /// The continuous states at rest in the placement `frames`, from the states
     /// `reference` at the placement `reference_frames` (a static analysis): a
     /// cylinder's chambers closed, its pressures following their volumes.
-    pub fn static_states(&self, reference_frames: &[Frame], frames: &[Frame], reference: &[f64], z: &mut [f64]) {
+    pub fn static_states(&self, reference_frames: &Frames<'_>, frames: &Frames<'_>, reference: &[f64], z: &mut [f64]) {
         match self {
             Self::HydraulicCylinder(e) => e.closed_states(reference_frames, frames, reference, z),
             _ => z.copy_from_slice(reference),
@@ -206,7 +222,7 @@ impl ForceElement {
     #[allow(clippy::too_many_arguments)]
     pub fn apply(
         &self,
-        frames: &[Frame],
+        frames: &Frames<'_>,
         t: f64,
         (z, z_rate): (&[f64], &mut [f64]),
         memory: &ElementMemory,
@@ -216,17 +232,20 @@ impl ForceElement {
     ) -> Result<(), ElementFault> {
         let output = match (self, memory, work) {
             (Self::ClearanceRevolute(e), ElementMemory::Contact(memory), ElementWork::Clearance(work)) => {
-                return e.apply_element(frames, memory, work, detailed, forces);
+                return e.apply_element(frames.planar, memory, work, detailed, forces);
             }
             (_, _, ElementWork::Outputs(output)) => output,
             _ => unreachable!("an element's memory and work are made by its own kind"),
         };
         *output = match self {
-            Self::SpringDamper(e) => e.apply(frames, forces),
-            Self::RotationalSpringDamper(e) => e.apply(frames, forces),
-            Self::PointForce(e) => e.apply(frames, t, forces),
+            Self::SpringDamper(e) => e.apply(frames.planar, forces),
+            Self::RotationalSpringDamper(e) => e.apply(frames.planar, forces),
+            Self::PointForce(e) => e.apply(frames.planar, t, forces),
             Self::Torque(e) => e.apply(t, forces),
             Self::HydraulicCylinder(e) => e.apply(frames, t, z, z_rate, forces),
+            Self::SpatialSpringDamper(e) => e.apply(frames, forces),
+            Self::Bushing(e) => e.apply(frames, forces),
+            Self::PrescribedLoad(e) => e.apply(frames, t, forces),
             Self::ClearanceRevolute(_) => unreachable!("handled above"),
         };
         Ok(())
@@ -306,7 +325,7 @@ impl ForceElement {
     }
 
     /// Why the state is outside the range of the element's law, if it is.
-    pub fn check(&self, frames: &[Frame], z: &[f64]) -> Result<(), ElementFault> {
+    pub fn check(&self, frames: &Frames<'_>, z: &[f64]) -> Result<(), ElementFault> {
         match self {
             Self::HydraulicCylinder(e) => e.check(frames, z).map_err(|fault| ElementFault::OutOfRange(fault.to_string())),
             _ => Ok(()),

@@ -1,27 +1,40 @@
 //! Joints. Ideal joints and drivers are constraint equations
-//! `Phi(q, t) = 0` built from three primitives (point coincidence, relative
-//! angle, axial projection); the clearance revolute joint is not a
+//! `Phi(q, t) = 0` built from primitives: in the plane point coincidence,
+//! relative angle and axial projection; in space point coincidence,
+//! perpendicular axes, distance along an axis and rotation about an axis
+//! (`docs/theory/spatial-joints.md`). The clearance revolute joint is not a
 //! constraint but a force element between a bearing and a journal, with an
 //! optional lubricant film, an event at contact onset and a discrete memory
 //! (`clearance_element.rs`).
 
 mod axial_projection;
+mod axis_distance;
+mod axis_rotation;
 mod clearance_element;
 mod clearance_revolute;
 mod lubricated_film;
+mod perpendicular_axes;
 mod point_coincidence;
 mod relative_angle;
+mod spatial_point_coincidence;
 
 pub use axial_projection::AxialProjection;
+pub use axis_distance::AxisDistance;
+pub use axis_rotation::AxisRotation;
 pub use clearance_element::{ClearanceWork, ContactMemory, CHANNELS as CLEARANCE_CHANNELS};
 pub use clearance_revolute::{ClearanceRevolute, ContactEvaluation};
 pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication};
+pub use perpendicular_axes::PerpendicularAxes;
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
+pub use spatial_point_coincidence::SpatialPointCoincidence;
 
 use crate::body::BodyModel;
-use crate::kinematics::marker::{BodyIndex, Marker};
+use crate::kinematics::frames::Frames;
+use crate::kinematics::marker::{BodyIndex, Marker, SpatialMarker};
 use crate::kinematics::planar::{Frame, Vec2};
+use crate::kinematics::spatial::Vec3;
+use crate::kinematics::wrench::Wrench;
 use crate::dynamics::{Body, JacobianPattern};
 use crate::motion::{MotionSample, TimeFunction};
 
@@ -54,6 +67,14 @@ pub enum ConstraintKind {
     RelativeAngle(RelativeAngle),
     /// Displacement along a body-fixed direction prescribed (1 equation).
     AxialProjection(AxialProjection),
+    /// Two points coincide in space (3 equations).
+    SpatialPointCoincidence(SpatialPointCoincidence),
+    /// An axis of one marker stays perpendicular to an axis of another (1 equation).
+    PerpendicularAxes(PerpendicularAxes),
+    /// Distance along an axis of the first marker prescribed (1 equation).
+    AxisDistance(AxisDistance),
+    /// Rotation about the first marker's z axis prescribed (1 equation).
+    AxisRotation(AxisRotation),
 }
 
 /// Where a constraint writes its equations for one evaluation, and the
@@ -119,6 +140,34 @@ impl ConstraintRows<'_> {
         self.bodies[marker.body.0 - 1].kind.marker_bias_acceleration(&frames[marker.body.0], &frames[marker.frame], marker)
     }
 
+    /// Adds `along . d(v_P)/d(v)` of the spatial `marker`'s point to row `row + r`, block `slot`.
+    #[inline(always)]
+    pub fn add_spatial_point_jacobian(&mut self, frames: &Frames<'_>, r: usize, slot: usize, marker: &SpatialMarker, along: Vec3) {
+        let values = self.pattern.slot_values(self.row + r, slot);
+        if !values.is_empty() {
+            self.bodies[marker.body.0 - 1].kind.add_spatial_point_jacobian(frames.of(marker), marker, along, &mut self.jacobian[values]);
+        }
+    }
+
+    /// Adds `along . d(omega)/d(v)` of the spatial `marker`'s frame to row `row + r`, block `slot`.
+    #[inline(always)]
+    pub fn add_spatial_angular_jacobian(&mut self, frames: &Frames<'_>, r: usize, slot: usize, marker: &SpatialMarker, along: Vec3) {
+        let values = self.pattern.slot_values(self.row + r, slot);
+        if !values.is_empty() {
+            self.bodies[marker.body.0 - 1].kind.add_spatial_angular_jacobian(frames.of(marker), marker, along, &mut self.jacobian[values]);
+        }
+    }
+
+    /// The velocity-dependent parts of the spatial `marker`'s point and angular
+    /// accelerations (zero on the ground) [m/s^2, rad/s^2].
+    #[inline(always)]
+    pub fn spatial_bias(&self, frames: &Frames<'_>, marker: &SpatialMarker) -> (Vec3, Vec3) {
+        if marker.body.is_ground() {
+            return (Vec3::zeros(), Vec3::zeros());
+        }
+        self.bodies[marker.body.0 - 1].kind.spatial_bias_acceleration(frames.of(marker), marker)
+    }
+
     /// The velocity-dependent part of `marker`'s angular acceleration (zero on the ground) [rad/s^2].
     #[inline(always)]
     pub fn bias_angular_acceleration(&self, frames: &[Frame], marker: &Marker) -> f64 {
@@ -142,12 +191,37 @@ pub struct MarkerLoad {
     pub moment: f64,
 }
 
+/// [`MarkerLoad`] in space: a force through a global point and a moment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MarkerWrench {
+    /// Global point where the force acts [m].
+    pub point: Vec3,
+    /// Force and moment [N, N m] (global).
+    pub wrench: Wrench,
+}
+
+impl MarkerWrench {
+    /// Its projection on the plane: the in-plane force and the moment about z.
+    fn planar(&self) -> MarkerLoad {
+        MarkerLoad { force: self.wrench.force.xy(), point: self.point.xy(), moment: self.wrench.moment.z }
+    }
+}
+
+impl MarkerLoad {
+    /// The planar load in space.
+    fn embedded(&self) -> MarkerWrench {
+        let (f, p) = (self.force, self.point);
+        MarkerWrench { point: Vec3::new(p.x, p.y, 0.0), wrench: Wrench { force: Vec3::new(f.x, f.y, 0.0), moment: Vec3::new(0.0, 0.0, self.moment) } }
+    }
+}
+
 impl ConstraintKind {
     /// Number of scalar equations.
     pub fn n_equations(&self) -> usize {
         match self {
+            Self::SpatialPointCoincidence(_) => 3,
             Self::PointCoincidence(_) => 2,
-            Self::RelativeAngle(_) | Self::AxialProjection(_) => 1,
+            Self::RelativeAngle(_) | Self::AxialProjection(_) | Self::PerpendicularAxes(_) | Self::AxisDistance(_) | Self::AxisRotation(_) => 1,
         }
     }
 
@@ -157,6 +231,10 @@ impl ConstraintKind {
             Self::PointCoincidence(c) => [c.first, c.second],
             Self::RelativeAngle(c) => [c.first, c.second],
             Self::AxialProjection(c) => [c.first, c.second],
+            Self::SpatialPointCoincidence(c) => [c.first.planar(), c.second.planar()],
+            Self::PerpendicularAxes(c) => [c.first.planar(), c.second.planar()],
+            Self::AxisDistance(c) => [c.first.planar(), c.second.planar()],
+            Self::AxisRotation(c) => [c.first.planar(), c.second.planar()],
         }
     }
 
@@ -166,31 +244,54 @@ impl ConstraintKind {
     }
 
     /// Residuals `Phi(q, t)` into `out` (length `n_equations`) [m or rad].
-    pub fn residual(&self, frames: &[Frame], t: f64, out: &mut [f64]) {
+    pub fn residual(&self, frames: &Frames<'_>, t: f64, out: &mut [f64]) {
         match self {
-            Self::PointCoincidence(c) => c.residual(frames, out),
-            Self::RelativeAngle(c) => c.residual(frames, t, out),
-            Self::AxialProjection(c) => c.residual(frames, t, out),
+            Self::PointCoincidence(c) => c.residual(frames.planar, out),
+            Self::RelativeAngle(c) => c.residual(frames.planar, t, out),
+            Self::AxialProjection(c) => c.residual(frames.planar, t, out),
+            Self::SpatialPointCoincidence(c) => c.residual(frames, out),
+            Self::PerpendicularAxes(c) => c.residual(frames, out),
+            Self::AxisDistance(c) => c.residual(frames, t, out),
+            Self::AxisRotation(c) => c.residual(frames, t, out),
         }
     }
 
     /// Jacobian rows, `nu` and `gamma` at the current frames (positions and velocities).
-    pub fn linearise(&self, frames: &[Frame], t: f64, rows: ConstraintRows<'_>) {
+    pub fn linearise(&self, frames: &Frames<'_>, t: f64, rows: ConstraintRows<'_>) {
         match self {
-            Self::PointCoincidence(c) => c.linearise(frames, rows),
-            Self::RelativeAngle(c) => c.linearise(frames, t, rows),
-            Self::AxialProjection(c) => c.linearise(frames, t, rows),
+            Self::PointCoincidence(c) => c.linearise(frames.planar, rows),
+            Self::RelativeAngle(c) => c.linearise(frames.planar, t, rows),
+            Self::AxialProjection(c) => c.linearise(frames.planar, t, rows),
+            Self::SpatialPointCoincidence(c) => c.linearise(frames, rows),
+            Self::PerpendicularAxes(c) => c.linearise(frames, rows),
+            Self::AxisDistance(c) => c.linearise(frames, t, rows),
+            Self::AxisRotation(c) => c.linearise(frames, t, rows),
         }
     }
 
     /// What the equations exert on the first and on the second marker's body
     /// for the multipliers `lambda` of its rows: the generalised force
     /// `-Phi_q^T lambda` as a force at a point plus a pure moment.
-    pub fn loads(&self, frames: &[Frame], lambda: &[f64]) -> [MarkerLoad; 2] {
+    /// A spatial primitive's loads are projected on the plane (a planar
+    /// element's reactions; spatial ones read [`Self::wrenches`]).
+    pub fn loads(&self, frames: &Frames<'_>, lambda: &[f64]) -> [MarkerLoad; 2] {
         match self {
-            Self::PointCoincidence(c) => c.loads(frames, lambda),
-            Self::RelativeAngle(c) => c.loads(frames, lambda),
-            Self::AxialProjection(c) => c.loads(frames, lambda),
+            Self::PointCoincidence(c) => c.loads(frames.planar, lambda),
+            Self::RelativeAngle(c) => c.loads(frames.planar, lambda),
+            Self::AxialProjection(c) => c.loads(frames.planar, lambda),
+            _ => self.wrenches(frames, lambda).map(|w| w.planar()),
+        }
+    }
+
+    /// [`Self::loads`] in space: a force through a point and a moment on each
+    /// marker's body (a planar primitive's, embedded).
+    pub fn wrenches(&self, frames: &Frames<'_>, lambda: &[f64]) -> [MarkerWrench; 2] {
+        match self {
+            Self::SpatialPointCoincidence(c) => c.loads(frames, lambda),
+            Self::PerpendicularAxes(c) => c.loads(frames, lambda),
+            Self::AxisDistance(c) => c.loads(frames, lambda),
+            Self::AxisRotation(c) => c.loads(frames, lambda),
+            _ => self.loads(frames, lambda).map(|l| l.embedded()),
         }
     }
 }

@@ -4,6 +4,7 @@
 //! primitive reports against `-Phi_q^T lambda` by virtual work.
 
 use super::*;
+use crate::kinematics::frames::Frames;
 use crate::body::{BodyKind, PlanarRigidBody};
 use crate::kinematics::marker::{BodyIndex, Marker};
 use crate::kinematics::planar::{cross, Frame, Vec2};
@@ -47,7 +48,7 @@ fn trajectory(t: f64) -> ([f64; N], [f64; N]) {
 
 fn residual(c: &ConstraintKind, q: &[f64], t: f64) -> Vec<f64> {
     let mut out = vec![0.0; c.n_equations()];
-    c.residual(&frames_at(q, &[0.0; N]), t, &mut out);
+    c.residual(&Frames { planar: &frames_at(q, &[0.0; N]), spatial: &[] }, t, &mut out);
     out
 }
 
@@ -75,7 +76,7 @@ fn linearised(c: &ConstraintKind, q: &[f64], qd: &[f64], t: f64) -> (DenseJacobi
     let mut values = vec![0.0; pattern.n_values()];
     let (mut nu, mut gamma) = (vec![0.0; m], vec![0.0; m]);
     let rows = ConstraintRows { jacobian: &mut values, pattern: &pattern, bodies: &bodies, row: 0, nu: &mut nu, gamma: &mut gamma };
-    c.linearise(&frames_at(q, qd), t, rows);
+    c.linearise(&Frames { planar: &frames_at(q, qd), spatial: &[] }, t, rows);
     let jac = DenseJacobian((0..m).map(|r| std::array::from_fn(|k| pattern.entry(&values, r, k))).collect());
     (jac, nu, gamma)
 }
@@ -130,7 +131,7 @@ fn the_loads_of_a_primitive_are_minus_its_jacobian_transpose_times_the_multiplie
     for (k, c) in primitives().iter().enumerate() {
         let (jac, _, _) = linearised(c, &q, &qd, t);
         let lambda: Vec<f64> = (0..c.n_equations()).map(|r| 1.7 - 2.3 * r as f64).collect();
-        let loads = c.loads(&frames, &lambda);
+        let loads = c.loads(&Frames { planar: &frames, spatial: &[] }, &lambda);
         for (slot, marker) in c.markers().iter().enumerate() {
             if marker.body.is_ground() {
                 continue;

@@ -12,6 +12,7 @@
 //! (Hamilton product, active rotation, body to global).
 
 pub mod euler;
+pub mod frames;
 pub mod marker;
 pub mod planar;
 pub mod quaternion;

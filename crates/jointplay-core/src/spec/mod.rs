@@ -16,10 +16,12 @@ mod beams;
 mod laws;
 mod lubrication;
 mod modal;
+mod spatial;
 
 pub use beams::{BeamMaterialSpec, BeamMeshSpec, BeamPointSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec, SensorSpec};
 pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
 pub use lubrication::{CavitationSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
+pub use spatial::{planar_or_spatial, vector3, LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec, SpatialPointSpec};
 pub use modal::{ModalBodySpec, ModalPointSpec, ModalStructureSpec, SparseMatrixSpec, StructureMatricesSpec};
 use serde::{Deserialize, Serialize};
 
@@ -32,8 +34,9 @@ pub const GROUND: &str = "ground";
 pub struct ModelSpec {
     /// Name of the mechanism.
     pub name: String,
-    /// Gravitational acceleration vector [m/s^2].
-    pub gravity: [f64; 2],
+    /// Gravitational acceleration vector [m/s^2] (two numbers in planar descriptions: z is zero).
+    #[serde(deserialize_with = "vector3", serialize_with = "planar_or_spatial")]
+    pub gravity: [f64; 3],
     /// Points of the ground frame, by name: global coordinates [m].
     pub ground_points: Vec<PointSpec>,
     /// Rigid bodies.
@@ -52,16 +55,31 @@ pub struct ModelSpec {
     pub forces: Vec<ForceSpec>,
     /// Sensors.
     pub sensors: Vec<SensorSpec>,
+    /// Spatial rigid bodies; none when left out or null (a planar model).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spatial_bodies: Option<Vec<SpatialBodySpec>>,
+    /// Ideal joints between marker frames.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spatial_joints: Option<Vec<SpatialJointSpec>>,
+    /// Force elements in space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spatial_forces: Option<Vec<SpatialForceSpec>>,
 }
 
-/// A named point: coordinates in the frame of its body [m].
+/// A named point: coordinates in the frame of its body [m], and a frame there.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PointSpec {
     /// Name, unique within its body.
     pub name: String,
-    /// Coordinates in the body frame (global for ground points) [m].
-    pub position: [f64; 2],
+    /// Coordinates in the body frame (global for ground points) [m]; two
+    /// numbers in planar descriptions (z is zero).
+    #[serde(deserialize_with = "vector3", serialize_with = "planar_or_spatial")]
+    pub position: [f64; 3],
+    /// The marker's axes in the body frame (columns x, y, z) [-], for spatial
+    /// joints; `None`: the body's axes.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub axes: Option<[[f64; 3]; 3]>,
 }
 
 /// A planar rigid body with its reference frame at the centre of mass.

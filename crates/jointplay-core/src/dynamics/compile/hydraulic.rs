@@ -56,6 +56,7 @@ pub(super) fn build_cylinder(
         initial_stroke: spec.initial_stroke,
         cap_inflow: cap_inflow.flatten(),
         rod_inflow: rod_inflow.flatten(),
+        spatial_attachments: None,
     };
     Some((element, states))
 }

@@ -97,12 +97,16 @@ impl JointTree {
     /// The tree of `model`'s ideal joints, or why its equations need the absolute form
     /// (a joint that closes a loop, a joint driven twice, a body kind without joint coordinates).
     pub fn of(model: &Model) -> Result<JointTree, String> {
+        if model.spatial {
+            return Err(SPATIAL_MODELS.to_string());
+        }
         let mut mass = Vec::with_capacity(model.layout.nv);
         for body in &model.bodies {
             match &body.kind {
                 BodyKind::PlanarRigid(b) => mass.extend(b.inverse_mass().iter().map(|w| 1.0 / w)),
                 BodyKind::Beam(_) => return Err(format!("body {:?} is a beam (flexible bodies run in absolute coordinates)", body.name)),
                 BodyKind::Modal(_) => return Err(format!("body {:?} is a modal body (flexible bodies run in absolute coordinates)", body.name)),
+                BodyKind::SpatialRigid(_) => return Err(SPATIAL_MODELS.to_string()),
             }
         }
         let joints = joint_elements(model)?;
@@ -159,6 +163,9 @@ impl JointTree {
     }
 }
 
+/// Why a spatial model runs in absolute coordinates (`docs/theory/spatial-formulation.md`).
+const SPATIAL_MODELS: &str = "the model is spatial: the joint-coordinate formulation holds planar trees, spatial models run in absolute coordinates";
+
 /// The next body not yet placed, as a free root of the tree (placed here).
 fn next_root(
     roots: &mut impl Iterator<Item = BodyIndex>,
@@ -193,6 +200,7 @@ fn joint_elements(model: &Model) -> Result<Vec<usize>, String> {
             ElementKind::RevoluteJoint | ElementKind::TranslationalJoint | ElementKind::FixedJoint => joints.push(e),
             ElementKind::AngleDriver | ElementKind::DisplacementDriver => {}
             ElementKind::AssemblyLock => return Err(format!("the assembly lock {:?} acts during the simulation", element.name)),
+            ElementKind::SpatialJoint(_) | ElementKind::SpatialAngleDriver | ElementKind::SpatialDisplacementDriver => return Err(SPATIAL_MODELS.to_string()),
         }
     }
     Ok(joints)
@@ -219,7 +227,7 @@ fn drivers_of(model: &Model, joints: &[usize]) -> Result<Vec<Option<(usize, Time
         let function = match &model.constraints[element.constraints.start].kind {
             ConstraintKind::RelativeAngle(c) => &c.target,
             ConstraintKind::AxialProjection(c) => &c.target,
-            ConstraintKind::PointCoincidence(_) => return Err(format!("the driver {:?} has no driven coordinate", element.name)),
+            _ => return Err(format!("the driver {:?} has no driven planar coordinate", element.name)),
         };
         let Target::Driven(function) = function else { return Err(format!("the driver {:?} prescribes no function", element.name)) };
         drivers[j] = Some((d, function.clone()));
@@ -241,6 +249,8 @@ fn edge_joint(model: &Model, e: usize, parent: BodyIndex) -> (EdgeJoint, bool) {
                     relative_angle = angle;
                 }
             }
+            // (spatial models never reach the tree: [`JointTree::of`] refuses them first)
+            _ => {}
         }
     }
     let (first, second) = points.expect("a revolute, translational or fixed joint has two joint points");
