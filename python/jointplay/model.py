@@ -31,6 +31,7 @@ from . import _core, resultsfile, runcost
 from . import parameters as p
 from .errors import ModelError, SimulationError
 from .functions import as_function
+from .model_spatial import SPATIAL_HINT, either, gravity3, kinematics_of, planar_only, spatial_only
 from .results import Results
 
 Vector = Sequence[Any]
@@ -58,11 +59,13 @@ def _where(section: str, name: str) -> str:
     return join(section, name)
 
 
-def _adds(table: p.Table, section: str, positional: int | None = None, summary: str = "") -> Callable[..., str]:
+def _adds(table: p.Table, section: str, positional: int | None = None, summary: str = "",
+          spec_section: str | None = None) -> Callable[..., str]:
     """The builder method that adds an element defined by ``table`` to ``section``: ``(self, name, key...)``
     with the table's keys (that the core reads) as arguments and their defaults, the first ``positional`` of
     them (all by default) positional too, the rest keyword-only (required ones first). Each value is read
-    as the model-file key (units, ranges, messages); it returns the element's name."""
+    as the model-file key (units, ranges, messages); it returns the element's name. ``spec_section``: the list
+    of the core's spec it goes to when not ``section`` (``spatial_bodies`` for a spatial model's ``bodies``)."""
     keys = [param for param in table.params if param.in_spec]
     n = len(keys) if positional is None else positional
     ordered = keys[:n] + sorted(keys[n:], key=lambda param: not param.required)
@@ -70,7 +73,8 @@ def _adds(table: p.Table, section: str, positional: int | None = None, summary: 
                  inspect.Parameter("name", inspect.Parameter.POSITIONAL_OR_KEYWORD, annotation="str")]
     for k, param in enumerate(ordered):
         how = inspect.Parameter.POSITIONAL_OR_KEYWORD if k < n else inspect.Parameter.KEYWORD_ONLY
-        default = inspect.Parameter.empty if param.required else None if param.kind == "points" else param.default
+        default = (inspect.Parameter.empty if param.required else None if param.kind in ("points", "markers")
+                   else param.default)
         arguments.append(inspect.Parameter(param.key, how, default=default))
     signature = inspect.Signature(arguments, return_annotation="str")
     hint = f"{table.name} joint: " if section == "joints" else f"{table.name}: " if table.tag else ""
@@ -78,7 +82,7 @@ def _adds(table: p.Table, section: str, positional: int | None = None, summary: 
     def add(self: Model, *args: Any, **kwargs: Any) -> str:
         values = signature.bind(self, *args, **kwargs).arguments
         del values["self"]
-        return self._add(section, table, values.pop("name"), values, hint)
+        return self._add(section, table, values.pop("name"), values, hint, spec_section)
 
     add.__signature__ = signature  # type: ignore[attr-defined]
     add.__name__ = f"add_{table.name}" if section != "bodies" else "add_body"
@@ -88,7 +92,7 @@ def _adds(table: p.Table, section: str, positional: int | None = None, summary: 
 
 
 class Model:
-    """A planar mechanism under construction.
+    """A planar or spatial mechanism under construction.
 
     Example::
 
@@ -97,13 +101,33 @@ class Model:
         m.add_body("bar", mass=1.0, inertia=0.02, position=(0.25, 0), points={"O": (-0.25, 0)})
         m.add_revolute("pin", "ground.O", "bar.O")
         results = m.simulate(2.0, output_step=1e-3)
+
+    ``kinematics="spatial"`` builds a spatial mechanism (docs/model-files.md, "Spatial models"): gravity, positions
+    and velocities have three components, a body has an inertia tensor and an orientation, points may carry axes::
+
+        m = Model("top", gravity=(0, 0, "-9.81 m/s^2"), kinematics="spatial")
+        m.add_ground_point("O", ("0 mm", "0 mm", "0 mm"))
+        m.add_body("top", mass="0.5 kg", inertia={"principal": ["1e-3 kg m^2", "1e-3 kg m^2", "1.5e-3 kg m^2"]},
+                   position=(0, 0, "50 mm"), orientation={"axis": (1, 0, 0), "angle": "10 deg"},
+                   points={"tip": (0, 0, "-50 mm")})
+        m.add_spherical("pivot", "ground.O", "top.tip")
     """
 
-    def __init__(self, name: str = p.DEFAULT_NAME, gravity: Vector = p.MODEL.default("gravity")):
-        self._spec: dict[str, Any] = {
-            "name": name, "gravity": _arg("ModelTable", "gravity", gravity, "model"),
-            "ground_points": [], "bodies": [], "beams": [], "joints": [], "drivers": [], "forces": [], "sensors": [],
-        }
+    def __init__(self, name: str = p.DEFAULT_NAME, gravity: Vector = p.MODEL.default("gravity"),
+                 kinematics: str = p.MODEL.default("kinematics")):
+        from .modelfile.spatial import empty_spec
+
+        kinematics = kinematics_of(kinematics)
+        if kinematics == "spatial":
+            self._spec: dict[str, Any] = empty_spec(name)
+            given = gravity is not p.MODEL.default("gravity")
+            self._spec["gravity"] = gravity3(gravity if given else p.SPATIAL_MODEL.default("gravity"))
+        else:
+            self._spec = {
+                "name": name, "gravity": _arg("ModelTable", "gravity", gravity, "model"),
+                "ground_points": [], "bodies": [], "beams": [], "joints": [], "drivers": [], "forces": [],
+                "sensors": [],
+            }
         self._core: Any = None
         self._run_inputs: tuple[dict, list] | None = None
 
@@ -129,25 +153,53 @@ class Model:
         """Name of the mechanism."""
         return self._spec["name"]
 
+    @property
+    def kinematics(self) -> str:
+        """``"planar"`` or ``"spatial"``."""
+        from .modelfile.spatial import is_spatial
+
+        return "spatial" if is_spatial(self._spec) else "planar"
+
     def set_gravity(self, gravity: Vector) -> Model:
-        """Gravitational acceleration [m/s^2], e.g. ``(0, -9.81)`` or ``(0, "-9.81 m/s^2")``."""
-        self._spec["gravity"] = _arg("ModelTable", "gravity", gravity, "model")
+        """Gravitational acceleration [m/s^2], e.g. ``(0, -9.81)`` or ``(0, "-9.81 m/s^2")``; three components
+        in a spatial model."""
+        if self.kinematics == "spatial":
+            self._spec["gravity"] = gravity3(gravity)
+        else:
+            self._spec["gravity"] = _arg("ModelTable", "gravity", gravity, "model")
         self._changed()
         return self
 
-    def add_ground_point(self, name: str, position: Vector) -> str:
-        """A named point of the ground [m]; returns its reference ``"ground.<name>"``."""
+    def add_ground_point(self, name: str, position: Vector, axes: Any = None) -> str:
+        """A named point of the ground [m]; returns its reference ``"ground.<name>"``. In a spatial model
+        ``position`` has three components and ``axes`` (an orientation, as a body's: ``{"axis": (0, 1, 0),
+        "angle": "90 deg"}``) gives the point a frame, whose z axis is the axis of a joint there."""
         from .modelfile import arguments
 
-        position = arguments.point(position, _where("ground.points", name))
-        self._spec["ground_points"].append({"name": name, "position": position})
+        where = _where("ground.points", name)
+        if self.kinematics == "spatial":
+            point = arguments.marker(position if axes is None else {"position": position, "axes": axes}, where)
+            self._spec["ground_points"].append({"name": name, **point})
+        elif axes is not None:
+            raise ModelError([(where, f"axes are for spatial models ({SPATIAL_HINT}); a planar point has none")])
+        else:
+            position = arguments.point(position, where)
+            self._spec["ground_points"].append({"name": name, "position": position})
         self._changed()
         return f"ground.{name}"
 
     # elements: their keys, defaults and docs are defined once, in jointplay.parameters
-    add_body = _adds(p.BODY, "bodies", summary="A rigid body, its frame at the centre of mass: mass, inertia "
+    _add_planar_body = _adds(p.BODY, "bodies", summary="A rigid body, its frame at the centre of mass: mass, inertia "
                      "about the centre of mass, approximate initial position, angle and velocities; named points "
                      "in body coordinates (``points={\"A\": (\"25 mm\", 0)}``).")
+    _add_spatial_body = _adds(p.SPATIAL_BODY, "bodies", spec_section="spatial_bodies", summary="A spatial rigid "
+                             "body, its frame at the centre of mass: mass, inertia tensor about the centre of mass "
+                             "(``{\"principal\": [...], \"axes\": <orientation>}`` or ``{\"tensor\": [[...], "
+                             "[...], [...]]}``), approximate initial position, orientation and velocities (the "
+                             "angular velocity in global components); named points in body coordinates, each a "
+                             "3-vector or ``{\"position\": [...], \"axes\": <orientation>}``.")
+    add_body = either(_add_planar_body, _add_spatial_body)
+    del _add_planar_body, _add_spatial_body
     add_beam = _adds(p.BEAM, "beams", positional=3, summary="A flexible link: a geometrically exact planar beam from "
                      "``start`` to ``end`` [m], straight and unstressed as described (a run starts it in the strain its loads give it); ``section`` from "
                      ":mod:`jointplay.sections` (``sections.rectangle(\"10 mm\", \"20 mm\")``) and ``material`` "
@@ -164,9 +216,18 @@ class Model:
                            "Linear modes without geometric stiffening: a body spun faster than its first bending "
                            "frequency (``check()[\"modal_bending_frequencies\"]``) diverges, and ``simulate`` warns "
                            "of a driver that does so.")
-    add_revolute = _adds(p.REVOLUTE, "joints")
-    add_translational = _adds(p.TRANSLATIONAL, "joints")
-    add_fixed = _adds(p.FIXED, "joints")
+    add_revolute = either(_adds(p.REVOLUTE, "joints"),
+                           _adds(p.SPATIAL_JOINTS["revolute"], "joints", spec_section="spatial_joints"))
+    add_translational = either(_adds(p.TRANSLATIONAL, "joints"),
+                                _adds(p.SPATIAL_JOINTS["translational"], "joints", spec_section="spatial_joints"))
+    add_fixed = either(_adds(p.FIXED, "joints"), _adds(p.SPATIAL_JOINTS["fixed"], "joints",
+                                                          spec_section="spatial_joints"))
+    add_spherical = spatial_only(_adds(p.SPATIAL_JOINTS["spherical"], "joints", spec_section="spatial_joints"),
+                                  "joints", "spherical")
+    add_cylindrical = spatial_only(_adds(p.SPATIAL_JOINTS["cylindrical"], "joints", spec_section="spatial_joints"),
+                                    "joints", "cylindrical")
+    add_universal = spatial_only(_adds(p.SPATIAL_JOINTS["universal"], "joints", spec_section="spatial_joints"),
+                                  "joints", "universal")
 
     def add_clearance_revolute(
             self, name: str, bearing: str, journal: str, *, bearing_radius: Quantity, clearance: Quantity,
@@ -219,28 +280,46 @@ class Model:
 
     def add_driver(self, name: str, joint: str, function: dict | Quantity) -> str:
         """Prescribes a joint coordinate over time: the relative angle of a revolute joint [rad] or the
-        displacement along a translational joint [m]; ``function`` from :mod:`jointplay.functions`
-        (its values may be strings with units, as in a model file) or a constant."""
-        kinds = {j["name"]: j["type"] for j in self._spec["joints"]}
-        kind = "length" if kinds.get(joint) == "translational" else "angle"
+        displacement along a translational joint [m] (in a spatial model also along a cylindrical joint);
+        ``function`` from :mod:`jointplay.functions` (its values may be strings with units, as in a model file)
+        or a constant."""
+        kinds = {j["name"]: j["type"] for j in self._spec["joints"] + self._spec.get("spatial_joints", [])}
+        kind = "length" if kinds.get(joint) in ("translational", "cylindrical") else "angle"
         self._spec["drivers"].append({"name": name, "joint": joint,
                                       "function": _function(function, kind, _where("drivers", name) + ".function")})
         self._changed()
         return name
 
-    add_spring_damper = _adds(p.SPRING_DAMPER, "forces", positional=2)
+    add_spring_damper = either(_adds(p.SPRING_DAMPER, "forces", positional=2),
+                                _adds(p.SPATIAL_SPRING_DAMPER, "forces", positional=2, spec_section="spatial_forces"))
     add_rotational_spring_damper = _adds(p.ROTATIONAL_SPRING_DAMPER, "forces", positional=2)
-    add_point_force = _adds(p.POINT_FORCE, "forces")
-    add_torque = _adds(p.TORQUE, "forces")
-    add_hydraulic_cylinder = _adds(p.HYDRAULIC_CYLINDER, "forces", positional=2)
+    add_point_force = either(_adds(p.POINT_FORCE, "forces"),
+                              _adds(p.SPATIAL_POINT_FORCE, "forces", spec_section="spatial_forces"))
+    add_torque = either(_adds(p.TORQUE, "forces"), _adds(p.SPATIAL_TORQUE, "forces", spec_section="spatial_forces"))
+    add_hydraulic_cylinder = either(_adds(p.HYDRAULIC_CYLINDER, "forces", positional=2),
+                                     _adds(p.HYDRAULIC_CYLINDER, "forces", positional=2, spec_section="spatial_forces"))
+    add_bushing = spatial_only(_adds(p.BUSHING, "forces", positional=2, spec_section="spatial_forces"), "forces",
+                                "bushing")
     add_strain_gauge = _adds(p.STRAIN_GAUGE, "sensors")
 
-    def _add(self, section: str, table: p.Table, name: str, values: dict[str, Any], hint: str) -> str:
+    # planar-only elements, refused in a spatial model with the message a model file gets
+    add_clearance_revolute = planar_only(add_clearance_revolute, lambda name: f"{_where('joints', name)}.type",
+                                          '"clearance_revolute" is')
+    add_rotational_spring_damper = planar_only(add_rotational_spring_damper,
+                                                lambda name: f"{_where('forces', name)}.type",
+                                                '"rotational_spring_damper" is')
+    add_beam = planar_only(add_beam, lambda name: _where("beams", name), "beams are")
+    add_modal_body = planar_only(add_modal_body, lambda name: _where("modal_bodies", name), "modal bodies are")
+    add_strain_gauge = planar_only(add_strain_gauge, lambda name: _where("sensors", name),
+                                    "sensors (strain gauges of beams and modal bodies) are")
+
+    def _add(self, section: str, table: p.Table, name: str, values: dict[str, Any], hint: str,
+             spec_section: str | None = None) -> str:
         from .modelfile import arguments
 
         where = _where(section, name)
         read = {"beams": arguments.beam, "modal_bodies": arguments.modal_body}.get(section, arguments.element)
-        self._spec.setdefault(section, []).append(read(table, name, values, where, hint))
+        self._spec.setdefault(spec_section or section, []).append(read(table, name, values, where, hint))
         self._changed()
         return name
 
@@ -262,17 +341,25 @@ class Model:
 
     def joint(self, name: str) -> dict:
         """The description of a joint, for editing in place (e.g. ``m.joint("B")["clearance"] = 1e-4``)."""
-        for j in self._spec["joints"]:
+        joints = self._spec["joints"] + self._spec.get("spatial_joints", [])
+        for j in joints:
             if j["name"] == name:
                 self._changed()
                 return j
-        raise KeyError(f"no joint named {name!r}; joints: {[j['name'] for j in self._spec['joints']]}")
+        raise KeyError(f"no joint named {name!r}; joints: {[j['name'] for j in joints]}")
 
     # plain data --------------------------------------------------------------
 
     def to_spec(self) -> dict:
-        """The model description as plain data (a deep copy)."""
-        return copy.deepcopy(self._spec)
+        """The model description as plain data (a deep copy): the core's spec (docs/model-files.md; a spatial
+        model's under ``spatial_bodies``, ``spatial_joints``, ``spatial_forces``, a spatial spring's free length
+        left out computed from the described positions)."""
+        spec = copy.deepcopy(self._spec)
+        if self.kinematics == "spatial":
+            from .modelfile.spatial import fill_free_lengths
+
+            fill_free_lengths(spec)
+        return spec
 
     @classmethod
     def from_spec(cls, spec: dict) -> Model:
@@ -282,8 +369,8 @@ class Model:
         return m
 
     def to_json(self) -> str:
-        """The description as JSON text."""
-        return json.dumps(self._spec, allow_nan=True)
+        """The description as JSON text: what :meth:`compile` sends to the core (:meth:`to_spec`)."""
+        return json.dumps(self.to_spec() if self.kinematics == "spatial" else self._spec, allow_nan=True)
 
     # pickling: by the description --------------------------------------------
 

@@ -56,7 +56,14 @@ REQUIRED: Any = _Required()
 #: inline, read by :mod:`jointplay.modelfile.matrices`). Inside a function of time, ``value`` and ``rate`` stand for the kind the
 #: function prescribes and its rate per second.
 STRUCTURED = ("vector", "point", "body", "joint", "text", "flag", "count", "choice", "function", "law", "table",
-              "points", "grid", "size", "list", "value", "rate", "variant", "arclengths", "nodes", "matrix")
+              "points", "grid", "size", "list", "value", "rate", "variant", "arclengths", "nodes", "matrix",
+              *("vector3", "orientation", "inertia_tensor", "markers", "function3"))
+#: Kinds of spatial models (:mod:`jointplay.orientation` reads them): ``vector3`` (three quantities of kind ``of``),
+#: ``orientation`` (axis and angle, Euler angles with their sequence, a rotation matrix or a quaternion; a unit
+#: quaternion ``[w, x, y, z]`` in the core's spec), ``inertia_tensor`` (principal moments with their axes, or a full
+#: tensor; a 3 x 3 tensor in the spec), ``markers`` (named points, each a 3-vector or a position with axes),
+#: ``function3`` (three functions of time whose values are of kind ``of``).
+SPATIAL_KINDS = STRUCTURED[-5:]
 
 
 @dataclass(frozen=True, eq=False)
@@ -227,12 +234,18 @@ def _point(key: str, doc: str, example: str = POINT) -> Param:
 
 # model, ground, bodies ------------------------------------------------------
 
+#: The kinematics of a model: ``[model] kinematics``.
+KINEMATICS = ("planar", "spatial")
+
 MODEL = Table("model", "Name, description and gravity of the mechanism.", (
     Param("name", "text", "name of the mechanism, written into the results", None, of="the model",
           default_text="the file name"),
     Param("description", "text", "free text (not used by the engine)", "", of="the model", in_spec=False),
     Param("gravity", "vector", 'gravitational acceleration, e.g. `[0, "-9.81 m/s^2"]`', (0.0, 0.0),
           of="acceleration"),
+    Param("kinematics", "choice", "`planar`: bodies move in the x-y plane; `spatial`: rigid bodies move in space, "
+          "with orientations, inertia tensors and spatial joints (docs/model-files.md, \"Spatial models\")",
+          "planar", of=KINEMATICS, in_spec=False, why="the engine's planar fast path"),
 ))
 
 GROUND = Table("ground", "Named points of the fixed frame, in global coordinates.", (
@@ -802,6 +815,122 @@ STRAIN_GAUGE = Table("strain_gauge", "Stress resultants of a beam's section at a
 SENSORS = family(STRAIN_GAUGE)
 
 
+# spatial models ---------------------------------------------------------------
+
+#: The identity orientation, a unit quaternion ``[w, x, y, z]``.
+IDENTITY_QUATERNION = (1.0, 0.0, 0.0, 0.0)
+_ORIENTATION_FORMS = ('`{ axis = [0, 0, 1], angle = "30 deg" }`, `{ euler = ["10 deg", "20 deg", "30 deg"], '
+                      'sequence = "ZXZ" }` (intrinsic; `"3-1-3"` also names it), `{ matrix = [[...], [...], [...]] }` '
+                      "(columns: the body's axes in global coordinates) or `{ quaternion = [w, x, y, z] }` (scalar "
+                      "first)")
+_MARKERS = ('named points in body coordinates, each `["x", "y", "z"]` or with a frame, `{ position = [...], axes = '
+            "<orientation> }` (the columns of its rotation matrix are the marker's x, y, z axes; a joint's axis is "
+            "its markers' z axis): `points = { A = [\"0 mm\", \"10 mm\", \"5 mm\"] }`")
+
+SPATIAL_MODEL = Table("model", "Name, description and gravity of a spatial mechanism (`kinematics = \"spatial\"`).", (
+    MODEL["name"], MODEL["description"],
+    Param("gravity", "vector3", 'gravitational acceleration, three components: `[0, 0, "-9.81 m/s^2"]`',
+          (0.0, 0.0, 0.0), of="acceleration"),
+    MODEL["kinematics"],
+))
+
+SPATIAL_GROUND = Table("ground", "Named points of the fixed frame of a spatial model, in global coordinates, each "
+                       "with its axes if a joint needs them.", (
+    Param("points", "markers", _MARKERS.replace("in body coordinates", "in global coordinates"), {}),
+))
+
+SPATIAL_BODY = Table("bodies", "A spatial rigid body; its frame is at its centre of mass (docs/model-files.md, "
+                     "\"Spatial models\").", (
+    BODY["mass"],
+    Param("inertia", "inertia_tensor", 'inertia tensor about the centre of mass in the body frame: principal moments '
+          'and their axes, `{ principal = ["1 kg m^2", "2 kg m^2", "2.5 kg m^2"], axes = <orientation> }` (axes '
+          'default: the body\'s), or `{ tensor = [[...], [...], [...]] }`; each principal moment at most the sum of '
+          "the other two", example='an inertia tensor, e.g. { principal = ["1 kg m^2", "2 kg m^2", "2.5 kg m^2"] }'),
+    Param("position", "vector3", "approximate initial position of the centre of mass (assembly makes the "
+          "configuration consistent)", (0.0, 0.0, 0.0), of="length"),
+    Param("orientation", "orientation", "approximate initial orientation, body to global: " + _ORIENTATION_FORMS,
+          IDENTITY_QUATERNION, default_text="identity (the body's axes are the global axes)"),
+    Param("velocity", "vector3", "approximate initial velocity of the centre of mass", (0.0, 0.0, 0.0),
+          of="velocity"),
+    Param("angular_velocity", "vector3", "approximate initial angular velocity, in GLOBAL components",
+          (0.0, 0.0, 0.0), of="angular velocity"),
+    Param("points", "markers", _MARKERS, {}),
+    BODY["free"],
+))
+
+_AXIS_NOTE = " The joint's axis is the common z axis of the two markers' frames (`axes` of the points)."
+
+SPATIAL_JOINTS = family(
+    Table("revolute", "Ideal hinge: the points coincide and only rotation about the common z axis is free." +
+          _AXIS_NOTE, _ENDS, tag="type"),
+    Table("spherical", "Ideal ball joint: the points coincide, every rotation is free.", _ENDS, tag="type"),
+    Table("cylindrical", "Translation along and rotation about the common z axis are free." + _AXIS_NOTE, _ENDS,
+          tag="type"),
+    Table("translational", "Ideal prism: translation along the common z axis is free, no rotation." + _AXIS_NOTE,
+          _ENDS, tag="type"),
+    Table("universal", "Cardan joint: the points coincide; rotations about the first marker's x axis and the second "
+          "marker's y axis are free.", _ENDS, tag="type"),
+    Table("fixed", "Ideal weld: the points coincide and the markers' frames keep their relative orientation.", _ENDS,
+          tag="type"),
+)
+
+#: Spatial joints a driver can prescribe, with the kind of the coordinate: the rotation about the z axis, or the
+#: displacement of the second marker's origin along the first marker's z axis.
+SPATIAL_DRIVEN = {"revolute": "angle", "cylindrical": "length", "translational": "length"}
+
+_FRAMES = ("global", "body")
+
+SPATIAL_SPRING_DAMPER = Table("spring_damper", "Linear spring and damper between two points, along their line, "
+                              "tension positive.", (
+    *_ENDS, SPRING_DAMPER["stiffness"], SPRING_DAMPER["damping"],
+    Param("free_length", "length", "length at which the spring is relaxed", None, ge=0,
+          default_text="the distance of the two points as described (computed by the front end)"),
+), tag="type")
+
+BUSHING = Table("bushing", "Six-component linear bushing between two points, in the first marker's frame: forces "
+                "from the relative displacement and velocity, moments from the small relative rotation (as a "
+                "rotation vector) and angular velocity.", (
+    *_ENDS,
+    Param("stiffness", "vector3", "translational stiffnesses along x, y, z", (0.0, 0.0, 0.0), ge=0, of="stiffness",
+          why="none unless given"),
+    Param("damping", "vector3", "translational damping coefficients", (0.0, 0.0, 0.0), ge=0, of="damping",
+          why="none unless given"),
+    Param("rotational_stiffness", "vector3", "rotational stiffnesses about x, y, z", (0.0, 0.0, 0.0), ge=0,
+          of="rotational stiffness", why="none unless given"),
+    Param("rotational_damping", "vector3", "rotational damping coefficients", (0.0, 0.0, 0.0), ge=0,
+          of="rotational damping", why="none unless given"),
+), tag="type")
+
+_FRAME_DOC = "`global`: components along the global axes; `body`: along the axes of the body, turning with it"
+
+SPATIAL_POINT_FORCE = Table("point_force", "A force at a point, three components (numbers or functions of time).", (
+    _point("point", "point of application"),
+    Param("force", "function3", 'force components `[fx, fy, fz]`, e.g. `["10 N", 0, { kind = "sine", ... }]`',
+          (0.0, 0.0, 0.0), of="force"),
+    Param("frame", "choice", _FRAME_DOC, "global", of=_FRAMES),
+), tag="type")
+
+SPATIAL_TORQUE = Table("torque", "A torque on a body, three components (numbers or functions of time).", (
+    TORQUE["body"],
+    Param("torque", "function3", 'torque components `[tx, ty, tz]`', (0.0, 0.0, 0.0), of="torque"),
+    Param("frame", "choice", _FRAME_DOC, "global", of=_FRAMES),
+), tag="type")
+
+SPATIAL_FORCES = family(SPATIAL_SPRING_DAMPER, BUSHING, SPATIAL_POINT_FORCE, SPATIAL_TORQUE, HYDRAULIC_CYLINDER)
+
+#: What a spatial model does not have, by section: the words of a tagged table, or None for the whole section.
+PLANAR_ONLY = {"joints": ("clearance_revolute",), "forces": ("rotational_spring_damper",), "beams": None,
+               "modal_bodies": None, "sensors": None}
+
+
+def spatial_tables() -> list[Table]:
+    """Every table of a spatial model that :func:`all_tables` does not list (the tests check each against the
+    schema, the builder and the writer)."""
+    shared = {id(t) for t in all_tables()}
+    tables = [SPATIAL_MODEL, SPATIAL_GROUND, SPATIAL_BODY, *variants(SPATIAL_JOINTS), *variants(SPATIAL_FORCES)]
+    return [t for t in tables if id(t) not in shared]
+
+
 # simulation -----------------------------------------------------------------
 
 METHODS = ("dopri5", "adams", "bdf", "generalized_alpha")
@@ -895,7 +1024,7 @@ def unit(param: Param) -> str:
     """The SI unit of a key's values (``"m/s"``), ``""`` for plain numbers and non-quantities."""
     from .units import KINDS
 
-    kind = param.of if param.kind in ("vector", "function", "list") else param.kind
+    kind = param.of if param.kind in ("vector", "function", "list", "vector3", "function3") else param.kind
     spec = KINDS.get(kind) if isinstance(kind, str) else None
     return spec.si.replace("*", " ") if spec is not None else ""
 

@@ -27,7 +27,8 @@ from .overrides import apply_overrides, parse_assignment
 from .plausibility import plausibility
 from .writer import to_toml as _spec_to_toml
 
-__all__ = ["apply_overrides", "load", "loads", "parse_assignment", "plausibility", "read_document", "to_toml"]
+__all__ = ["apply_overrides", "load", "loads", "parse_assignment", "plausibility", "read_document", "read_spec",
+           "spec_of_document", "to_toml"]
 
 
 def read_document(path: str | Path) -> dict:
@@ -115,18 +116,30 @@ def loads(text: str, overrides: list[str] | dict[str, Any] | None = None, *, nam
     return from_document(parse_text(text), overrides, name=name, check=check)
 
 
+def read_spec(path: str | Path, overrides: list[str] | dict[str, Any] | None = None) -> tuple[dict, dict]:
+    """The core's spec (plain data in SI units, as :meth:`jointplay.Model.to_spec` gives and
+    :meth:`jointplay.Model.to_json` sends to the core) and the ``[simulation]`` defaults of a model file, every
+    table checked but nothing compiled; raises ModelError."""
+    return spec_of_document(read_document(path), overrides, name=Path(path).stem, base=Path(path).parent)
+
+
+def spec_of_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME,
+                     base: Path | None = None) -> tuple[dict, dict]:
+    """:func:`read_spec` of an already parsed document."""
+    check_depth(doc, "the model")
+    if overrides:
+        doc = apply_overrides(doc, overrides)
+        check_depth(doc, "the model")
+    return Builder(doc, default_name=name, base=base).run().result()
+
+
 def from_document(doc: dict, overrides=None, *, name: str = DEFAULT_NAME, check: bool = True,
                   base: Path | None = None):
     """A Model from an already parsed document; files it names (a modal body's matrices) are found from
     ``base`` (default: the working folder)."""
     from ..model import Model
 
-    check_depth(doc, "the model")
-    if overrides:
-        doc = apply_overrides(doc, overrides)
-        check_depth(doc, "the model")
-    builder = Builder(doc, default_name=name, base=base).run()
-    spec, simulation = builder.result()
+    spec, simulation = spec_of_document(doc, overrides, name=name, base=base)
     model = Model.from_spec(spec)
     model.simulation = simulation
     description = doc.get("model", {}).get("description") if isinstance(doc.get("model"), dict) else None
@@ -176,8 +189,10 @@ def to_toml(model, header: str | None = None) -> str:
     return _spec_to_toml(model.to_spec(), getattr(model, "simulation", None), header)
 
 
-_INDEXED = re.compile(r"^(ground_points|bodies|beams|modal_bodies|joints|drivers|forces|sensors)\[(\d+)\]"
-                      r"(?:\.(points|interface)\[(\d+)\])?")
+_INDEXED = re.compile(r"^(ground_points|bodies|beams|modal_bodies|joints|drivers|forces|sensors|spatial_bodies"
+                      r"|spatial_joints|spatial_forces)\[(\d+)\](?:\.(points|interface)\[(\d+)\])?")
+#: The file's section of each section of a spatial model's spec.
+_FILE_SECTION = {"spatial_bodies": "bodies", "spatial_joints": "joints", "spatial_forces": "forces"}
 
 
 def core_location(location: str, spec: dict) -> str:
@@ -193,7 +208,7 @@ def core_location(location: str, spec: dict) -> str:
         if section == "ground_points":
             head = join("ground", "points", entry["name"])
         else:
-            head = join(section, entry["name"])
+            head = join(_FILE_SECTION.get(section, section), entry["name"])
             if point is not None:
                 head = join(head, points, entry[points][int(point)]["name"])
     except (KeyError, IndexError):
@@ -206,9 +221,9 @@ def body_location(name: str | None, spec: dict) -> str:
     """The table of a named body, beam or modal body (``bodies.crank``); ``model`` when unknown."""
     from .fields import join
 
-    for section in ("bodies", "beams", "modal_bodies"):
-        if name and any(e["name"] == name for e in spec.get(section, [])):
-            return join(section, name)
+    for section in ("bodies", "beams", "modal_bodies", "spatial_bodies"):
+        if name and any(e["name"] == name for e in spec.get(section) or []):
+            return join(_FILE_SECTION.get(section, section), name)
     return "model"
 
 
@@ -219,7 +234,7 @@ def element_location(element: str | None, spec: dict) -> str:
     if not element:
         return "model"
     name = element.removesuffix(" (assembly lock)")
-    for section in ("joints", "drivers", "forces", "sensors", "bodies", "beams", "modal_bodies"):
-        if any(e["name"] == name for e in spec.get(section, [])):
-            return join(section, name)
+    for section in ("joints", "drivers", "forces", "sensors", "bodies", "beams", "modal_bodies", *_FILE_SECTION):
+        if any(e["name"] == name for e in spec.get(section) or []):
+            return join(_FILE_SECTION.get(section, section), name)
     return "model"

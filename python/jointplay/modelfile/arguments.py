@@ -54,6 +54,19 @@ def point(raw: Any, where: str) -> list[float]:
     return [float(x), float(y)]
 
 
+def marker(raw: Any, where: str) -> dict:
+    """A point of a spatial model, ``("x", "y", "z")`` or ``{"position": (...), "axes": <orientation>}``, as the
+    core's ``{"position", "axes"}`` (axes None: the body's)."""
+    from ..orientation import OrientationError
+    from ..orientation import marker as read
+
+    try:
+        position, axes = read(raw)
+    except OrientationError as exc:
+        raise ModelError([Problem(join(where, *exc.at), exc.message)]) from None
+    return {"position": position, "axes": axes}
+
+
 def points(raw: dict[str, Any] | None, where: str) -> list[dict]:
     """Named points of a body, ``{"A": ("25 mm", 0)}``, as the core's list."""
     return [{"name": name, "position": point(p, join(where, "points", name))} for name, p in (raw or {}).items()]

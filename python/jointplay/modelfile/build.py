@@ -58,6 +58,11 @@ class Builder:
         return self
 
     def sections(self) -> None:
+        from .spatial import SpatialSections, kinematics_of
+
+        if kinematics_of(self.doc) == "spatial":
+            SpatialSections(self).run()
+            return
         self.model_table()
         self.ground()
         self.bodies()
@@ -191,6 +196,11 @@ class Builder:
             return self.arclengths(value, location)
         elif kind == "vector":
             return [float(v) for v in value]
+        elif kind in p.SPATIAL_KINDS:
+            from .spatial import read_value
+
+            read = read_value(self, param, value, location)
+            return _FAILED if read is None else read
         elif kind == "flag":
             return bool(value)
         return float(value) if isinstance(value, float) else value

@@ -98,6 +98,21 @@ def vector(kind: str | Kind) -> Any:
     return Annotated[tuple[float, float], PlainValidator(lambda raw: _vector(raw, kind))]
 
 
+def _vector3(raw: Any, kind: str, bounds: dict[str, Any]) -> tuple[float, float, float]:
+    from ..orientation import OrientationError
+    from ..orientation import vector3 as read
+
+    try:
+        return tuple(read(raw, kind, **bounds))
+    except OrientationError as exc:
+        raise fail(exc.message) from None
+
+
+def vector3(kind: str, **bounds: Any) -> Any:
+    """An annotated field type: three quantities ``[x, y, z]`` of ``kind`` (spatial models)."""
+    return Annotated[tuple[float, float, float], PlainValidator(lambda raw: _vector3(raw, kind, bounds))]
+
+
 def _name_text(raw: Any, what: str) -> str:
     if not isinstance(raw, str):
         raise fail(f"must be a string naming {what}, got {_show(raw)}")

@@ -50,6 +50,11 @@ def kind_text(param: p.Param) -> str:
         "function": lambda: ("function of time: an angle [rad] or a length [m]" if of == "coordinate"
                              else f"function of time: {_quantity(of)}"),
         "value": lambda: "value", "rate": lambda: "value per second",
+        "vector3": lambda: f"{_quantity(of)} vector `[x, y, z]`",
+        "orientation": lambda: "orientation: `axis` and `angle`, `euler` and `sequence`, `matrix` or `quaternion`",
+        "inertia_tensor": lambda: "inertia tensor [kg m^2]: `principal` and `axes`, or `tensor`",
+        "markers": lambda: "table of named points [m]: `[x, y, z]` or `{ position, axes }`",
+        "function3": lambda: f"three functions of time: {_quantity(of)}",
         "list": lambda: ("list: coefficient k in value/s^k" if of == "powers" else "list of values"
                          if of == "value" else f"list of {_quantity(of)}"),
     }
@@ -141,8 +146,38 @@ def text() -> str:
               *_family(p.FORCES, "###"),
               "## `[sensors.NAME]`\n\nEvery sensor has a `type`; its channels are `<name>.<quantity>`.",
               *_family(p.SENSORS, "###"),
-              table_text(p.SIMULATION, "## `[simulation]`")]
+              table_text(p.SIMULATION, "## `[simulation]`"),
+              *spatial_blocks()]
     return "\n\n".join(blocks) + "\n"
+
+
+SPATIAL_HEADER = """## Spatial models
+
+`[model] kinematics = "spatial"` makes the model spatial: its `[bodies.NAME]` are spatial rigid bodies, its
+joints and force elements those below, gravity and every position and velocity have three components
+(docs/model-files.md, "Spatial models"). Drivers and `[simulation]` are as in a planar model (a driver
+prescribes the rotation of a revolute joint about its axis, or the displacement along a translational or
+cylindrical joint). Clearance joints, rotational spring-dampers, beams, modal bodies and sensors are planar
+only. An orientation is one of `{ axis = [0, 0, 1], angle = "30 deg" }`, `{ euler = ["10 deg", "20 deg",
+"30 deg"], sequence = "ZXZ" }` (the twelve intrinsic sequences, upper case; `"3-1-3"` names `"ZXZ"`),
+`{ matrix = [[...], [...], [...]] }` (orthonormal, determinant +1, within 1e-6) or `{ quaternion = [w, x, y,
+z] }` (scalar first, normalised)."""
+
+
+def spatial_blocks() -> list[str]:
+    """The tables of spatial models, each variant that planar models do not share."""
+    shared = {id(t) for t in p.all_tables()}
+    return [SPATIAL_HEADER,
+            table_text(p.SPATIAL_MODEL, "### `[model]` of a spatial model"),
+            table_text(p.SPATIAL_GROUND, "### `[ground]` of a spatial model"),
+            table_text(p.SPATIAL_BODY, "### `[bodies.NAME]` of a spatial model"),
+            "### `[joints.NAME]` of a spatial model\n\nEvery joint has a `type`; `first` and `second` are points "
+            "with frames where the joint needs an axis.",
+            *_family(p.SPATIAL_JOINTS, "####"),
+            "### `[forces.NAME]` of a spatial model\n\nEvery force element has a `type`; `hydraulic_cylinder` "
+            "is the planar one's table, between two points in space.",
+            *[table_text(t, f'#### `type = "{t.name}"`') for t in p.variants(p.SPATIAL_FORCES)
+              if id(t) not in shared]]
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -15,7 +15,7 @@ from pydantic import Field, PlainValidator, create_model
 
 from .. import parameters as p
 from ..units import KINDS, Kind, per_time
-from .fields import Flag, Q, Strict, choice, count, fail, quantity, text, vector
+from .fields import Flag, Q, Strict, choice, count, fail, quantity, text, vector, vector3
 
 #: What a reference names, in the message of a value that is not a string.
 _NAMES = {"point": "a point", "body": "a body", "joint": "a joint"}
@@ -41,7 +41,7 @@ def _req(kind: str) -> Any:
 def unit_kind(param: p.Param, value: Kind | None = None) -> Kind | None:
     """The kind of physical quantity of a key (of its components, for a vector), None for other keys;
     ``value`` is the kind a function of time prescribes."""
-    kind = param.of if param.kind == "vector" else param.kind
+    kind = param.of if param.kind in ("vector", "vector3") else param.kind
     if kind == "value":
         return value
     if kind == "rate":
@@ -54,13 +54,15 @@ def field_type(param: p.Param, value: Kind | None = None) -> Any:
     kind = unit_kind(param, value)
     if param.kind == "vector":
         return vector(kind)
+    if param.kind == "vector3":
+        return vector3(param.of, **param.bounds)
     if kind is not None:
         return quantity(kind, **param.bounds)
     if param.kind in _NAMES:
         return text(_NAMES[param.kind])
     simple = {"text": lambda: text(param.of), "flag": lambda: Flag, "count": lambda: count(**param.bounds), "size": lambda: Size,
               "choice": lambda: choice(*param.of, aliases=dict(param.aliases)),
-              "points": lambda: dict[str, Any]}
+              "points": lambda: dict[str, Any], "markers": lambda: dict[str, Any]}
     if param.kind in simple:
         return simple[param.kind]()
     if param.kind == "table" and not param.apart:
@@ -82,13 +84,13 @@ def field_default(param: p.Param, sparse: bool, value: Kind | None = None) -> An
     if sparse or param.default is None:
         return None
     kind = unit_kind(param, value)
-    if param.kind == "vector":
+    if param.kind in ("vector", "vector3"):
         return tuple(_q(v, kind) for v in param.default)
     if kind is not None:
         return _q(param.default, kind)
     if param.kind == "table" and not param.apart:
         return table_class(param.of).model_validate(param.default)
-    if param.kind in ("points", "arclengths", "nodes"):
+    if param.kind in ("points", "arclengths", "nodes", "markers"):
         return Field(default_factory=dict)
     return param.default
 
@@ -122,6 +124,11 @@ TranslationalTable = table_class(p.TRANSLATIONAL)
 DriverTable = table_class(p.DRIVER)
 LubricationTable = table_class(p.LUBRICATION)
 SimulationTable = table_class(p.SIMULATION)
+
+SpatialModelTable = table_class(p.SPATIAL_MODEL)
+SpatialBodyTable = table_class(p.SPATIAL_BODY)
+SPATIAL_JOINTS = classes(p.SPATIAL_JOINTS)
+SPATIAL_FORCES = classes(p.SPATIAL_FORCES)
 
 JOINTS = classes(p.JOINTS)
 FORCES = classes(p.FORCES)

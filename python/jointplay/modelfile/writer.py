@@ -145,7 +145,33 @@ def _value_of(param: p.Param, value: Any) -> Any:
         return {name: v if isinstance(v, int) else quantity(v, "length") for name, v in value.items()}
     if param.kind == "flag":
         return bool(value)
+    if param.kind in p.SPATIAL_KINDS:
+        return _spatial_value(param, value)
     return value
+
+
+def _spatial_value(param: p.Param, value: Any) -> Any:
+    """The TOML value of a key of a spatial kind: an orientation as its quaternion and an inertia as its tensor
+    (both exactly as the spec holds them), a point with axes as its position and rotation matrix."""
+    if param.kind == "vector3":
+        return vec(value, param.of)
+    if param.kind == "orientation":
+        return {"quaternion": [float(v) for v in value]}
+    if param.kind == "inertia_tensor":
+        return {"tensor": [vec(row, "inertia") for row in value]}
+    if param.kind == "function3":
+        return [function(f, param.of) if isinstance(f, dict) else quantity(f, param.of) for f in value]
+    return _markers(value)
+
+
+def _markers(points: list[dict]) -> dict:
+    """Named points of a spatial model: a 3-vector, or a position with the marker's axes as a matrix."""
+    out = {}
+    for point in points:
+        position = vec(point["position"], "length")
+        axes = point.get("axes")
+        out[point["name"]] = position if axes is None else {"position": position, "axes": {"matrix": axes}}
+    return out
 
 
 def _beam(beam: dict) -> dict:
@@ -214,7 +240,8 @@ def _element(table: p.Table, entry: dict) -> dict:
 def _referenced_bodies(spec: dict) -> set[str]:
     """The bodies that a joint or force element refers to (by a point or by name)."""
     out = set()
-    for section, tables in (("joints", p.JOINTS), ("forces", p.FORCES)):  # not sensors: they only observe
+    for section, tables in (("joints", p.JOINTS), ("forces", p.FORCES), ("spatial_joints", p.SPATIAL_JOINTS),
+                            ("spatial_forces", p.SPATIAL_FORCES)):  # not sensors: they only observe
         for entry in spec.get(section, []):
             for param in tables[entry["type"]].params:
                 value = entry.get(param.key)
@@ -225,11 +252,34 @@ def _referenced_bodies(spec: dict) -> set[str]:
     return out
 
 
+def _spatial_blocks(spec: dict) -> list[str]:
+    """The tables of a spatial model (``kinematics = "spatial"``), from ``[model]`` to ``[forces]``."""
+    model = {**_element(p.SPATIAL_MODEL, {"name": p.DEFAULT_NAME, **spec}), "kinematics": "spatial"}
+    blocks = [_table("model", model)]
+    if spec.get("ground_points"):
+        blocks.append(_table("ground", {"points": _markers(spec["ground_points"])}))
+    referenced = _referenced_bodies(spec)
+    for b in spec["spatial_bodies"]:
+        free = {"free": True} if b["name"] not in referenced else {}
+        blocks.append(_table(f"bodies.{_key(b['name'])}", {**_element(p.SPATIAL_BODY, b), **free}))
+    joint_types = {j["name"]: j["type"] for j in spec.get("spatial_joints", [])}
+    for j in spec.get("spatial_joints", []):
+        blocks.append(_table(f"joints.{_key(j['name'])}", _element(p.SPATIAL_JOINTS[j["type"]], j)))
+    for d in spec.get("drivers", []):
+        kind = p.SPATIAL_DRIVEN.get(joint_types.get(d["joint"], "revolute"), "angle")
+        blocks.append(_table(f"drivers.{_key(d['name'])}", {"joint": d["joint"], "function": function(d["function"], kind)}))
+    for f in spec.get("spatial_forces", []):
+        blocks.append(_table(f"forces.{_key(f['name'])}", _element(p.SPATIAL_FORCES[f["type"]], f)))
+    return blocks
+
+
 def to_toml(spec: dict, simulation: dict | None = None, header: str | None = None) -> str:
     """Model-file text for a core spec (as ``Model.to_spec()`` returns) and simulation defaults."""
     blocks = []
     if header:
         blocks.append("\n".join(f"# {line}".rstrip() for line in header.splitlines()))
+    if spec.get("spatial_bodies") is not None:
+        return _finish(blocks + _spatial_blocks(spec), simulation)
     blocks.append(_table("model", _element(p.MODEL, {"name": p.DEFAULT_NAME, **spec})))
     if spec.get("ground_points"):
         blocks.append(_table("ground", {"points": _points(spec["ground_points"])}))
@@ -253,6 +303,11 @@ def to_toml(spec: dict, simulation: dict | None = None, header: str | None = Non
         blocks.append(_table(f"forces.{_key(f['name'])}", _element(p.FORCES[f["type"]], f)))
     for sensor in spec.get("sensors", []):
         blocks.append(_table(f"sensors.{_key(sensor['name'])}", _element(p.SENSORS[sensor["type"]], sensor)))
+    return _finish(blocks, simulation)
+
+
+def _finish(blocks: list[str], simulation: dict | None) -> str:
+    """The text of ``blocks`` with the ``[simulation]`` table of the defaults ``simulation``."""
     sim = {key: _value_of(p.SIMULATION[key], value) for key, value in (simulation or {}).items()}
     if any(v is not None for v in sim.values()):
         blocks.append(_table("simulation", sim))
