@@ -212,10 +212,11 @@ def test_a_bad_inertia_is_reported_with_the_violated_condition(raw, at, message)
 R_Y90 = [[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]  # 90 deg about y: body z along global x
 
 
-def _body(name, mass, inertia, position, points, orientation=(1.0, 0.0, 0.0, 0.0), angular_velocity=(0, 0, 0)):
+def _body(name, mass, inertia, position, points, orientation=(1.0, 0.0, 0.0, 0.0), angular_velocity=(0, 0, 0),
+          euler_sequence="zyx"):
     return {"name": name, "mass": mass, "inertia": inertia, "position": list(position),
             "orientation": list(orientation), "velocity": [0.0, 0.0, 0.0],
-            "angular_velocity": list(angular_velocity), "points": points}
+            "angular_velocity": list(angular_velocity), "points": points, "euler_sequence": euler_sequence}
 
 
 def _point(name, position, axes=None):
@@ -241,7 +242,7 @@ EXPECTED = {
                _point("A", (0, 0, 0.02))],
               orientation=(0.0, 1.0, 0.0, 0.0), angular_velocity=(2 * math.pi, 0, 0)),
         _body("rod", 0.5, [[4e-3, 1e-5, 0], [1e-5, 4e-3, 0], [0, 0, 1e-4]], (0.1, 0.05, 0.04),
-              [_point("A", (0, 0, -0.11)), _point("B", (0, 0, 0.11), R_Y90)], orientation=(0.5, 0.5, 0.5, 0.5)),
+              [_point("A", (0, 0, -0.11)), _point("B", (0, 0, 0.11), R_Y90)], orientation=(0.5, 0.5, 0.5, 0.5), euler_sequence="zxz"),
         _body("slider", 2.0, np.diag([1e-4] * 3).tolist(), (0.2, 0, 0),
               [_point("B", (0, 0, 0)), _point("S", (0, 0, 0), R_Y90), _point("W", (0, 0, 0.01))]),
         _body("weight", 0.3, np.diag([2e-5, 2e-5, 3e-5]).tolist(), (0.2, 0, 0.01), [_point("W", (0, 0, 0))]),
@@ -532,7 +533,7 @@ JOINT = '[joints.j]\ntype = "spherical"\nfirst = "ground.O"\nsecond = "b.A"\n'
     (HEAD + BODY + 'angle = "10 deg"\nposition = [0, 0]\n' + JOINT,
      ['bodies.b.position: must be three components [x, y, z] (e.g. ["0.5 mm", 0, 0]), got [0, 0]',
       'bodies.b.angle: unknown key; spatial body: allowed: mass, inertia, position, orientation, velocity, '
-      "angular_velocity, points, free"]),
+      "angular_velocity, points, euler_sequence, free"]),
     (HEAD + BODY + JOINT.replace("spherical", "spherica"),
      ['joints.j.type: must be one of revolute, spherical, cylindrical, translational, universal, fixed, got '
       "'spherica' (did you mean \"spherical\"?)"]),

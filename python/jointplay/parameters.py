@@ -32,6 +32,8 @@ from dataclasses import replace as _replace
 from typing import Any
 
 from ._core import MAX_REYNOLDS_GRID_NODES as _MAX_GRID_NODES
+from .orientation import EULER_ALIASES as _EULER_ALIASES
+from .orientation import EULER_SEQUENCES as _EULER_SEQUENCES
 from .resultsfile import DEFAULT_MAX_FILE_BYTES, DEFAULT_MAX_MEMORY_BYTES, format_size
 
 
@@ -855,6 +857,11 @@ SPATIAL_BODY = Table("bodies", "A spatial rigid body; its frame is at its centre
     Param("angular_velocity", "vector3", "approximate initial angular velocity, in GLOBAL components",
           (0.0, 0.0, 0.0), of="angular velocity"),
     Param("points", "markers", _MARKERS, {}),
+    Param("euler_sequence", "choice", "intrinsic Euler sequence of the body's orientation channels "
+          "(`euler_<sequence>_1` to `_3`), e.g. `zxz` (also written `ZXZ` or `3-1-3`)", "zyx",
+          why="3-2-1 (yaw, pitch, roll) has no gimbal lock at the identity, where bodies often start",
+          of=tuple(s.lower() for s in _EULER_SEQUENCES),
+          aliases=tuple((alias, name.lower()) for alias, name in _EULER_ALIASES.items())),
     BODY["free"],
 ))
 

@@ -217,7 +217,7 @@ fn accelerations_follow_newton_and_euler_equations() {
     let f = [1.0, -2.0, 0.5, 0.3, -0.7, 0.2];
     let (mut from_block, mut from_body) = (f, [0.0; 6]);
     program.solve(factor, &mut from_block);
-    factored.solve_mass(&f, &mut from_body);
+    factored.solve_inverse_mass(&f, &mut from_body);
     assert_eq!(from_block, from_body);
     let mut mass = Mat3::zeros().resize(6, 6, 0.0);
     mass.view_mut((0, 0), (3, 3)).copy_from(&(Mat3::identity() * 2.5));

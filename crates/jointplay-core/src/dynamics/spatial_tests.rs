@@ -27,7 +27,7 @@ fn body(name: &str, mass: f64, inertia: Mat3, position: [f64; 3], orientation: [
     format!(
         r#"{{"name": "{name}", "mass": {mass}, "inertia": [[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]],
             "position": [{}, {}, {}], "orientation": [{}, {}, {}, {}], "velocity": [0, 0, 0], "angular_velocity": [{}, {}, {}],
-            "points": [{}]}}"#,
+            "points": [{}], "euler_sequence": "ZYX"}}"#,
         j[(0, 0)], j[(0, 1)], j[(0, 2)], j[(1, 0)], j[(1, 1)], j[(1, 2)], j[(2, 0)], j[(2, 1)], j[(2, 2)],
         position[0], position[1], position[2], orientation[0], orientation[1], orientation[2], orientation[3], omega[0], omega[1], omega[2],
         points.join(", ")

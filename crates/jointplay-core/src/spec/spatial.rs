@@ -56,6 +56,8 @@ pub struct SpatialBodySpec {
     pub angular_velocity: [f64; 3],
     /// Named points with frames in body coordinates.
     pub points: Vec<SpatialPointSpec>,
+    /// Intrinsic Euler sequence of its orientation channels (`"ZYX"`, `"ZXZ"`, ...).
+    pub euler_sequence: String,
 }
 
 /// An ideal joint between two marker frames (`"body.point"`), whose common

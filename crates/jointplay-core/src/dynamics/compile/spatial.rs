@@ -10,6 +10,7 @@ use crate::dynamics::model::{Body, ElementKind, VelocityStart};
 use crate::force::{Bushing, ForceElement, LoadFrame, LoadKind, PrescribedLoad, SpatialSpringDamper};
 use crate::joint::{AxisDistance, AxisRotation, ConstraintKind, PerpendicularAxes, SpatialPointCoincidence, Target};
 use crate::kinematics::marker::{BodyIndex, Marker, Site, SpatialMarker};
+use crate::kinematics::euler::EulerSequence;
 use crate::kinematics::quaternion;
 use crate::kinematics::spatial::{Mat3, Vec3};
 use crate::spec::{LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec};
@@ -41,13 +42,17 @@ impl<'s> Compiler<'s> {
         self.claim_name(&b.name, &format!("{loc}.name"));
         self.positive(b.mass, format!("{loc}.mass"), "mass");
         let inertia = Mat3::from_fn(|i, j| b.inertia[i][j]);
-        let body = match SpatialRigidBody::new(b.mass, inertia) {
+        let mut body = match SpatialRigidBody::new(b.mass, inertia) {
             Ok(body) => body,
             Err(message) => {
                 self.errors.push(format!("{loc}.inertia"), message);
                 return;
             }
         };
+        match EulerSequence::parse(&b.euler_sequence) {
+            Some(sequence) => body.euler_sequence = sequence,
+            None => self.errors.push(format!("{loc}.euler_sequence"), format!("must be three of the axes X, Y, Z, each different from the next (\"ZXZ\"), got {:?}", b.euler_sequence)),
+        }
         let mut orientation = b.orientation;
         let norm = orientation.iter().map(|c| c * c).sum::<f64>().sqrt();
         if !(norm.is_finite() && norm > 0.0) {
