@@ -358,12 +358,10 @@ impl BeamBody {
 }
 
 impl BodyModel for BeamBody {
-    #[inline]
     fn nq(&self) -> usize {
         self.n_coordinates()
     }
 
-    #[inline]
     fn nv(&self) -> usize {
         self.n_coordinates()
     }
@@ -384,7 +382,6 @@ impl BodyModel for BeamBody {
     }
 
     /// The rigid frame's rows `scale [1, 0, -(A s)_y]`, `scale [0, 1, (A s)_x]` spread over the nodes.
-    #[inline]
     fn marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, scale: f64, jx: &mut [f64], jy: &mut [f64]) {
         let s = frame.rotate(marker.local) * scale;
         jx.fill(0.0);
@@ -401,20 +398,17 @@ impl BodyModel for BeamBody {
     }
 
     /// `along . [[1, 0, -(A s)_y], [0, 1, (A s)_x]]` spread over the nodes.
-    #[inline]
     fn add_marker_jacobian(&self, _body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]) {
         let s = frame.rotate(marker.local);
         Self::spread(Self::section(marker), [along.x, along.y, along.dot(&perp(s))], out);
     }
 
     /// `scale` on every node's angle, with its weight.
-    #[inline]
     fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]) {
         Self::spread(Self::section(marker), [0.0, 0.0, scale], out);
     }
 
     /// `-omega^2 A s` of the section's frame, whose coordinates are linear in the nodes' [m/s^2].
-    #[inline]
     fn marker_bias_acceleration(&self, _body: &Frame, frame: &Frame, marker: &Marker) -> Vec2 {
         point_acceleration(frame, &[0.0; 3], marker.local)
     }
@@ -426,13 +420,11 @@ impl BodyModel for BeamBody {
     }
 
     /// The section's interpolated accelerations, then the rigid formula.
-    #[inline]
     fn marker_acceleration(&self, _body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2 {
         point_acceleration(frame, &Self::section_accelerations(Self::section(marker), a), marker.local)
     }
 
     /// The section's interpolated angular acceleration [rad/s^2].
-    #[inline]
     fn marker_angular_acceleration(&self, _frame: &Frame, a: &[f64], marker: &Marker) -> f64 {
         Self::section_accelerations(Self::section(marker), a)[2]
     }
@@ -451,13 +443,11 @@ impl BodyModel for BeamBody {
     }
 
     /// The internal forces.
-    #[inline]
     fn has_body_forces(&self) -> bool {
         true
     }
 
     /// Minus the internal forces (nodal coordinates in the inertial frame: M is constant, no inertial terms).
-    #[inline]
     fn add_body_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]) {
         self.subtract_internal_forces(q, v, out);
     }
@@ -483,14 +473,12 @@ impl BodyModel for BeamBody {
     }
 
     /// The force and its moment about the section's origin, spread over the nodes.
-    #[inline]
     fn add_point_force(&self, _body: &Frame, frame: &Frame, marker: &Marker, p: Vec2, f: Vec2, out: &mut [f64]) {
         let site = Self::section(marker);
         Self::spread(site, [f.x, f.y, cross(p - frame.position, f)], &mut out[site.first as usize..]);
     }
 
     /// The moment on the nodes' angles, spread with the weights.
-    #[inline]
     fn add_moment(&self, marker: &Marker, m: f64, out: &mut [f64]) {
         let site = Self::section(marker);
         Self::spread(site, [0.0, 0.0, m], &mut out[site.first as usize..]);
@@ -501,7 +489,6 @@ impl BodyModel for BeamBody {
     }
 
     /// The weight on the nodes' positions.
-    #[inline]
     fn add_gravity(&self, g: Vec3, _q: &[f64], out: &mut [f64]) {
         for (node, m) in out.chunks_exact_mut(3).zip(&self.node_masses) {
             node[0] += m * g.x;

@@ -290,8 +290,8 @@ macro_rules! bodies {
 
         impl BodyModel for BodyKind {
             forward! { [$($kind)+];
-                #[inline] fn nq(&self) -> usize;
-                #[inline] fn nv(&self) -> usize;
+                fn nq(&self) -> usize;
+                fn nv(&self) -> usize;
                 #[inline] fn frame(&self, q: &[f64], v: &[f64], previous: &Frame) -> Frame;
                 #[inline] fn update_frame(&self, q: &[f64], v: &[f64], frame: &mut Frame);
                 #[inline] fn site_frame(&self, site: &Site, q: &[f64], v: &[f64], previous: &Frame) -> Frame;
@@ -299,15 +299,15 @@ macro_rules! bodies {
                 fn marker_coordinates(&self, marker: &Marker) -> Range<usize>;
                 #[inline(always)] fn add_marker_jacobian(&self, body: &Frame, frame: &Frame, marker: &Marker, along: Vec2, out: &mut [f64]);
                 #[inline(always)] fn add_marker_angle_jacobian(&self, marker: &Marker, scale: f64, out: &mut [f64]);
-                #[inline] fn marker_bias_acceleration(&self, body: &Frame, frame: &Frame, marker: &Marker) -> Vec2;
+                #[inline(always)] fn marker_bias_acceleration(&self, body: &Frame, frame: &Frame, marker: &Marker) -> Vec2;
                 #[inline] fn marker_bias_angular_acceleration(&self, frame: &Frame, marker: &Marker) -> f64;
                 #[inline] fn marker_acceleration(&self, body: &Frame, frame: &Frame, a: &[f64], marker: &Marker) -> Vec2;
                 #[inline] fn marker_angular_acceleration(&self, frame: &Frame, a: &[f64], marker: &Marker) -> f64;
                 #[inline] fn mass_block(&self) -> MassBlock<'_>;
                 fn mass_scratch_len(&self) -> usize;
                 #[inline] fn solve_mass(&self, q: &[f64], f: &[f64], out: &mut [f64], scratch: &mut [f64]);
-                #[inline] fn has_identity_position_rates(&self) -> bool;
-                #[inline] fn has_body_forces(&self) -> bool;
+                fn has_identity_position_rates(&self) -> bool;
+                fn has_body_forces(&self) -> bool;
                 #[inline] fn add_body_forces(&self, q: &[f64], v: &[f64], out: &mut [f64]);
                 #[inline] fn position_rates(&self, q: &[f64], v: &[f64], qdot: &mut [f64]);
                 fn rigid_motion_velocities(&self, q: &[f64], velocity: Vec2, angular_velocity: f64, v: &mut [f64]);

@@ -566,12 +566,10 @@ impl ModalBody {
 }
 
 impl BodyModel for ModalBody {
-    #[inline]
     fn nq(&self) -> usize {
         self.n_coordinates()
     }
 
-    #[inline]
     fn nv(&self) -> usize {
         self.n_coordinates()
     }
@@ -664,7 +662,6 @@ impl BodyModel for ModalBody {
     }
 
     /// Dependent on the modal amplitudes.
-    #[inline]
     fn mass_block(&self) -> MassBlock<'_> {
         MassBlock::ConfigurationDependent
     }
@@ -694,7 +691,6 @@ impl BodyModel for ModalBody {
     }
 
     /// The quadratic velocity vector, elastic and damping forces.
-    #[inline]
     fn has_body_forces(&self) -> bool {
         true
     }
