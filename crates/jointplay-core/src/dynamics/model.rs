@@ -134,7 +134,7 @@ pub struct IdealElement {
     /// Indices of its constraints in `Model::constraints`.
     pub constraints: std::ops::Range<usize>,
     /// The first and the second marker frame of a spatial joint or driver.
-    pub spatial_markers: Option<[SpatialMarker; 2]>,
+    pub spatial_markers: Option<Box<[SpatialMarker; 2]>>,
 }
 
 /// The compiled mechanism. Built by [`super::compile`]; never changes.

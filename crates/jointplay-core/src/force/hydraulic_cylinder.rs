@@ -32,7 +32,7 @@ pub struct CylinderActuator {
     pub rod_inflow: Option<TimeFunction>,
     /// The attachments as markers in space (a cylinder of a spatial model),
     /// read instead of `first` and `second`.
-    pub spatial_attachments: Option<[SpatialMarker; 2]>,
+    pub spatial_attachments: Option<Box<[SpatialMarker; 2]>>,
 }
 
 /// The attachment line at one instant (in the plane z = 0 for a planar cylinder).
@@ -61,7 +61,7 @@ impl CylinderActuator {
 
     /// The attachment points and their velocities [m, m/s].
     fn attachments(&self, frames: &Frames<'_>) -> ([Vec3; 2], Vec3) {
-        match &self.spatial_attachments {
+        match self.spatial_attachments.as_deref() {
             Some([a, b]) => ([frames.point(a), frames.point(b)], frames.point_velocity(b) - frames.point_velocity(a)),
             None => {
                 let (fi, fj) = (&frames.planar[self.first.frame], &frames.planar[self.second.frame]);
@@ -83,7 +83,7 @@ impl CylinderActuator {
 
     /// Pushes the attachments apart with `push` [N] along the line.
     fn push_apart(&self, frames: &Frames<'_>, line: &Line, push: Vec3, forces: &mut GeneralisedForces) {
-        match &self.spatial_attachments {
+        match self.spatial_attachments.as_deref() {
             Some([a, b]) => {
                 let force = |f: Vec3| Wrench { force: f, moment: Vec3::zeros() };
                 forces.add_wrench(b, line.points[1], &force(push));

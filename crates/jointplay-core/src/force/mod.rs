@@ -142,12 +142,13 @@ pub enum ForceElement {
     HydraulicCylinder(CylinderActuator),
     /// Revolute joint with radial clearance (dry contact, optional film), with its contact onset as event.
     ClearanceRevolute(ClearanceRevolute),
-    /// Linear spring-damper between two points in space.
-    SpatialSpringDamper(SpatialSpringDamper),
+    /// Linear spring-damper between two points in space (the spatial elements
+    /// are boxed, so that planar ones stay small in the element list).
+    SpatialSpringDamper(Box<SpatialSpringDamper>),
     /// Six-component spring-damper between two marker frames.
-    Bushing(Bushing),
+    Bushing(Box<Bushing>),
     /// Prescribed force or torque in space.
-    PrescribedLoad(PrescribedLoad),
+    PrescribedLoad(Box<PrescribedLoad>),
 }
 
 impl ForceElement {

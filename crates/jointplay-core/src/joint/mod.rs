@@ -67,14 +67,16 @@ pub enum ConstraintKind {
     RelativeAngle(RelativeAngle),
     /// Displacement along a body-fixed direction prescribed (1 equation).
     AxialProjection(AxialProjection),
-    /// Two points coincide in space (3 equations).
-    SpatialPointCoincidence(SpatialPointCoincidence),
+    /// Two points coincide in space (3 equations). (The spatial primitives are
+    /// boxed: their markers carry frames, and an unboxed variant would make every
+    /// planar constraint as large, which the planar hot loop pays for.)
+    SpatialPointCoincidence(Box<SpatialPointCoincidence>),
     /// An axis of one marker stays perpendicular to an axis of another (1 equation).
-    PerpendicularAxes(PerpendicularAxes),
+    PerpendicularAxes(Box<PerpendicularAxes>),
     /// Distance along an axis of the first marker prescribed (1 equation).
-    AxisDistance(AxisDistance),
+    AxisDistance(Box<AxisDistance>),
     /// Rotation about the first marker's z axis prescribed (1 equation).
-    AxisRotation(AxisRotation),
+    AxisRotation(Box<AxisRotation>),
 }
 
 /// Where a constraint writes its equations for one evaluation, and the

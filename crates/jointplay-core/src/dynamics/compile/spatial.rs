@@ -121,7 +121,7 @@ impl<'s> Compiler<'s> {
         }
         let kinds = joint_equations(j.kind, a, b);
         let element = self.add_element(&j.name, ElementKind::SpatialJoint(j.kind), a.planar(), b.planar(), Default::default(), kinds);
-        self.model.elements[element].spatial_markers = Some([a, b]);
+        self.model.elements[element].spatial_markers = Some(Box::new([a, b]));
         self.spatial_joint_index.insert(&j.name, SpatialJointEntry { kind: j.kind, markers: [a, b] });
         self.ideal_channels(element, &j.name);
     }
@@ -133,11 +133,11 @@ impl<'s> Compiler<'s> {
         let [a, b] = entry.markers;
         let (kind, constraint) = match entry.kind {
             SpatialJointKind::Revolute | SpatialJointKind::Cylindrical => {
-                (ElementKind::SpatialAngleDriver, ConstraintKind::AxisRotation(AxisRotation { first: a, second: b, target: Target::Driven(function) }))
+                (ElementKind::SpatialAngleDriver, ConstraintKind::AxisRotation(Box::new(AxisRotation { first: a, second: b, target: Target::Driven(function) })))
             }
             SpatialJointKind::Translational => (
                 ElementKind::SpatialDisplacementDriver,
-                ConstraintKind::AxisDistance(AxisDistance { first: a, second: b, axis: 2, target: Target::Driven(function) }),
+                ConstraintKind::AxisDistance(Box::new(AxisDistance { first: a, second: b, axis: 2, target: Target::Driven(function) })),
             ),
             other => {
                 self.errors.push(format!("{loc}.joint"), format!("joint {joint:?} is a {} joint and cannot be driven (revolute, cylindrical and translational joints can)", other.name()));
@@ -145,7 +145,7 @@ impl<'s> Compiler<'s> {
             }
         };
         let element = self.add_element(name, kind, a.planar(), b.planar(), Default::default(), vec![constraint]);
-        self.model.elements[element].spatial_markers = Some([a, b]);
+        self.model.elements[element].spatial_markers = Some(Box::new([a, b]));
         self.ideal_channels(element, name);
     }
 
@@ -166,7 +166,7 @@ impl<'s> Compiler<'s> {
                 let (a, b) = (self.spatial_point(first, format!("{loc}.first")), self.spatial_point(second, format!("{loc}.second")));
                 self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping"), (*free_length, "free_length")], loc);
                 let element = SpatialSpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_length: *free_length };
-                Some((name, ForceElement::SpatialSpringDamper(element), Vec::new()))
+                Some((name, ForceElement::SpatialSpringDamper(Box::new(element)), Vec::new()))
             }
             SpatialForceSpec::Bushing { name, first, second, stiffness, damping, rotational_stiffness, rotational_damping } => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -184,19 +184,19 @@ impl<'s> Compiler<'s> {
                     rotational_stiffness: Vec3::from(*rotational_stiffness),
                     rotational_damping: Vec3::from(*rotational_damping),
                 };
-                Some((name, ForceElement::Bushing(element), Vec::new()))
+                Some((name, ForceElement::Bushing(Box::new(element)), Vec::new()))
             }
             SpatialForceSpec::PointForce { name, point, force, frame } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let marker = self.spatial_point(point, format!("{loc}.point"));
                 let components = self.functions(force, &format!("{loc}.force"));
-                Some((name, ForceElement::PrescribedLoad(PrescribedLoad { marker: marker?, kind: LoadKind::Force, frame: load_frame(*frame), components: components? }), Vec::new()))
+                Some((name, ForceElement::PrescribedLoad(Box::new(PrescribedLoad { marker: marker?, kind: LoadKind::Force, frame: load_frame(*frame), components: components? })), Vec::new()))
             }
             SpatialForceSpec::Torque { name, body, torque, frame } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let marker = self.spatial_body_marker(body, format!("{loc}.body"));
                 let components = self.functions(torque, &format!("{loc}.torque"));
-                Some((name, ForceElement::PrescribedLoad(PrescribedLoad { marker: marker?, kind: LoadKind::Torque, frame: load_frame(*frame), components: components? }), Vec::new()))
+                Some((name, ForceElement::PrescribedLoad(Box::new(PrescribedLoad { marker: marker?, kind: LoadKind::Torque, frame: load_frame(*frame), components: components? })), Vec::new()))
             }
             SpatialForceSpec::HydraulicCylinder(c) => {
                 self.claim_name(&c.name, &format!("{loc}.name"));
@@ -204,7 +204,7 @@ impl<'s> Compiler<'s> {
                 let (a, b) = (a?, b?);
                 let length = (self.initial_spatial_point(b) - self.initial_spatial_point(a)).norm();
                 let (mut element, states) = build_cylinder(c, (a.planar(), b.planar()), length, loc, &mut self.errors)?;
-                element.spatial_attachments = Some([a, b]);
+                element.spatial_attachments = Some(Box::new([a, b]));
                 Some((&c.name, ForceElement::HydraulicCylinder(element), states))
             }
         }
@@ -228,9 +228,9 @@ impl<'s> Compiler<'s> {
 
 /// The primitives of a joint between the marker frames `a` and `b`.
 fn joint_equations(kind: SpatialJointKind, a: SpatialMarker, b: SpatialMarker) -> Vec<ConstraintKind> {
-    let point = || ConstraintKind::SpatialPointCoincidence(SpatialPointCoincidence { first: a, second: b });
-    let perpendicular = |first_axis, second_axis| ConstraintKind::PerpendicularAxes(PerpendicularAxes { first: a, second: b, first_axis, second_axis });
-    let on_axis = |axis| ConstraintKind::AxisDistance(AxisDistance { first: a, second: b, axis, target: Target::Fixed(0.0) });
+    let point = || ConstraintKind::SpatialPointCoincidence(Box::new(SpatialPointCoincidence { first: a, second: b }));
+    let perpendicular = |first_axis, second_axis| ConstraintKind::PerpendicularAxes(Box::new(PerpendicularAxes { first: a, second: b, first_axis, second_axis }));
+    let on_axis = |axis| ConstraintKind::AxisDistance(Box::new(AxisDistance { first: a, second: b, axis, target: Target::Fixed(0.0) }));
     // (z_a stays normal to x_b and y_b: the z axes stay aligned; x_a normal to y_b: no turning about them)
     match kind {
         SpatialJointKind::Spherical => vec![point()],
