@@ -16,10 +16,15 @@ mod beams;
 mod laws;
 mod lubrication;
 mod modal;
+mod keys;
+mod range;
+pub mod ranges;
 
 pub use beams::{BeamMaterialSpec, BeamMeshSpec, BeamPointSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec, SensorSpec};
 pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
 pub use lubrication::{CavitationSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
+pub use keys::{table_keys, TableKey, TableKeys};
+pub use range::Range;
 pub use modal::{ModalBodySpec, ModalPointSpec, ModalStructureSpec, SparseMatrixSpec, StructureMatricesSpec};
 use serde::{Deserialize, Serialize};
 
