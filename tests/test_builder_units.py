@@ -98,7 +98,7 @@ def test_laws_written_by_hand_take_units_and_are_checked():
     with pytest.raises(jp.ModelError) as info:
         m.add_clearance_revolute("B3", "slider.B", "rod.B", bearing_radius="10 mm", clearance="0.1 mm",
                                  contact=laws.lankarani_nikravesh(1.5))
-    assert [str(p) for p in info.value.problems] == ["joints.B3.contact.restitution: must lie in (0, 1], got 1.5"]
+    assert [str(p) for p in info.value.problems] == ["joints.B3.contact.restitution: must lie in [0, 1], got 1.5"]
 
 
 def test_nan_gives_the_same_message_in_python_and_in_a_file():
@@ -115,7 +115,7 @@ def test_core_errors_name_the_element_not_its_index():
     m.joint("B")["clearance"] = -1e-4  # edited in place: only the core sees it
     with pytest.raises(jp.ModelError) as info:
         m.compile()
-    assert str(info.value.problems[0]) == "joints.B.clearance: clearance must be > 0, got -0.0001"
+    assert str(info.value.problems[0]) == "joints.B.clearance: must be > 0, got -0.0001 m"
     assert {p.location for p in info.value.problems} == {"joints.B.clearance", "joints.B.stiffness"}
 
 

@@ -40,7 +40,7 @@ def problems(overrides: list[str], path: Path = DRY) -> list[str]:
      "coefficient is reached after the static one), got 0.5 mm/s"),
     ("joints.B.clearance=-0.1 mm", "joints.B.clearance: must be > 0, got -0.1 mm"),
     ("bodies.crank.mass=0", "bodies.crank.mass: must be > 0, got 0 kg"),
-    ("joints.B.contact.restitution=1.5", "joints.B.contact.restitution: must lie in (0, 1], got 1.5"),
+    ("joints.B.contact.restitution=1.5", "joints.B.contact.restitution: must lie in [0, 1], got 1.5"),
     ("joints.B.bearing_material.poisson_ratio=0.7",
      "joints.B.bearing_material.poisson_ratio: must lie in (-1, 0.5), got 0.7"),
 ])
@@ -152,8 +152,18 @@ def test_every_problem_is_reported_at_once():
 
 
 def test_core_index_locations_are_mapped_to_names():
+    # a bound between two tables (the film thickness against the joint's clearance) only the core checks
+    film = ('joints.B.lubrication={ model = "hamrock_short", viscosity = "400 cP", transition = { law = '
+            '"wang_improved", safe_film_thickness = "1 mm" } }')
+    found = problems(["joints.B.length=20 mm", film])
+    assert found == ["joints.B.lubrication.transition.safe_film_thickness: must be smaller than the clearance "
+                     "0.0005 m, got 0.001 m"]
+
+
+def test_a_full_friction_velocity_below_the_dead_band_is_refused_at_its_key():
     found = problems(["joints.B.friction.v1=1e-5 m/s"])
-    assert found == ["joints.B.friction: full-friction velocity v1 must be finite and > v0 = 0.0001 m/s, got 0.00001"]
+    assert found == ["joints.B.friction.v1: must be greater than v0 = 1e-4 m/s (friction rises from none at v0 to "
+                     "full at v1), got 1e-5 m/s"]
 
 
 def test_invalid_toml_and_missing_file_are_model_errors(tmp_path):

@@ -270,7 +270,7 @@ EXPECTED = {
          "torque": [_constant(0.0), _constant(-0.5), _constant(0.0)]},
         {"type": "hydraulic_cylinder", "name": "ram", "first": "ground.C", "second": "collar.T", "piston_area": 2e-3,
          "rod_side_area": 1e-3, "stroke_length": 0.2, "cap_dead_volume": 1e-4, "rod_dead_volume": 1e-4,
-         "initial_stroke": 0.05, "cap_pressure": 0.0, "rod_pressure": 0.0, "bulk_modulus": 1.5e9,
+         "initial_stroke": 0.02, "cap_pressure": 0.0, "rod_pressure": 0.0, "bulk_modulus": 1.5e9,
          "seal_friction": None, "cap_inflow": None, "rod_inflow": None},
     ],
 }

@@ -22,6 +22,10 @@ files and the builder check it, the reference lists it. A new law family goes in
 line per law in :mod:`jointplay.laws`. Then
 regenerate ``docs/model-file-reference.md`` and use every new key in ``tests/fixtures/every_key.toml``
 (``tests/test_parameters.py`` says what is missing).
+
+The ranges (``gt``, ``ge``, ``lt``, ``le``) are the core's too: ``python -m jointplay.boundary`` writes them into
+``crates/jointplay-core/src/spec/ranges.rs``, whose constants the core's checks use, and
+``tests/test_parameter_boundary.py`` compares the keys, the defaults and the ranges with the core's own.
 """
 
 from __future__ import annotations
@@ -281,21 +285,27 @@ MATERIAL = Table("material", "An elastic material.", (
 #: Structural steel, E = 207 GPa, nu = 0.3: the default material of a clearance joint.
 STEEL = {"youngs_modulus": 207e9, "poisson_ratio": 0.3}
 
+#: The coefficient of restitution e of a law whose hysteresis factor D(e) divides by e (Flores, Gonthier, Hu-Guo:
+#: D is infinite at e = 0, docs/theory/contact-flores.md).
 RESTITUTION = Param("restitution", "dimensionless", "coefficient of restitution e", gt=0, le=1, interval="(0, 1]",
                     example="a coefficient of restitution in (0, 1], e.g. 0.9")
+#: The coefficient of restitution of a law whose D(e) is finite at e = 0 (Hunt-Crossley, Lankarani-Nikravesh).
+RESTITUTION_FROM_ZERO = _replace(RESTITUTION, gt=None, ge=0, interval="[0, 1]",
+                                 example="a coefficient of restitution in [0, 1], e.g. 0.9")
 
 
-def _damped(name: str, doc: str) -> Table:
-    return Table(name, doc, (RESTITUTION,), tag="law")
+def _damped(name: str, doc: str, restitution: Param = RESTITUTION) -> Table:
+    return Table(name, doc, (restitution,), tag="law")
 
 
 CONTACT_LAWS = family(
     Table("hertz", "Elastic Hertz contact, no dissipation.", tag="law"),
-    _damped("hunt_crossley", "Hunt-Crossley, D = 3(1-e)/2."),
-    _damped("lankarani_nikravesh", "Lankarani-Nikravesh, D = 3(1-e^2)/4 (accurate for e near 1)."),
-    _damped("flores", "Flores et al. 2011, D = 8(1-e)/(5e) (for any e)."),
-    _damped("gonthier", "Gonthier et al. 2004."),
-    _damped("hu_guo", "Hu and Guo 2015."),
+    _damped("hunt_crossley", "Hunt-Crossley, D = 3(1-e)/2.", RESTITUTION_FROM_ZERO),
+    _damped("lankarani_nikravesh", "Lankarani-Nikravesh, D = 3(1-e^2)/4 (accurate for e near 1).",
+            RESTITUTION_FROM_ZERO),
+    _damped("flores", "Flores et al. 2011, D = 8(1-e)/(5e) (for any e > 0)."),
+    _damped("gonthier", "Gonthier et al. 2004, D = (1-e^2)/e."),
+    _damped("hu_guo", "Hu and Guo 2015, D = 3(1-e)/(2e)."),
 )
 
 #: The exponent n of the Hertz-type law K delta^n when none is given: 1.5, for metals (the core's
@@ -325,7 +335,8 @@ FRICTION_LAWS = family(
         COEFFICIENT,
         Param("v0", "velocity", "end of the dead band", 1e-4, ge=0, why=FLORES_BAND),
         Param("v1", "velocity", "speed of full friction (> v0)", 1e-3, gt=0, why=FLORES_BAND),
-    ), tag="law"),
+    ), tag="law", relations=(
+        Relation("v1", ">", "v0", "friction rises from none at v0 to full at v1"),)),
     Table("threlfall", "Threlfall: mu F_n (1 - exp(-3|v|/v0)).", (
         COEFFICIENT,
         Param("v0", "velocity", "speed at which 95 % of mu F_n is reached", 1e-3, gt=0),
@@ -445,9 +456,11 @@ LUBRICATION = Table("lubrication", "A lubricant film in the clearance (docs/theo
           f"axial count must be even; at most {f'{_MAX_GRID_NODES:,}'.replace(',', ' ')} nodes "
           "`around x (along/2 + 1)` (solver memory and time)", None,
           default_text=f"the solver's, `[{REYNOLDS_GRID[0]}, {REYNOLDS_GRID[1]}]`"),
-    Param("ambient_pressure", "pressure", "Reynolds models only: gauge pressure at the bearing ends", 0.0),
+    Param("ambient_pressure", "pressure", "Reynolds models only: gauge pressure at the bearing ends, not below the "
+          "cavitation pressure (gauge 0)", 0.0, ge=0),
     Param("groove_supply_pressure", "pressure", "Reynolds models only, `reynolds_exact` only: a circumferential "
-          "groove at mid-length held at this pressure (paper 000)", None, default_text="no groove"),
+          "groove at mid-length held at this pressure (paper 000), not below the cavitation pressure (gauge 0)",
+          None, ge=0, default_text="no groove"),
 ))
 
 

@@ -134,6 +134,14 @@ fn compile_model(py: Python<'_>, spec_json: &str) -> PyResult<(Option<CoreModel>
     })
 }
 
+/// The keys of every table of the model description as the core reads them: `(table, [(key, optional)])`,
+/// tables named `"bodies"`, `"forces.spring_damper"`, `"contact.flores"` (`jointplay_core::spec::table_keys`).
+#[pyfunction]
+fn spec_tables() -> PyResult<Vec<(String, Vec<(String, bool)>)>> {
+    let tables = jointplay_core::spec::table_keys().map_err(pyo3::exceptions::PyRuntimeError::new_err)?;
+    Ok(tables.into_iter().map(|(table, keys)| (table, keys.into_iter().map(|k| (k.key, k.optional)).collect())).collect())
+}
+
 #[pymethods]
 impl CoreModel {
     /// Summary of the compiled mechanism (bodies, elements, coordinates, dof, channels).
@@ -308,6 +316,7 @@ impl CoreModel {
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<CoreModel>()?;
     m.add_function(wrap_pyfunction!(compile_model, m)?)?;
+    m.add_function(wrap_pyfunction!(spec_tables, m)?)?;
     m.add_function(wrap_pyfunction!(bearing::reynolds_solve, m)?)?;
     m.add_function(wrap_pyfunction!(bearing::steady_bearing, m)?)?;
     bearing::add_constants(m)?;

@@ -29,6 +29,8 @@ pub use johnson_line::JohnsonLine;
 pub use material::Material;
 pub use rogers_andrews::RogersAndrews;
 
+use crate::spec::{ranges, Range};
+
 /// Dissipative normal force law: which hysteresis factor `D(e)` multiplies
 /// the penetration rate.
 ///
@@ -66,27 +68,29 @@ pub enum NormalForceLaw {
 }
 
 impl NormalForceLaw {
-    /// Checks the coefficient of restitution and returns the law unchanged.
+    /// The coefficient of restitution with its allowed range (defined in
+    /// `python/jointplay/parameters.py`, [`crate::spec::ranges`]); none for Hertz.
     ///
-    /// Hunt-Crossley and Lankarani-Nikravesh accept `0 <= e <= 1`; the laws
-    /// that divide by `e` (Flores, Gonthier, Hu-Guo) need `0 < e <= 1`.
+    /// Hunt-Crossley and Lankarani-Nikravesh accept `0 <= e <= 1` (`D(0)` is
+    /// finite); the laws that divide by `e` (Flores, Gonthier, Hu-Guo) need
+    /// `0 < e <= 1`.
+    pub fn restitution(&self) -> Option<(Range, f64)> {
+        match *self {
+            Self::Hertz => None,
+            Self::HuntCrossley { restitution } => Some((ranges::CONTACT_HUNT_CROSSLEY_RESTITUTION, restitution)),
+            Self::LankaraniNikravesh { restitution } => Some((ranges::CONTACT_LANKARANI_NIKRAVESH_RESTITUTION, restitution)),
+            Self::Flores { restitution } => Some((ranges::CONTACT_FLORES_RESTITUTION, restitution)),
+            Self::Gonthier { restitution } => Some((ranges::CONTACT_GONTHIER_RESTITUTION, restitution)),
+            Self::HuGuo { restitution } => Some((ranges::CONTACT_HU_GUO_RESTITUTION, restitution)),
+        }
+    }
+
+    /// Checks the coefficient of restitution against its range
+    /// ([`Self::restitution`]) and returns the law unchanged.
     pub fn validated(self) -> Result<Self, String> {
-        let (restitution, allows_zero) = match self {
-            Self::Hertz => return Ok(self),
-            Self::HuntCrossley { restitution } | Self::LankaraniNikravesh { restitution } => {
-                (restitution, true)
-            }
-            Self::Flores { restitution }
-            | Self::Gonthier { restitution }
-            | Self::HuGuo { restitution } => (restitution, false),
-        };
-        let lower_ok = if allows_zero { restitution >= 0.0 } else { restitution > 0.0 };
-        if restitution.is_finite() && lower_ok && restitution <= 1.0 {
-            Ok(self)
-        } else if allows_zero {
-            Err(format!("restitution must be in [0, 1], got {restitution}"))
-        } else {
-            Err(format!("restitution must be in (0, 1], got {restitution}"))
+        match self.restitution() {
+            None => Ok(self),
+            Some((range, restitution)) => range.check(restitution).map(|_| self).map_err(|message| format!("restitution {message}")),
         }
     }
 
@@ -196,9 +200,11 @@ mod tests {
     #[test]
     fn test_validated_rejects_restitution_out_of_range() {
         let error = NormalForceLaw::Flores { restitution: 0.0 }.validated().unwrap_err();
-        assert_eq!(error, "restitution must be in (0, 1], got 0");
+        assert_eq!(error, "restitution must lie in (0, 1], got 0");
         let error = NormalForceLaw::HuntCrossley { restitution: 1.5 }.validated().unwrap_err();
-        assert_eq!(error, "restitution must be in [0, 1], got 1.5");
+        assert_eq!(error, "restitution must lie in [0, 1], got 1.5");
+        // D(0) = 3/2 is finite for Hunt-Crossley: a perfectly plastic impact is a valid input there
+        assert!(NormalForceLaw::HuntCrossley { restitution: 0.0 }.validated().is_ok());
         assert!(NormalForceLaw::HuntCrossley { restitution: 0.0 }.validated().is_ok());
         assert!(NormalForceLaw::Gonthier { restitution: f64::NAN }.validated().is_err());
     }

@@ -15,7 +15,7 @@ use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
 use super::joint_coordinates::JointTree;
-use crate::spec::{BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, PointSpec, SensorSpec, GROUND};
+use crate::spec::{ranges, Range, BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, PointSpec, SensorSpec, GROUND};
 
 #[path = "compile/beams.rs"]
 mod beams;
@@ -148,12 +148,6 @@ impl<'s> Compiler<'s> {
         }
     }
 
-    fn positive(&mut self, value: f64, location: String, what: &str) {
-        if !(value.is_finite() && value > 0.0) {
-            self.errors.push(location, format!("{what} must be > 0, got {value}"));
-        }
-    }
-
     fn bodies(&mut self) {
         self.body_index.insert(GROUND, BodyIndex::GROUND);
         for (k, p) in self.spec.ground_points.iter().enumerate() {
@@ -162,8 +156,7 @@ impl<'s> Compiler<'s> {
         for (k, b) in self.spec.bodies.iter().enumerate() {
             let loc = format!("bodies[{k}]");
             self.claim_name(&b.name, &format!("{loc}.name"));
-            self.positive(b.mass, format!("{loc}.mass"), "mass");
-            self.positive(b.inertia, format!("{loc}.inertia"), "inertia");
+            Range::check_all(&[(ranges::BODIES_MASS, b.mass), (ranges::BODIES_INERTIA, b.inertia)], &loc, &mut self.errors);
             let index = BodyIndex(k + 1);
             self.body_index.insert(&b.name, index);
             let kind = BodyKind::PlanarRigid(PlanarRigidBody::new(b.mass, b.inertia));
@@ -401,16 +394,18 @@ impl<'s> Compiler<'s> {
         self.claim_name(&c.name, &format!("{loc}.name"));
         let a = self.point(&c.bearing, format!("{loc}.bearing"));
         let b = self.point(&c.journal, format!("{loc}.journal"));
-        self.positive(c.bearing_radius, format!("{loc}.bearing_radius"), "bearing radius");
-        self.positive(c.clearance, format!("{loc}.clearance"), "clearance");
+        let given = [
+            (ranges::JOINTS_CLEARANCE_REVOLUTE_BEARING_RADIUS, Some(c.bearing_radius)),
+            (ranges::JOINTS_CLEARANCE_REVOLUTE_CLEARANCE, Some(c.clearance)),
+            (ranges::JOINTS_CLEARANCE_REVOLUTE_ONSET_VELOCITY_FLOOR, Some(c.onset_velocity_floor)),
+            (ranges::JOINTS_CLEARANCE_REVOLUTE_MAX_PENETRATION, c.max_penetration),
+        ];
+        Range::check_given(&given, loc, &mut self.errors);
         if c.clearance.is_finite() && c.bearing_radius.is_finite() && c.clearance >= c.bearing_radius && c.clearance > 0.0 {
             self.errors.push(
                 format!("{loc}.clearance"),
                 format!("must be smaller than the bearing radius {} m (the journal radius would be <= 0), got {} m", c.bearing_radius, c.clearance),
             );
-        }
-        if !(c.onset_velocity_floor.is_finite() && c.onset_velocity_floor > 0.0) {
-            self.errors.push(format!("{loc}.onset_velocity_floor"), format!("must be > 0, got {}", c.onset_velocity_floor));
         }
         let journal_radius = c.bearing_radius - c.clearance;
         let stiffness = build_stiffness(c, journal_radius, loc, &mut self.errors);
@@ -432,7 +427,6 @@ impl<'s> Compiler<'s> {
             self.errors.push(format!("{loc}.initial_eccentricity"), format!("must lie within the clearance {} m, got {:?} m", c.clearance, c.initial_eccentricity));
         }
         let max_penetration = c.max_penetration.unwrap_or(MAX_PENETRATION_FRACTION_OF_RADIUS * journal_radius);
-        self.positive(max_penetration, format!("{loc}.max_penetration"), "maximum penetration");
         if c.lock_at_assembly {
             self.assembly_locks.push((a, b, e0, c.name.clone()));
         }
@@ -533,7 +527,8 @@ impl<'s> Compiler<'s> {
                 self.claim_name(name, &format!("{loc}.name"));
                 let a = self.point(first, format!("{loc}.first"));
                 let b = self.point(second, format!("{loc}.second"));
-                self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping"), (*free_length, "free_length")], loc);
+                let checks = [(ranges::FORCES_SPRING_DAMPER_STIFFNESS, *stiffness), (ranges::FORCES_SPRING_DAMPER_DAMPING, *damping), (ranges::FORCES_SPRING_DAMPER_FREE_LENGTH, *free_length)];
+                Range::check_all(&checks, loc, &mut self.errors);
                 let element = SpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_length: *free_length };
                 Some((name, ForceElement::SpringDamper(element), Vec::new()))
             }
@@ -541,7 +536,7 @@ impl<'s> Compiler<'s> {
                 self.claim_name(name, &format!("{loc}.name"));
                 let a = self.body(first, format!("{loc}.first"));
                 let b = self.body(second, format!("{loc}.second"));
-                self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping")], loc);
+                Range::check_all(&[(ranges::FORCES_ROTATIONAL_SPRING_DAMPER_STIFFNESS, *stiffness), (ranges::FORCES_ROTATIONAL_SPRING_DAMPER_DAMPING, *damping)], loc, &mut self.errors);
                 let element = RotationalSpringDamper { first: Marker::reference(a?), second: Marker::reference(b?), stiffness: *stiffness, damping: *damping, free_angle: *free_angle };
                 Some((name, ForceElement::RotationalSpringDamper(element), Vec::new()))
             }
@@ -605,14 +600,6 @@ impl<'s> Compiler<'s> {
         self.model.gauges.push(StrainGauge { name: name.to_string(), body: marker.body, site, fibre, strain_modes });
         for (q, (quantity, unit, description)) in StrainGauge::CHANNELS.iter().enumerate() {
             self.channel(name, quantity, unit, description.to_string(), Source::Gauge(index, q as u8));
-        }
-    }
-
-    fn non_negative(&mut self, values: &[(f64, &str)], loc: &str) {
-        for (v, what) in values {
-            if !(v.is_finite() && *v >= 0.0) {
-                self.errors.push(format!("{loc}.{what}"), format!("must be >= 0, got {v}"));
-            }
         }
     }
 

@@ -384,11 +384,11 @@ fn compile_reports_every_problem_with_its_location() {
     .unwrap();
     let errors = compile(&spec).unwrap_err().to_string();
     for expected in [
-        "bodies[0].mass: mass must be > 0, got -1",
+        "bodies[0].mass: must be > 0, got -1 kg",
         "joints[0].first: unknown point \"ground.X\" (body \"ground\" has no such point)",
         "joints[1].journal: unknown point \"nobody.P\" (no body named \"nobody\")",
         "joints[1].clearance: must be smaller than the bearing radius 0.01 m (the journal radius would be <= 0), got 0.02 m",
-        "joints[1].contact.restitution: restitution must be in [0, 1], got 1.5",
+        "joints[1].contact.restitution: must lie in [0, 1], got 1.5",
     ] {
         assert!(errors.contains(expected), "missing {expected:?} in\n{errors}");
     }

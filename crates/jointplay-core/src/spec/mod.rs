@@ -16,12 +16,17 @@ mod beams;
 mod laws;
 mod lubrication;
 mod modal;
+mod keys;
+mod range;
+pub mod ranges;
 mod spatial;
 
 pub use beams::{BeamMaterialSpec, BeamMeshSpec, BeamPointSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec, SensorSpec};
 pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
 pub use lubrication::{CavitationSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
-pub use spatial::{planar_or_spatial, vector3, LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec, SpatialPointSpec};
+pub use keys::{table_keys, TableKey, TableKeys};
+pub use range::Range;
+pub use spatial::{vector3, LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec, SpatialPointSpec};
 pub use modal::{ModalBodySpec, ModalPointSpec, ModalStructureSpec, SparseMatrixSpec, StructureMatricesSpec};
 use serde::{Deserialize, Serialize};
 
@@ -35,7 +40,7 @@ pub struct ModelSpec {
     /// Name of the mechanism.
     pub name: String,
     /// Gravitational acceleration vector [m/s^2] (two numbers in planar descriptions: z is zero).
-    #[serde(deserialize_with = "vector3", serialize_with = "planar_or_spatial")]
+    #[serde(deserialize_with = "vector3")]
     pub gravity: [f64; 3],
     /// Points of the ground frame, by name: global coordinates [m].
     pub ground_points: Vec<PointSpec>,
@@ -74,7 +79,7 @@ pub struct PointSpec {
     pub name: String,
     /// Coordinates in the body frame (global for ground points) [m]; two
     /// numbers in planar descriptions (z is zero).
-    #[serde(deserialize_with = "vector3", serialize_with = "planar_or_spatial")]
+    #[serde(deserialize_with = "vector3")]
     pub position: [f64; 3],
     /// The marker's axes in the body frame (columns x, y, z) [-], for spatial
     /// joints; `None`: the body's axes.

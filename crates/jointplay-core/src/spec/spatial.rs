@@ -3,7 +3,7 @@
 //! in space. A model is spatial when it has any of them; its planar bodies
 //! are embedded in the plane `z = 0`.
 
-use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use serde::{Deserialize, Deserializer, Serialize};
 
 use super::{FunctionSpec, HydraulicCylinderSpec};
 
@@ -15,11 +15,6 @@ pub fn vector3<'de, D: Deserializer<'de>>(deserializer: D) -> Result<[f64; 3], D
         [x, y, z] => Ok([*x, *y, *z]),
         _ => Err(serde::de::Error::custom(format!("expected 2 or 3 numbers, got {}", values.len()))),
     }
-}
-
-/// A 3-vector written as 2 numbers when its z is zero (as planar descriptions give it), else as 3.
-pub fn planar_or_spatial<S: Serializer>(value: &[f64; 3], serializer: S) -> Result<S::Ok, S::Error> {
-    if value[2] == 0.0 { value[..2].serialize(serializer) } else { value.serialize(serializer) }
 }
 
 /// A named point with a frame on a spatial body.

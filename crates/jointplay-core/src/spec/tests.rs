@@ -26,17 +26,23 @@ fn fixtures() -> Vec<(String, Value)> {
 fn same(a: &Value, b: &Value, at: &str) -> Result<(), String> {
     match (a, b) {
         (Value::Object(x), Value::Object(y)) => {
-            let (kx, ky): (Vec<_>, Vec<_>) = (x.keys().collect(), y.keys().collect());
+            // (an `Option` left out and one given as null are the same: none)
+            let given = |m: &'_ serde_json::Map<String, Value>| m.iter().filter(|(_, v)| !v.is_null()).map(|(k, _)| k.clone()).collect::<Vec<_>>();
+            let (kx, ky) = (given(x), given(y));
             let (mut sx, mut sy) = (kx.clone(), ky.clone());
             sx.sort();
             sy.sort();
             if sx != sy {
                 return Err(format!("{at}: keys {kx:?} vs {ky:?}"));
             }
-            x.iter().try_for_each(|(k, v)| same(v, &y[k], &format!("{at}.{k}")))
+            x.iter().filter(|(_, v)| !v.is_null()).try_for_each(|(k, v)| same(v, &y[k], &format!("{at}.{k}")))
         }
         (Value::Array(x), Value::Array(y)) if x.len() == y.len() => {
             x.iter().zip(y).enumerate().try_for_each(|(k, (u, v))| same(u, v, &format!("{at}[{k}]")))
+        }
+        // a planar description's 2-vector of a point or of gravity is read as a 3-vector with z = 0
+        (Value::Array(x), Value::Array(y)) if x.len() == 2 && y.len() == 3 && y[2].as_f64() == Some(0.0) => {
+            same(a, &Value::Array(y[..2].to_vec()), at)
         }
         (Value::Number(x), Value::Number(y)) if x.as_f64() == y.as_f64() => Ok(()),
         _ if a == b => Ok(()),

@@ -4,7 +4,7 @@ use crate::beam::{BeamMaterial, BeamSection, ElementOrder, SectionShape};
 use crate::body::{BeamBody, BeamMesh};
 use crate::kinematics::planar::Vec2;
 use crate::error::ModelErrors;
-use crate::spec::{BeamMaterialSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec};
+use crate::spec::{ranges, Range, BeamMaterialSpec, BeamSectionSpec, BeamSpec, ElementOrderSpec};
 
 /// Most elements of one beam: far beyond any link's needs, and a bound on the
 /// memory a mistyped element length could ask for.
@@ -20,8 +20,7 @@ pub(in crate::dynamics) fn build_beam(spec: &BeamSpec, loc: &str, errors: &mut M
         return None;
     }
     let mesh = build_mesh(spec, length, &format!("{loc}.mesh"), errors);
-    if !(spec.damping_time.is_finite() && spec.damping_time >= 0.0) {
-        errors.push(format!("{loc}.damping_time"), format!("must be >= 0 s, got {}", spec.damping_time));
+    if !ranges::BEAMS_DAMPING_TIME.check_at(spec.damping_time, loc, errors) {
         return None;
     }
     BeamBody::straight(start, end, section?, mesh?, spec.damping_time).map_err(|message| errors.push(loc, message)).ok()
@@ -35,11 +34,8 @@ fn build_mesh(spec: &BeamSpec, length: f64, loc: &str, errors: &mut ModelErrors)
     };
     let elements = match (spec.mesh.elements, spec.mesh.element_length) {
         (Some(n), None) => n,
-        (None, Some(h)) if h.is_finite() && h > 0.0 => ((length / h) * (1.0 - 1e-12)).ceil().min(usize::MAX as f64) as usize,
-        (None, Some(h)) => {
-            errors.push(format!("{loc}.element_length"), format!("must be > 0 m, got {h}"));
-            return None;
-        }
+        (None, Some(h)) if ranges::BEAMS_ELEMENT_LENGTH.check_at(h, loc, errors) => ((length / h) * (1.0 - 1e-12)).ceil().min(usize::MAX as f64) as usize,
+        (None, Some(_)) => return None,
         _ => {
             errors.push(loc, "give exactly one of elements (a count) and element_length");
             return None;
@@ -54,6 +50,9 @@ fn build_mesh(spec: &BeamSpec, length: f64, loc: &str, errors: &mut ModelErrors)
 
 /// The section from resultants, from properties and a material, or from a shape and a material.
 fn build_section(spec: &BeamSectionSpec, loc: &str, errors: &mut ModelErrors) -> Option<BeamSection> {
+    if !Range::check_all(&section_ranges(spec), loc, errors) {
+        return None;
+    }
     let built = match spec {
         BeamSectionSpec::Resultants { axial_stiffness, shear_stiffness, bending_stiffness, mass_per_length, rotary_inertia_per_length } => BeamSection {
             axial_stiffness: *axial_stiffness,
@@ -91,31 +90,45 @@ fn build_section(spec: &BeamSectionSpec, loc: &str, errors: &mut ModelErrors) ->
     built.map_err(|message| errors.push(loc, message)).ok()
 }
 
+/// The ranges of a section's own keys (its material is checked with it).
+fn section_ranges(spec: &BeamSectionSpec) -> Vec<(Range, f64)> {
+    use ranges::*;
+    match *spec {
+        BeamSectionSpec::Resultants { axial_stiffness, shear_stiffness, bending_stiffness, mass_per_length, rotary_inertia_per_length } => vec![
+            (SECTION_RESULTANTS_AXIAL_STIFFNESS, axial_stiffness),
+            (SECTION_RESULTANTS_SHEAR_STIFFNESS, shear_stiffness),
+            (SECTION_RESULTANTS_BENDING_STIFFNESS, bending_stiffness),
+            (SECTION_RESULTANTS_MASS_PER_LENGTH, mass_per_length),
+            (SECTION_RESULTANTS_ROTARY_INERTIA_PER_LENGTH, rotary_inertia_per_length),
+        ],
+        BeamSectionSpec::Properties { area, second_moment, shear_factor, .. } => {
+            vec![(SECTION_PROPERTIES_AREA, area), (SECTION_PROPERTIES_SECOND_MOMENT, second_moment), (SECTION_PROPERTIES_SHEAR_FACTOR, shear_factor)]
+        }
+        BeamSectionSpec::Rectangle { width, height, .. } => vec![(SECTION_RECTANGLE_WIDTH, width), (SECTION_RECTANGLE_HEIGHT, height)],
+        BeamSectionSpec::Circle { diameter, .. } => vec![(SECTION_CIRCLE_DIAMETER, diameter)],
+        BeamSectionSpec::Tube { outer_diameter, inner_diameter, .. } => vec![(SECTION_TUBE_OUTER_DIAMETER, outer_diameter), (SECTION_TUBE_INNER_DIAMETER, inner_diameter)],
+    }
+}
+
 /// The material, with Poisson's ratio from the shear modulus where that is given.
 fn build_material(spec: &BeamMaterialSpec, loc: &str, errors: &mut ModelErrors) -> Option<BeamMaterial> {
     let e = spec.youngs_modulus;
-    if !(e.is_finite() && e > 0.0) {
-        errors.push(format!("{loc}.youngs_modulus"), format!("must be > 0 Pa, got {e}"));
-        return None;
-    }
-    if !(spec.density.is_finite() && spec.density > 0.0) {
-        errors.push(format!("{loc}.density"), format!("must be > 0 kg/m^3, got {}", spec.density));
+    let given = [(ranges::BEAM_MATERIAL_YOUNGS_MODULUS, Some(e)), (ranges::BEAM_MATERIAL_DENSITY, Some(spec.density)),
+        (ranges::BEAM_MATERIAL_POISSON_RATIO, spec.poisson_ratio), (ranges::BEAM_MATERIAL_SHEAR_MODULUS, spec.shear_modulus)];
+    if !Range::check_given(&given, loc, errors) {
         return None;
     }
     let poisson_ratio = match (spec.poisson_ratio, spec.shear_modulus) {
         (Some(nu), None) => nu,
-        (None, Some(g)) if g.is_finite() && g > 0.0 => e / (2.0 * g) - 1.0,
-        (None, Some(g)) => {
-            errors.push(format!("{loc}.shear_modulus"), format!("must be > 0 Pa, got {g}"));
-            return None;
-        }
+        (None, Some(g)) => e / (2.0 * g) - 1.0,
         _ => {
             errors.push(loc, "give exactly one of poisson_ratio and shear_modulus");
             return None;
         }
     };
-    if !(poisson_ratio.is_finite() && (-1.0..0.5).contains(&poisson_ratio)) {
-        errors.push(loc, format!("Poisson's ratio must be in [-1, 0.5), got {poisson_ratio} (E = {e} Pa)"));
+    if !ranges::BEAM_MATERIAL_POISSON_RATIO.contains(poisson_ratio) {
+        let range = ranges::BEAM_MATERIAL_POISSON_RATIO.rule;
+        errors.push(format!("{loc}.shear_modulus"), format!("gives Poisson's ratio E / (2 G) - 1 = {poisson_ratio}, which must {range} (E = {e} Pa)"));
         return None;
     }
     Some(BeamMaterial { youngs_modulus: e, poisson_ratio, density: spec.density })

@@ -6,7 +6,7 @@ use crate::error::ModelErrors;
 use crate::force::CylinderActuator;
 use crate::friction::LugreFriction;
 use crate::hydraulic::{CylinderGeometry, HydraulicCylinder, SealFriction};
-use crate::spec::{HydraulicCylinderSpec, SealFrictionSpec};
+use crate::spec::{ranges, HydraulicCylinderSpec, Range, SealFrictionSpec};
 
 /// The cylinder between `first` and `second`, whose attachments are
 /// `initial_length` [m] apart at the positions of the description, with its
@@ -18,6 +18,9 @@ pub(super) fn build_cylinder(
     loc: &str,
     errors: &mut ModelErrors,
 ) -> Option<(CylinderActuator, Vec<f64>)> {
+    if !Range::check_all(&cylinder_ranges(spec), loc, errors) {
+        return None;
+    }
     let cap_inflow = spec.cap_inflow.as_ref().map(|f| build_function(f, &format!("{loc}.cap_inflow"), errors));
     let rod_inflow = spec.rod_inflow.as_ref().map(|f| build_function(f, &format!("{loc}.rod_inflow"), errors));
     let seal = match &spec.seal_friction {
@@ -61,6 +64,37 @@ pub(super) fn build_cylinder(
     Some((element, states))
 }
 
+/// The ranges of a cylinder's own keys.
+fn cylinder_ranges(spec: &HydraulicCylinderSpec) -> [(Range, f64); 9] {
+    use ranges::*;
+    [
+        (FORCES_HYDRAULIC_CYLINDER_PISTON_AREA, spec.piston_area),
+        (FORCES_HYDRAULIC_CYLINDER_ROD_SIDE_AREA, spec.rod_side_area),
+        (FORCES_HYDRAULIC_CYLINDER_STROKE_LENGTH, spec.stroke_length),
+        (FORCES_HYDRAULIC_CYLINDER_CAP_DEAD_VOLUME, spec.cap_dead_volume),
+        (FORCES_HYDRAULIC_CYLINDER_ROD_DEAD_VOLUME, spec.rod_dead_volume),
+        (FORCES_HYDRAULIC_CYLINDER_INITIAL_STROKE, spec.initial_stroke),
+        (FORCES_HYDRAULIC_CYLINDER_CAP_PRESSURE, spec.cap_pressure),
+        (FORCES_HYDRAULIC_CYLINDER_ROD_PRESSURE, spec.rod_pressure),
+        (FORCES_HYDRAULIC_CYLINDER_BULK_MODULUS, spec.bulk_modulus),
+    ]
+}
+
+/// The ranges of the keys of a seal's LuGre law.
+fn seal_ranges(s: &SealFrictionSpec) -> [(Range, f64); 8] {
+    use ranges::*;
+    [
+        (SEAL_FRICTION_LUGRE_SEAL_STATIC_FORCE, s.static_force),
+        (SEAL_FRICTION_LUGRE_SEAL_KINETIC_FORCE, s.kinetic_force),
+        (SEAL_FRICTION_LUGRE_SEAL_STRIBECK_VELOCITY, s.stribeck_velocity),
+        (SEAL_FRICTION_LUGRE_SEAL_BRISTLE_STIFFNESS, s.bristle_stiffness),
+        (SEAL_FRICTION_LUGRE_SEAL_BRISTLE_DAMPING, s.bristle_damping),
+        (SEAL_FRICTION_LUGRE_SEAL_VISCOUS_COEFFICIENT, s.viscous_coefficient),
+        (SEAL_FRICTION_LUGRE_SEAL_DAMPING_VELOCITY, s.damping_velocity),
+        (SEAL_FRICTION_LUGRE_SEAL_STICK_VELOCITY, s.stick_velocity),
+    ]
+}
+
 /// The words each message of [`LugreFriction`] starts with, and the key they locate.
 const SEAL_KEYS: [(&str, &str); 8] = [
     ("static force", "static_force"),
@@ -74,6 +108,9 @@ const SEAL_KEYS: [(&str, &str); 8] = [
 ];
 
 fn build_seal(s: &SealFrictionSpec, loc: &str, errors: &mut ModelErrors) -> Option<SealFriction> {
+    if !Range::check_all(&seal_ranges(s), loc, errors) {
+        return None;
+    }
     LugreFriction::new(s.static_force, s.kinetic_force, s.stribeck_velocity, s.bristle_stiffness, s.bristle_damping, s.viscous_coefficient)
         .and_then(|law| law.with_damping_velocity(s.damping_velocity))
         .and_then(|law| law.with_stick_velocity(s.stick_velocity))

@@ -4,7 +4,7 @@ use crate::contact::{ContactStiffness, HertzCylinder, JohnsonLine, Material, Nor
 use crate::error::ModelErrors;
 use crate::friction::{AmbrosioCoulomb, FrictionLaw, RegularisedCoulomb, StictionFriction, Threlfall};
 use crate::motion::{ConstantRate, CubicStep, Polynomial, Sine, SpeedRamp, SplineTable, TimeFunction};
-use crate::spec::{ClearanceJointSpec, ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
+use crate::spec::{ranges, Range, ClearanceJointSpec, ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessSpec};
 
 fn material(m: &MaterialSpec) -> Material {
     Material { youngs_modulus: m.youngs_modulus, poisson_ratio: m.poisson_ratio }
@@ -15,12 +15,7 @@ const HERTZ_EXPONENT: f64 = 1.5;
 
 pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: &str, errors: &mut ModelErrors) -> Option<ContactStiffness> {
     for (m, what) in [(&c.bearing_material, "bearing_material"), (&c.journal_material, "journal_material")] {
-        if !(m.youngs_modulus.is_finite() && m.youngs_modulus > 0.0) {
-            errors.push(format!("{loc}.{what}.youngs_modulus"), format!("must be > 0, got {} Pa", m.youngs_modulus));
-        }
-        if !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5) {
-            errors.push(format!("{loc}.{what}.poisson_ratio"), format!("must lie in (-1, 0.5), got {}", m.poisson_ratio));
-        }
+        Range::check_all(&[(ranges::MATERIAL_YOUNGS_MODULUS, m.youngs_modulus), (ranges::MATERIAL_POISSON_RATIO, m.poisson_ratio)], &format!("{loc}.{what}"), errors);
     }
     if !(journal_radius > 0.0) {
         return None; // reported with the clearance
@@ -28,11 +23,8 @@ pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: 
     let (rb, b, j) = (c.bearing_radius, material(&c.bearing_material), material(&c.journal_material));
     let needs_length = matches!(c.stiffness, StiffnessSpec::JohnsonLine | StiffnessSpec::RogersAndrews);
     let length = match c.length {
-        Some(l) if l.is_finite() && l > 0.0 => Some(l),
-        Some(l) => {
-            errors.push(format!("{loc}.length"), format!("must be > 0, got {l} m"));
-            None
-        }
+        Some(l) if ranges::JOINTS_CLEARANCE_REVOLUTE_LENGTH.check_at(l, loc, errors) => Some(l),
+        Some(_) => None,
         None if needs_length => {
             errors.push(format!("{loc}.length"), "is required by the line-contact stiffness laws".to_string());
             None
@@ -41,6 +33,7 @@ pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: 
     };
     let built = match c.stiffness {
         StiffnessSpec::HertzCylinder => HertzCylinder::new(rb, journal_radius, b, j, HERTZ_EXPONENT).map(ContactStiffness::HertzCylinder),
+        StiffnessSpec::HertzCylinderExponent { exponent } if !ranges::STIFFNESS_HERTZ_CYLINDER_EXPONENT.check_at(exponent, &format!("{loc}.stiffness"), errors) => return None,
         StiffnessSpec::HertzCylinderExponent { exponent } => HertzCylinder::new(rb, journal_radius, b, j, exponent).map(ContactStiffness::HertzCylinder),
         StiffnessSpec::JohnsonLine => JohnsonLine::new(rb, journal_radius, length?, b, j).map(ContactStiffness::JohnsonLine),
         StiffnessSpec::RogersAndrews => RogersAndrews::new(rb, journal_radius, length?, b, j).map(ContactStiffness::RogersAndrews),
@@ -57,10 +50,30 @@ pub(super) fn build_normal_force_law(c: &ContactSpec, loc: &str, errors: &mut Mo
         ContactSpec::Gonthier { restitution } => NormalForceLaw::Gonthier { restitution },
         ContactSpec::HuGuo { restitution } => NormalForceLaw::HuGuo { restitution },
     };
-    law.validated().map_err(|message| errors.push(format!("{loc}.restitution"), message)).ok()
+    Range::check_all(law.restitution().as_slice(), loc, errors).then_some(law)
+}
+
+/// The ranges of a friction law's keys.
+fn friction_ranges(f: &FrictionSpec) -> Vec<(Range, f64)> {
+    use ranges::*;
+    match *f {
+        FrictionSpec::None => Vec::new(),
+        FrictionSpec::Coulomb { coefficient, velocity_tolerance } => vec![(FRICTION_COULOMB_COEFFICIENT, coefficient), (FRICTION_COULOMB_VELOCITY_TOLERANCE, velocity_tolerance)],
+        FrictionSpec::Ambrosio { coefficient, v0, v1 } => vec![(FRICTION_AMBROSIO_COEFFICIENT, coefficient), (FRICTION_AMBROSIO_V0, v0), (FRICTION_AMBROSIO_V1, v1)],
+        FrictionSpec::Threlfall { coefficient, v0 } => vec![(FRICTION_THRELFALL_COEFFICIENT, coefficient), (FRICTION_THRELFALL_V0, v0)],
+        FrictionSpec::Stiction { static_coefficient, kinetic_coefficient, stiction_velocity, transition_velocity } => vec![
+            (FRICTION_STICTION_STATIC_COEFFICIENT, static_coefficient),
+            (FRICTION_STICTION_KINETIC_COEFFICIENT, kinetic_coefficient),
+            (FRICTION_STICTION_STICTION_VELOCITY, stiction_velocity),
+            (FRICTION_STICTION_TRANSITION_VELOCITY, transition_velocity),
+        ],
+    }
 }
 
 pub(super) fn build_friction(f: &FrictionSpec, loc: &str, errors: &mut ModelErrors) -> Option<FrictionLaw> {
+    if !Range::check_all(&friction_ranges(f), loc, errors) {
+        return None;
+    }
     let built = match *f {
         FrictionSpec::None => Ok(FrictionLaw::None),
         FrictionSpec::Coulomb { coefficient, velocity_tolerance } => RegularisedCoulomb::new(coefficient, velocity_tolerance).map(FrictionLaw::Coulomb),
@@ -100,8 +113,7 @@ pub(super) fn build_function(f: &FunctionSpec, loc: &str, errors: &mut ModelErro
         FunctionSpec::Sine { offset, amplitude, frequency, phase } => finite(&[*offset, *amplitude, *frequency, *phase], errors)
             .then_some(TimeFunction::Sine(Sine { offset: *offset, amplitude: *amplitude, frequency: *frequency, phase: *phase })),
         FunctionSpec::SpeedRamp { ramp_time, final_rate } => {
-            if !(ramp_time.is_finite() && *ramp_time > 0.0) {
-                errors.push(format!("{loc}.ramp_time"), format!("must be > 0 s, got {ramp_time}"));
+            if !ranges::FUNCTION_SPEED_RAMP_RAMP_TIME.check_at(*ramp_time, loc, errors) {
                 return None;
             }
             finite(&[*final_rate], errors).then_some(TimeFunction::SpeedRamp(SpeedRamp { ramp_time: *ramp_time, final_rate: *final_rate }))

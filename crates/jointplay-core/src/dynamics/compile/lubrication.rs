@@ -9,7 +9,7 @@ use crate::lubrication::reynolds::{Cavitation, ForceTable, ForceTableOptions, Gr
 use crate::lubrication::squeeze_film::{SqueezeFilm, SqueezeFilmTheory};
 use crate::lubrication::transition::TransitionLaw;
 use crate::lubrication::BearingGeometry;
-use crate::spec::{CavitationSpec, ClearanceJointSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
+use crate::spec::{ranges, Range, CavitationSpec, ClearanceJointSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
 
 pub(super) fn build_lubrication(
     c: &ClearanceJointSpec,
@@ -19,8 +19,10 @@ pub(super) fn build_lubrication(
     errors: &mut ModelErrors,
 ) -> Option<Lubrication> {
     let loc = format!("{loc}.lubrication");
-    if !(spec.viscosity.is_finite() && spec.viscosity > 0.0) {
-        errors.push(format!("{loc}.viscosity"), format!("must be > 0, got {} Pa s", spec.viscosity));
+    ranges::LUBRICATION_VISCOSITY.check_at(spec.viscosity, &loc, errors);
+    let reynolds = [(ranges::LUBRICATION_AMBIENT_PRESSURE, Some(spec.reynolds.ambient_pressure)), (ranges::LUBRICATION_GROOVE_SUPPLY_PRESSURE, spec.reynolds.groove_supply_pressure)];
+    if !Range::check_given(&reynolds, &format!("{loc}.reynolds"), errors) {
+        return None;
     }
     let length = match c.length {
         Some(l) if l.is_finite() && l > 0.0 => l,
@@ -124,18 +126,20 @@ fn build_transition(t: &TransitionSpec, geometry: &BearingGeometry, loc: &str, e
     match *t {
         TransitionSpec::Switch => Some(TransitionLaw::Switch),
         TransitionSpec::Flores { lubricated_limit } => {
-            if !(lubricated_limit > 0.0 && lubricated_limit < 1.0) {
-                errors.push(format!("{loc}.transition.lubricated_limit"), format!("must lie in (0, 1), got {lubricated_limit}"));
+            if !ranges::TRANSITION_FLORES_LUBRICATED_LIMIT.check_at(lubricated_limit, &format!("{loc}.transition"), errors) {
                 return None;
             }
             Some(TransitionLaw::Flores { lubricated_limit })
         }
         TransitionSpec::WangImproved { safe_film_thickness: None } => Some(TransitionLaw::wang_improved(geometry)),
         TransitionSpec::WangImproved { safe_film_thickness: Some(h) } => {
-            if !(h > 0.0 && h < geometry.clearance) {
+            if !ranges::TRANSITION_WANG_IMPROVED_SAFE_FILM_THICKNESS.check_at(h, &format!("{loc}.transition"), errors) {
+                return None;
+            }
+            if h >= geometry.clearance {
                 errors.push(
                     format!("{loc}.transition.safe_film_thickness"),
-                    format!("must lie between 0 and the clearance {} m, got {h} m", geometry.clearance),
+                    format!("must be smaller than the clearance {} m, got {h} m", geometry.clearance),
                 );
                 return None;
             }

@@ -8,7 +8,7 @@ use super::beams::build_beam;
 use crate::body::{BeamBody, ModalBody, Structure, MAX_STRUCTURE_NODES};
 use crate::error::ModelErrors;
 use crate::modal::{FrameReference, NodalCoordinates};
-use crate::spec::{BeamMeshSpec, BeamSectionSpec, BeamSpec, ModalBodySpec, ModalPointSpec, ModalStructureSpec, SparseMatrixSpec, StructureMatricesSpec};
+use crate::spec::{ranges, Range, BeamMeshSpec, BeamSectionSpec, BeamSpec, ModalBodySpec, ModalPointSpec, ModalStructureSpec, SparseMatrixSpec, StructureMatricesSpec};
 
 /// A built modal body: the body, its frame's initial pose `(x, y, phi)` [m, m, rad],
 /// its interface nodes and its other named points (name, node, location of the description).
@@ -34,12 +34,7 @@ pub(super) fn build_modal_body(spec: &ModalBodySpec, loc: &str, errors: &mut Mod
         errors.push(format!("{loc}.interface"), "give at least one interface node (the first carries the body's frame)");
         settled = false;
     }
-    for (key, value) in [("damping_ratio", spec.damping_ratio), ("damping_time", spec.damping_time)] {
-        if !(value.is_finite() && value >= 0.0) {
-            errors.push(format!("{loc}.{key}"), format!("must be >= 0, got {value}"));
-            settled = false;
-        }
-    }
+    settled &= Range::check_all(&[(ranges::MODAL_BODIES_DAMPING_RATIO, spec.damping_ratio), (ranges::MODAL_BODIES_DAMPING_TIME, spec.damping_time)], loc, errors);
     let reduction = Reduction { frame: spec.frame, normal_modes: spec.normal_modes, damping_ratio: spec.damping_ratio, damping_time: spec.damping_time };
     match &spec.structure {
         ModalStructureSpec::Beam { start, end, section, mesh } => {

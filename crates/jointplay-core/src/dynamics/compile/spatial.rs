@@ -13,7 +13,7 @@ use crate::kinematics::marker::{BodyIndex, Marker, Site, SpatialMarker};
 use crate::kinematics::euler::EulerSequence;
 use crate::kinematics::quaternion;
 use crate::kinematics::spatial::{Mat3, Vec3};
-use crate::spec::{LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec};
+use crate::spec::{ranges, Range, LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec};
 
 /// Tolerance on a marker's axes being a rotation: `|A^T A - I|` and `|det A - 1|` [-].
 const AXES_TOLERANCE: f64 = 1e-6;
@@ -40,7 +40,7 @@ impl<'s> Compiler<'s> {
 
     fn spatial_body(&mut self, loc: &str, b: &'s SpatialBodySpec) {
         self.claim_name(&b.name, &format!("{loc}.name"));
-        self.positive(b.mass, format!("{loc}.mass"), "mass");
+        ranges::SPATIAL_BODIES_MASS.check_at(b.mass, loc, &mut self.errors);
         let inertia = Mat3::from_fn(|i, j| b.inertia[i][j]);
         let mut body = match SpatialRigidBody::new(b.mass, inertia) {
             Ok(body) => body,
@@ -164,17 +164,27 @@ impl<'s> Compiler<'s> {
             SpatialForceSpec::SpringDamper { name, first, second, stiffness, damping, free_length } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let (a, b) = (self.spatial_point(first, format!("{loc}.first")), self.spatial_point(second, format!("{loc}.second")));
-                self.non_negative(&[(*stiffness, "stiffness"), (*damping, "damping"), (*free_length, "free_length")], loc);
+                let checks = [
+                    (ranges::SPATIAL_FORCES_SPRING_DAMPER_STIFFNESS, *stiffness),
+                    (ranges::SPATIAL_FORCES_SPRING_DAMPER_DAMPING, *damping),
+                    (ranges::SPATIAL_FORCES_SPRING_DAMPER_FREE_LENGTH, *free_length),
+                ];
+                Range::check_all(&checks, loc, &mut self.errors);
                 let element = SpatialSpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_length: *free_length };
                 Some((name, ForceElement::SpatialSpringDamper(Box::new(element)), Vec::new()))
             }
             SpatialForceSpec::Bushing { name, first, second, stiffness, damping, rotational_stiffness, rotational_damping } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let (a, b) = (self.spatial_point(first, format!("{loc}.first")), self.spatial_point(second, format!("{loc}.second")));
-                for (values, what) in [(stiffness, "stiffness"), (damping, "damping"), (rotational_stiffness, "rotational_stiffness"), (rotational_damping, "rotational_damping")] {
-                    if !values.iter().all(|v| v.is_finite() && *v >= 0.0) {
-                        self.errors.push(format!("{loc}.{what}"), format!("must be >= 0, got {values:?}"));
-                    }
+                let ranges = [
+                    (ranges::SPATIAL_FORCES_BUSHING_STIFFNESS, stiffness),
+                    (ranges::SPATIAL_FORCES_BUSHING_DAMPING, damping),
+                    (ranges::SPATIAL_FORCES_BUSHING_ROTATIONAL_STIFFNESS, rotational_stiffness),
+                    (ranges::SPATIAL_FORCES_BUSHING_ROTATIONAL_DAMPING, rotational_damping),
+                ];
+                for (range, values) in ranges {
+                    // (each component within the key's range)
+                    values.iter().all(|v| range.check_at(*v, loc, &mut self.errors));
                 }
                 let element = Bushing {
                     first: a?,
