@@ -18,7 +18,8 @@ def test_every_python_example_is_covered_here():
                "parallelogram_four_bar", "double_parallelogram", "hydraulic_boom",
                "spin_up_beam", "flores_flexible_rod",  # tests/test_beams.py
                "four_bar_flexible_coupler",
-               "paper003_breaker"}  # tests/test_paper003_breaker.py
+               "paper003_breaker",  # tests/test_paper003_breaker.py
+               "spatial_slider_crank"}
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 
@@ -144,3 +145,46 @@ def test_four_bar_example_reads_its_coupler_from_matrices_and_its_rigid_twin_wei
     force = {name: np.max(np.hypot(r["B.fx"], r["B.fy"])) for name, r in runs.items()}
     assert force["flexible"] == pytest.approx(force["rigid"], rel=0.05)
     assert (tmp_path / "four_bar_flexible_coupler.png").stat().st_size > 10_000
+
+
+def test_spatial_slider_crank_example_is_its_model_file():
+    import spatial_slider_crank as example
+
+    import jointplay as jp
+
+    loaded = jp.load(EXAMPLES / "spatial_slider_crank.toml")
+    assert example.build_model().to_spec() == loaded.to_spec()
+    assert loaded.simulation == {"t_end": example.T_END, "method": "dopri5", "rtol": 1e-8, "atol": 1e-10,
+                                 "output_step": 1e-3}
+
+
+def test_spatial_slider_crank_example_moves_and_loads_as_its_geometry_and_power_balance_say(tmp_path):
+    """Against tests/spatial_references.py (Haug's mechanism in the crank angle, independent of the engine):
+    the slider at the crank angle theta = 90 deg + 2 pi t; the motor's torque from the power balance
+    tau omega = dE/dt at constant omega, tau = m'(theta) omega^2 / 2 + V'(theta); and the ground's reactions
+    (the revolute O on the crank, the guide on the slider) giving the centres of mass their accelerations,
+    sum of forces = sum m (a - g) (Newton's second law for the whole mechanism)."""
+    import spatial_slider_crank as example
+    from spatial_references import SPATIAL_SLIDER_CRANK, slider_crank_mass, slider_crank_pose
+
+    results = example.main(["--out", str(tmp_path)])
+    assert results.error is None and results.time[-1] == pytest.approx(example.T_END)
+    omega = 2 * np.pi  # 60 rpm
+    theta = np.pi / 2 + omega * results.time
+    slider = np.array([slider_crank_pose(angle)["slider"][0, 0] for angle in theta])
+    # rtol 1e-8: measured 2e-11 m (slider) and 8e-11 N m (torque, peak 0.35 N m)
+    assert np.max(np.abs(results["slider.x"] - slider)) < 1e-9
+    derivatives = np.array([slider_crank_mass(angle)[1:] for angle in theta])
+    torque = 0.5 * derivatives[:, 0] * omega**2 + derivatives[:, 1]
+    assert np.max(np.abs(results["motor.torque"] - torque)) < 1e-8
+    # the stroke the sampled run shows (1 ms samples miss the extremes by 4e-7 m) against the geometry's
+    angles = np.linspace(0.0, 2 * np.pi, 3601)  # every 0.1 deg: misses the extremes by 6e-8 m
+    travel = np.array([slider_crank_pose(angle)["slider"][0, 0] for angle in angles])
+    assert np.ptp(results["slider.x"]) == pytest.approx(np.ptp(travel), abs=1e-6)
+    ground = sum(np.stack([results[f"{joint}.f{c}"] for c in "xyz"], -1) for joint in ("O", "guide"))
+    inertial = sum(SPATIAL_SLIDER_CRANK[f"{body}_mass"] * (np.stack([results[f"{body}.a{c}"] for c in "xyz"], -1)
+                                                         - SPATIAL_SLIDER_CRANK["gravity"])
+                   for body in ("crank", "rod", "slider"))
+    assert np.max(np.abs(ground - inertial)) < 1e-9  # measured 4e-15 N of 27 N
+    assert (tmp_path / "spatial_slider_crank.png").stat().st_size > 10_000
+    assert (tmp_path / "spatial_slider_crank.nc").exists()
