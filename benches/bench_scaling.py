@@ -1,6 +1,6 @@
 """Benchmark: how the cost of a run grows with the model, and the exponent of that growth.
 
-Five series, each timed per run and per evaluation, in both formulations where both apply:
+Six series, each timed per run and per evaluation, in both formulations where both apply:
 
 1. **rigid chain**: N bars (0.1 m, 0.1 kg) pinned end to end, hanging from a ground pin, released
    horizontal under gravity; Dormand-Prince, 0.1 s. Joint coordinates and absolute coordinates.
@@ -23,6 +23,9 @@ Five series, each timed per run and per evaluation, in both formulations where b
    rod are modal bodies (4 normal modes each) and the eight pins between moving links are dry
    clearance joints. Dormand-Prince (measured faster here than BDF or generalized-alpha: the
    impacts, not the modes, set the step), 5 ms; absolute coordinates (flexible links).
+6. **spatial chain**: N spatial bars (0.1 m, 0.1 kg) on spherical joints hanging from a ground point,
+   released horizontal while turning about the vertical at 2 rad/s, gravity along -z; Dormand-Prince,
+   0.1 s; absolute coordinates (the joint-coordinate formulation holds planar trees).
 
 Cost per evaluation = CPU time of the run / (right-hand-side evaluations of the integrator + the
 evaluations of the summary's peak search, ``extrema["inner_evaluations"]``): both evaluate the
@@ -61,6 +64,7 @@ SIZES = {
     "beam_mesh": ([8, 16, 32, 64, 128], [2, 4]),
     "modal_body": ([4, 8, 16, 32, 40], [2, 4]),
     "breaker": ([8], [8]),
+    "spatial_chain": ([4, 8, 16, 32, 64, 128], [2, 4]),
 }
 #: Largest rigid chain run in joint coordinates (their cost grows as N^2.3: 128 bars would take
 #: most of the benchmark's time).
@@ -71,6 +75,11 @@ BEAM_STEP, BEAM_T_END = 0.01, 1.0  # s, s
 #: 1e-10 (and 1e-6) is not reached while the ramp starts, and Exudyn then halves its step (measured:
 #: 2743 steps instead of 100 at 8 elements, 40807 at 64).
 EXUDYN_NEWTON_RTOL, EXUDYN_NEWTON_ATOL = 1e-5, 1e-4
+#: The spatial chain's bars: principal inertia about the bar's axis and across it [kg m^2] (a rod of
+#: 14 mm radius: m r^2 / 2 = 1e-5), gravity [m/s^2] and the chain's start turn about the vertical [rad/s].
+SPATIAL_BAR_INERTIA = (1e-5, BAR_INERTIA, BAR_INERTIA)
+SPATIAL_GRAVITY = (0.0, 0.0, -9.81)
+CHAIN_SPIN = 2.0
 STEEL = sections.material("207 GPa", "7850 kg/m^3", poisson_ratio=0.3)
 
 
@@ -83,6 +92,21 @@ def chain(n: int, clearance: bool = False) -> jp.Model:
     """N bars pinned end to end from a ground pin, horizontal; every pin a clearance joint if asked."""
     return mechanisms.hanging_chain(n, bar_length=BAR_LENGTH, bar_mass=BAR_MASS, bar_inertia=BAR_INERTIA,
                                     clearance=CLEARANCE_PIN if clearance else None, name=f"chain{n}")
+
+
+def spatial_chain(n: int) -> jp.Model:
+    """N spatial bars on spherical joints from a ground point, horizontal along x, the whole chain turning
+    about the vertical through the ground point at ``CHAIN_SPIN`` (a rigid turn: the joints hold at the start)."""
+    m = jp.Model(f"spatial_chain{n}", gravity=SPATIAL_GRAVITY, kinematics="spatial")
+    m.add_ground_point("O", (0.0, 0.0, 0.0))
+    half = BAR_LENGTH / 2
+    for k in range(1, n + 1):
+        x = (k - 0.5) * BAR_LENGTH
+        m.add_body(f"bar{k}", mass=BAR_MASS, inertia={"principal": list(SPATIAL_BAR_INERTIA)}, position=(x, 0.0, 0.0),
+                   velocity=(0.0, CHAIN_SPIN * x, 0.0), angular_velocity=(0.0, 0.0, CHAIN_SPIN),
+                   points={"A": [-half, 0.0, 0.0], "B": [half, 0.0, 0.0]})
+        m.add_spherical(f"J{k}", "ground.O" if k == 1 else f"bar{k - 1}.B", f"bar{k}.A")
+    return m
 
 
 def modal_pendulum(modes: int) -> jp.Model:
@@ -206,6 +230,11 @@ def series_rows(series: str, sizes: list[int], chain_time: float | None = None) 
             if spin_up.exudyn is not None:
                 rows.append(Row(series, n, "Exudyn", timing.Case(f"{series} {n} Exudyn", exudyn_case(n, BEAM_T_END)),
                                 "-", rows[-1].reference))
+        elif series == "spatial_chain":
+            # spatial models run in absolute coordinates (the joint-coordinate formulation holds planar trees)
+            t_end = chain_time or 0.1
+            run = jointplay_case(spatial_chain(n), t_end, formulation="absolute", output_step=t_end / 10)
+            rows.append(Row(series, n, "absolute", timing.Case(f"{series} {n} absolute", run)))
         elif series == "modal_body":
             run = jointplay_case(modal_pendulum(n), 0.2, method="bdf", max_order=2, rtol=1e-5, atol=1e-8,
                                  output_step=0.01)

@@ -110,7 +110,8 @@ def test_scaling_benchmark_quick_mode_runs_every_series_and_fits_exponents(capsy
         *[("rigid_chain", n, f) for n in (2, 4) for f in ("joint_coordinates", "absolute")],
         *[("clearance_chain", k, f) for k in (1, 2) for f in ("joint_coordinates", "absolute")],
         *[("beam_mesh", n, code) for n in (2, 4) for code in beam_codes],
-        ("modal_body", 2, "absolute"), ("modal_body", 4, "absolute"), ("breaker", 8, "absolute")]
+        ("modal_body", 2, "absolute"), ("modal_body", 4, "absolute"), ("breaker", 8, "absolute"),
+        ("spatial_chain", 2, "absolute"), ("spatial_chain", 4, "absolute")]
     for r in report["rows"]:
         assert r.case.values("cpu") and r.evaluations() > 0
     # the rule of auto: a 4-bar chain in joint coordinates, bodies on clearance joints only in absolute ones
@@ -124,12 +125,52 @@ def test_scaling_benchmark_quick_mode_runs_every_series_and_fits_exponents(capsy
     assert [(s, v) for s, v, *_ in report["exponents"]] == [
         ("rigid_chain", "joint_coordinates"), ("rigid_chain", "absolute"), ("clearance_chain", "joint_coordinates"),
         ("clearance_chain", "absolute"), *[("beam_mesh", code) for code in beam_codes], ("modal_body", "absolute"),
-        ("breaker", "absolute")]
+        ("breaker", "absolute"), ("spatial_chain", "absolute")]
     out = capsys.readouterr().out
     assert "| rigid_chain | 4 | joint_coordinates |" in out
     assert ("Exudyn / jointplay CPU time" in out) == with_exudyn
     if not with_exudyn:
         assert "Exudyn rows: skipped, exudyn is not installed" in out
+
+
+def test_spatial_benchmark_quick_mode_matches_accuracy_and_reports_ratios_and_scaling(capsys):
+    # exudyn is optional: without it only jointplay is calibrated and no ratio is formed
+    bench = load("bench_spatial")
+    report = bench.main(["--quick", "--markdown"])
+    with_exudyn = importlib.util.find_spec("exudyn") is not None
+    codes = ["jointplay", *(["Exudyn"] if with_exudyn else [])]
+    assert [c.name for c in report["comparisons"]] == ["slider-crank", "spatial chain of 2 bars"]
+    for c in report["comparisons"]:
+        assert list(c.cases) == codes
+        # each timed rung is within the stated tolerance of its reference, the rung before it was not
+        for code in codes:
+            assert 0 <= c.errors[code] <= c.tolerance
+            ladder = [err for name, _, err in c.ladder if name == code]
+            assert ladder[-1] == c.errors[code] and all(err > c.tolerance for err in ladder[:-1])
+            assert c.cases[code].values("cpu") and c.cases[code].values("wall")
+    assert [(name, clock) for name, clock, _ in report["verdicts"]] == (
+        [(c.name, clock) for c in report["comparisons"] for clock in ("cpu", "wall")] if with_exudyn else [])
+    rows = [(r.series, r.size, r.variant) for r in report["scaling"]["rows"]]
+    assert rows == [*[("rigid_chain", n, f) for n in (2, 4) for f in ("joint_coordinates", "absolute")],
+                    ("spatial_chain", 2, "absolute"), ("spatial_chain", 4, "absolute")]
+    assert all(r.evaluations() > 0 for r in report["scaling"]["rows"])
+    out = capsys.readouterr().out
+    assert "| spatial_chain | 4 | absolute |" in out
+    if with_exudyn:
+        assert "goal, slider-crank, jointplay 5x faster than Exudyn, CPU time" in out
+    else:
+        assert "Exudyn rows: skipped, exudyn is not installed" in out
+
+
+def test_spatial_benchmark_runs_without_exudyn(capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "exudyn", None)  # import exudyn now raises ImportError
+    monkeypatch.delitem(sys.modules, "bench_spin_up_beam", raising=False)
+    bench = load("bench_spatial")
+    assert bench.exudyn is None
+    report = bench.main(["--quick", "--part", "exudyn"])
+    assert [list(c.cases) for c in report["comparisons"]] == [["jointplay"], ["jointplay"]]
+    assert report["verdicts"] == [] and report["scaling"] is None
+    assert "Exudyn rows: skipped, exudyn is not installed" in capsys.readouterr().out
 
 
 def test_study_benchmark_quick_mode_runs_three_ways_with_identical_results(capsys):
