@@ -57,6 +57,10 @@ pub fn choose_formulation(model: &Model, requested: Formulation) -> Result<Formu
 
 /// The rule of `Formulation::Auto`.
 fn automatic(model: &Model) -> FormulationChoice {
+    if model.spatial {
+        // (the tree's reason: spatial models run in absolute coordinates)
+        return FormulationChoice::absolute(model.joint_tree.as_ref().err().cloned().unwrap_or_default());
+    }
     if let Some(body) = model.bodies.iter().find(|b| !matches!(b.kind, BodyKind::PlanarRigid(_))) {
         return FormulationChoice::absolute(format!("body {:?} is flexible (joint coordinates hold rigid bodies only)", body.name));
     }

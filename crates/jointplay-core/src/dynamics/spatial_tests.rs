@@ -268,3 +268,14 @@ fn prescribed_loads_accelerate_a_free_body_as_newton_and_euler_say() {
     assert!((body_omega(&tr, "b", n) - Vec3::new(0.0, 0.0, torque * t / izz)).norm() < 1e-9);
     assert!((tr.channel("push.fy").unwrap()[n] - force.y).abs() < 1e-15);
 }
+
+#[test]
+fn a_spatial_model_runs_in_absolute_coordinates_and_says_why() {
+    let b = body("b", 1.0, Mat3::identity(), [0.0; 3], IDENTITY, [0.0; 3], &[point("P", [0.0; 3], None)]);
+    let joint = r#"{"type": "revolute", "name": "pin", "first": "ground.O", "second": "b.P"}"#;
+    let m = spatial([0.0, 0.0, -9.81], &[point("O", [0.0; 3], None)], &[b], joint, "", "");
+    let choice = choose_formulation(&m, Formulation::Auto).unwrap();
+    assert_eq!(choice.formulation, Formulation::Absolute);
+    assert!(choice.reason.contains("the model is spatial"), "{}", choice.reason);
+    assert!(choose_formulation(&m, Formulation::JointCoordinates).unwrap_err().contains("spatial models run in absolute coordinates"));
+}

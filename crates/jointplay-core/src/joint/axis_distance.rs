@@ -37,6 +37,7 @@ impl AxisDistance {
     /// `Phi_dot = a_i . (v_Pj - v_Pi) + (a_i x d) . w_i`: point Jacobians along
     /// `+-a_i` and the first marker's angular Jacobian along `a_i x d`;
     /// `nu = f_dot`; `gamma = f_ddot` minus the velocity-dependent part of `Phi_ddot`.
+    #[inline(never)]
     pub fn linearise(&self, frames: &Frames<'_>, t: f64, mut rows: ConstraintRows<'_>) {
         let (a, d) = self.geometry(frames);
         rows.add_spatial_point_jacobian(frames, 0, 0, &self.first, -a);

@@ -37,6 +37,7 @@ impl AxisRotation {
     /// `Phi_dot = z_i . (w_j - w_i)` (exact while the z axes are aligned, as the
     /// joint keeps them): angular Jacobians along `-+z_i`; `nu = f_dot`;
     /// `gamma = f_ddot - (w_i x z_i) . (w_j - w_i) - z_i . (alpha0_j - alpha0_i)`.
+    #[inline(never)]
     pub fn linearise(&self, frames: &Frames<'_>, t: f64, mut rows: ConstraintRows<'_>) {
         let z = frames.axis(&self.first, 2);
         rows.add_spatial_angular_jacobian(frames, 0, 0, &self.first, -z);

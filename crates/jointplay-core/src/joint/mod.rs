@@ -246,6 +246,7 @@ impl ConstraintKind {
     }
 
     /// Residuals `Phi(q, t)` into `out` (length `n_equations`) [m or rad].
+    #[inline(always)]
     pub fn residual(&self, frames: &Frames<'_>, t: f64, out: &mut [f64]) {
         match self {
             Self::PointCoincidence(c) => c.residual(frames.planar, out),
@@ -259,6 +260,7 @@ impl ConstraintKind {
     }
 
     /// Jacobian rows, `nu` and `gamma` at the current frames (positions and velocities).
+    #[inline(always)]
     pub fn linearise(&self, frames: &Frames<'_>, t: f64, rows: ConstraintRows<'_>) {
         match self {
             Self::PointCoincidence(c) => c.linearise(frames.planar, rows),

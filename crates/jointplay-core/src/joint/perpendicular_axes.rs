@@ -36,6 +36,7 @@ impl PerpendicularAxes {
     /// `Phi_dot = (a_i x a_j) . (w_i - w_j)`: the angular Jacobians along
     /// `+-(a_i x a_j)`; `nu = 0`; `gamma` minus the velocity-dependent part of
     /// `Phi_ddot`, `d/dt(a_i x a_j) . (w_i - w_j)` plus the markers' angular biases.
+    #[inline(never)]
     pub fn linearise(&self, frames: &Frames<'_>, mut rows: ConstraintRows<'_>) {
         let (ai, aj) = self.axes(frames);
         let n = ai.cross(&aj);

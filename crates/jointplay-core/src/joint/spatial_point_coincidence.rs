@@ -28,6 +28,7 @@ impl SpatialPointCoincidence {
 
     /// Jacobian `+J_Pi - J_Pj` along each global axis; `nu = 0`;
     /// `gamma = -(a0_Pi - a0_Pj)`, `a0` the markers' velocity-dependent accelerations.
+    #[inline(never)]
     pub fn linearise(&self, frames: &Frames<'_>, mut rows: ConstraintRows<'_>) {
         for (r, axis) in AXES.iter().enumerate() {
             rows.add_spatial_point_jacobian(frames, r, 0, &self.first, *axis);
