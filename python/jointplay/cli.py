@@ -115,6 +115,10 @@ def _crank_check(crank: str | None, runs: list, paths: list[Path]) -> None:
     if crank is None:
         return
     for run, path in zip(runs, paths):
+        if f"{crank}.angle" not in run and f"{crank}.qw" in run:
+            raise _bad_input(f"--crank: {crank!r} in {path} is a spatial body; the crank angle is the angle of a "
+                             "planar body (a spatial body's orientation is in its Euler-angle channels "
+                             f"{crank}.euler_*)", [])
         if f"{crank}.angle" not in run:
             bodies = sorted(n[: -len(".angle")] for n in run.channels if n.endswith(".angle"))
             raise _bad_input(f"--crank: no body {crank!r} in {path} (bodies: {', '.join(bodies) or 'none'})", [])
@@ -250,7 +254,9 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
     """Validate a model file and print the assembled mechanism.
 
     Prints the bodies with their assembled initial position, the joints, the
-    clearance joints, drivers and force elements, and the degrees of freedom.
+    clearance joints, drivers and force elements, and the degrees of freedom
+    (of a spatial model also by the Grübler-Kutzbach count, and the redundant
+    equations with the elements they belong to).
     Exits with 2 and one line per problem when the file is not valid.
     """
     from .modelfile import assembly_error
@@ -266,6 +272,9 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
         raise _bad_input(f"{model}: the initial configuration cannot be assembled", problems) from None
     q0 = info["initial_coordinates"]
     out.print(f"[bold]{spec['name']}[/]  ({model})")
+    if m.kinematics == "spatial":
+        _check_spatial(info, spec)
+        return
     bodies = table("body", "mass", "inertia", "x (mm)", "y (mm)", "angle (deg)", title="bodies, assembled at t0")
     described = {b["name"]: b for b in info["bodies"]}
     for b in spec["bodies"]:
@@ -314,6 +323,40 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
                   f"{info['formulation_reason']}")
     else:
         out.print(f"formulation (auto): absolute coordinates with constraints, because {info['formulation_reason']}")
+    _notes(info, free)
+    out.print("[green]ok[/]")
+
+
+def _check_spatial(info: dict, spec: dict) -> None:
+    """The spatial part of ``check``: bodies with their inertia tensors and orientations, joints by kind, force
+    elements, degrees of freedom by rank beside the Grübler-Kutzbach count, and the redundant equations."""
+    from . import check_spatial as cs
+
+    print_table(out, cs.bodies_table(info["bodies"], info["initial_coordinates"]))
+    joints = table("joint or driver", "kind", "first body", "second body", "equations", title="constraints")
+    for e in info["elements"]:
+        joints.add_row(e["name"], cs.kind_words(e["kind"]), e["first"], e["second"], str(e["equations"]))
+    print_table(out, joints)
+    if spec.get("spatial_forces"):
+        t = table("force element", "type", "acts on", title="force elements")
+        for f in spec["spatial_forces"]:
+            t.add_row(f["name"], f["type"], " -> ".join(f[key] for key in ("first", "second", "point", "body")
+                                                        if key in f))
+        print_table(out, t)
+    out.print(cs.freedoms_line(info))
+    out.print("formulation (auto): absolute coordinates with constraints, because "
+              f"{info.get('absolute_because') or info['formulation_reason']}")
+    _notes(info)
+    note = cs.count_note(info)
+    if note:
+        out.print("[yellow]note:[/] ", end="")
+        out.print(note, markup=False)
+    out.print("[green]ok[/]")
+
+
+def _notes(info: dict, free: int = 0) -> None:
+    """The notes of ``check``: redundant constraint equations and the elements they belong to; freedoms that
+    nothing drives."""
     if info.get("redundant_equations"):
         out.print(f"[yellow]note:[/] {info['redundant_equations']} constraint equation(s) are redundant (dependent on "
                   f"the others; elements involved: {', '.join(info['dependent_elements'])}). The motion is "
@@ -322,7 +365,6 @@ def check(model: Annotated[Path, typer.Argument(help="Model file (TOML).", show_
     if free > 0:
         out.print(f"[yellow]note:[/] {free} degree(s) of freedom are neither driven nor clearance: "
                   "the mechanism moves under gravity, forces and initial velocities only")
-    out.print("[green]ok[/]")
 
 
 # run -------------------------------------------------------------------------
@@ -549,7 +591,8 @@ def plot(results: Annotated[Path, typer.Argument(help="Results file written by `
 
     Time histories of the chosen channels, the journal-centre orbit of each
     clearance joint inside its clearance circle, and the contact force against
-    the crank angle.
+    the crank angle; for a spatial model, the bodies' centre-of-mass paths,
+    their orientations and angular velocities, and the joint reactions.
     """
     from .plots import standard_figures
 

@@ -409,7 +409,11 @@ class Model:
         """Compiles and assembles the initial configuration; returns the mechanism's summary
         (bodies, joints, coordinates, degrees of freedom, initial coordinates) and, under
         ``beam_frequencies``, each beam's three lowest natural frequencies [Hz], unstressed, free-free and
-        clamped at its start (beams of at most 1500 coordinates: a dense eigensolve).
+        clamped at its start (beams of at most 1500 coordinates: a dense eigensolve). ``n_coordinates`` counts
+        velocities (6 per spatial body: its quaternion's 4 numbers hold 3 freedoms); ``degrees_of_freedom`` is
+        that less the rank of the constraint equations at the assembled position, ``redundant_equations`` the
+        equations beyond that rank and ``dependent_elements`` the elements they belong to; a spatial model also
+        has ``gruebler_kutzbach``, the count of :func:`jointplay.mobility.gruebler_kutzbach`.
 
         The plausibility findings (:func:`jointplay.modelfile.plausibility`) are issued first, as
         :class:`~jointplay.errors.JointplayWarning` warnings, whatever the assembly then does; what the
@@ -435,6 +439,10 @@ class Model:
         info["redundant_equations"] = assembled["redundant_equations"]
         info["dependent_elements"] = list(assembled["dependent_elements"])
         info["degrees_of_freedom"] = info["n_coordinates"] - assembled["constraint_rank"]
+        if self.kinematics == "spatial":
+            from .mobility import gruebler_kutzbach
+
+            info["gruebler_kutzbach"] = gruebler_kutzbach(self._spec)
         info["initial_coordinates"] = np.asarray(assembled["coordinates"])
         info["initial_velocities"] = np.asarray(assembled["velocities"])
         info["modal_bending_frequencies"] = dict(self.compile().modal_bending_frequencies())

@@ -7,7 +7,9 @@
   (degrees, unwrapped from the start so that two revolutions read 0-720);
 - the deformed shape of each beam at chosen times, its deformation (from the
   rigid motion that best fits its nodes) magnified by a factor the figure
-  states; and the histories of each strain gauge.
+  states; and the histories of each strain gauge;
+- for a spatial model, the centre-of-mass paths, orientations, angular
+  velocities and joint reactions of :mod:`jointplay.plots_spatial`.
 
 Every figure of a run that stopped early (a ``.partial.nc``) says so in red
 above its axes: ``run stopped at t = 0.0123 s: <cause>``. Titles are broken
@@ -129,7 +131,7 @@ def default_channels(results: Results) -> list[str]:
     ideal joint reactions, driver efforts (at most eight)."""
     spec = results.spec or {}
     chosen: list[str] = []
-    for joint in spec.get("joints", []):
+    for joint in [*spec.get("joints", []), *spec.get("spatial_joints", [])]:
         if joint["type"] == "translational":
             chosen.append(f"{joint['second'].split('.')[0]}.ax")
     for joint in clearance_joints(results):
@@ -140,11 +142,12 @@ def default_channels(results: Results) -> list[str]:
         if force["type"] == "hydraulic_cylinder":
             chosen += [f"{force['name']}.p_cap", f"{force['name']}.p_rod", f"{force['name']}.stroke"]
     chosen += [f"{g['name']}.axial_strain" for g in spec.get("sensors", [])]
-    chosen += [f"{j['name']}.f" for j in spec.get("joints", []) if j["type"] != "clearance_revolute"]
+    chosen += [f"{j['name']}.f" for j in [*spec.get("joints", []), *spec.get("spatial_joints", [])]
+               if j["type"] != "clearance_revolute"]
     for driver in spec.get("drivers", []):
         chosen += [f"{driver['name']}.torque", f"{driver['name']}.force"]
     if not chosen:
-        chosen = [f"{b['name']}.ax" for b in spec.get("bodies", [])]
+        chosen = [f"{b['name']}.ax" for b in [*spec.get("bodies", []), *spec.get("spatial_bodies", [])]]
     out = list(dict.fromkeys(c for c in chosen if c in results))
     return out[:MAX_DEFAULT_CHANNELS]
 
@@ -349,6 +352,9 @@ def standard_figures(results: Results, out_dir, crank: str | None = None, fmt: s
             paths.append(force_vs_crank(results, joint, crank, out / f"contact_force_{joint}.{fmt}"))
     for beam in beams(results):
         paths.append(deformed_shapes(results, beam, out / f"shapes_{beam['name']}.{fmt}"))
+    from .plots_spatial import spatial_figures
+
+    paths += spatial_figures(results, out, fmt)
     for gauge in strain_gauges(results):
         paths.append(strain_histories(results, gauge, out / f"strain_{gauge}.{fmt}"))
     return paths

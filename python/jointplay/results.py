@@ -218,20 +218,36 @@ class Results:
             simulation = {"t_end": float(self.time[-1]), "t0": float(self.time[0]), **simulation}
         return _with_simulation(self.spec, simulation)
 
-    def point_acceleration(self, point: str) -> tuple[np.ndarray, np.ndarray]:
+    def point_acceleration(self, point: str) -> tuple[np.ndarray, ...]:
         """Acceleration [m/s^2] of a named body point ``"body.point"``, from the body's centre-of-mass
-        acceleration, angular velocity and angular acceleration: a_P = a_G + alpha x r - omega^2 r."""
+        acceleration, angular velocity and angular acceleration: a_P = a_G + alpha x r - omega^2 r, its
+        components (ax, ay); of a spatial body's point a_P = a_G + R (alpha x r + omega x (omega x r)) with
+        omega, alpha and r in the body frame and R the rotation of its quaternion, (ax, ay, az) global."""
         body, _, name = point.partition(".")
-        bodies = {b["name"]: b for b in (self.spec or {}).get("bodies", [])}
+        spec = self.spec or {}
+        bodies = {b["name"]: b for b in [*spec.get("bodies", []), *spec.get("spatial_bodies", [])]}
         local = next((p["position"] for p in bodies.get(body, {}).get("points", []) if p["name"] == name), None)
         if local is None:
             raise KeyError(f"no body point {point!r} in the model")
+        if f"{body}.qw" in self:
+            return self._spatial_point_acceleration(body, np.asarray(local, dtype=float))
         angle, omega, alpha = self[f"{body}.angle"], self[f"{body}.omega"], self[f"{body}.alpha"]
         c, s_ = np.cos(angle), np.sin(angle)
         rx, ry = c * local[0] - s_ * local[1], s_ * local[0] + c * local[1]
         ax = self[f"{body}.ax"] - alpha * ry - omega**2 * rx
         ay = self[f"{body}.ay"] + alpha * rx - omega**2 * ry
         return ax, ay
+
+    def _spatial_point_acceleration(self, body: str, local: np.ndarray) -> tuple[np.ndarray, ...]:
+        """Global acceleration components [m/s^2] of the point ``local`` [m] (body frame) of spatial ``body``."""
+        from scipy.spatial.transform import Rotation
+
+        omega = np.column_stack([self[f"{body}.w{c}"] for c in "xyz"])
+        alpha = np.column_stack([self[f"{body}.alpha_{c}"] for c in "xyz"])
+        relative = np.cross(alpha, local) + np.cross(omega, np.cross(omega, local))
+        quaternion = np.column_stack([self[f"{body}.q{c}"] for c in "xyzw"])  # scipy: scalar last
+        rotated = Rotation.from_quat(quaternion).apply(relative) if len(self) else relative
+        return tuple(self[f"{body}.a{c}"] + rotated[:, k] for k, c in enumerate("xyz"))
 
     # summary ---------------------------------------------------------------
 
@@ -283,14 +299,15 @@ class Results:
     def _sampled_point_accelerations(self) -> tuple[dict, dict]:
         """Peak acceleration magnitude of every named body point and its time, from the samples."""
         peaks, times = {}, {}
-        for body in (self.spec or {}).get("bodies", []) if self.time.size else []:
+        spec = self.spec or {}
+        for body in [*spec.get("bodies", []), *spec.get("spatial_bodies", [])] if self.time.size else []:
             for p in body.get("points", []):
                 name = f"{body['name']}.{p['name']}"
                 try:
-                    ax, ay = self.point_acceleration(name)
+                    components = self.point_acceleration(name)
                 except KeyError:
                     continue
-                magnitude = np.hypot(ax, ay)
+                magnitude = np.linalg.norm(np.vstack(components), axis=0)
                 k = int(np.argmax(magnitude))
                 peaks[name], times[name] = float(magnitude[k]), float(self.time[k])
         return peaks, times
