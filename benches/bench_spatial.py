@@ -55,6 +55,7 @@ import jointplay as jp  # noqa: E402
 import bench_scaling as scaling  # noqa: E402
 import timing  # noqa: E402
 from bench_spin_up_beam import EXUDYN_MISSING, exudyn  # noqa: E402
+from spatial_models import floats, slider_crank_model  # noqa: E402
 from spatial_references import SPATIAL_SLIDER_CRANK, slider_crank_bodies, slider_crank_motion  # noqa: E402
 
 #: The 5x goal of the comparison with Exudyn (Exudyn CPU time / jointplay CPU time).
@@ -73,42 +74,12 @@ EXUDYN_STEPS = [2**k * 100 for k in range(10)]  # 100 ... 51 200 steps over the 
 SCALING_SIZES = ([2, 4, 8, 16, 32, 64], [2, 4])  # full, quick
 
 
-def floats(vector) -> list[float]:
-    return [float(v) for v in vector]
-
-
-def marker(position, axes=None):
-    """A point of a spatial body: its position [m] and, when given, its axes (columns: x, y, z)."""
-    if axes is None:
-        return floats(position)
-    return {"position": floats(position), "axes": {"matrix": np.asarray(axes, float).tolist()}}
-
-
 # -- Haug's spatial slider-crank --------------------------------------------------------------------
 
 def slider_crank_jointplay() -> jp.Model:
     """The slider-crank of ``SPATIAL_SLIDER_CRANK`` at its start (crank angle, rate) in jointplay."""
     data = SPATIAL_SLIDER_CRANK
-    model = jp.Model("spatial_slider_crank_free", gravity=floats(data["gravity"]), kinematics="spatial")
-    start = slider_crank_bodies(data["theta0"], data["theta_dot0"])
-    points = {body: {} for body in start}
-    for joint in data["joints"]:
-        for side in ("first", "second"):
-            body, position, axes = joint[side]
-            if body == "ground":
-                model.add_ground_point(joint["name"], floats(position),
-                                       axes=None if axes is None else {"matrix": np.asarray(axes, float).tolist()})
-            else:
-                points[body][joint["name"]] = marker(position, axes)
-    for body, state in start.items():
-        model.add_body(body, mass=data[f"{body}_mass"], inertia={"principal": floats(data[f"{body}_inertia"])},
-                       position=floats(state["position"]), orientation={"matrix": state["rotation"].tolist()},
-                       velocity=floats(state["velocity"]), angular_velocity=floats(state["angular_velocity"]),
-                       points=points[body])
-    for joint in data["joints"]:
-        add = getattr(model, f"add_{joint['type']}")
-        add(joint["name"], f"{joint['first'][0]}.{joint['name']}", f"{joint['second'][0]}.{joint['name']}")
-    return model
+    return slider_crank_model(data["theta0"], data["theta_dot0"], name="spatial_slider_crank_free")
 
 
 def slider_crank_exudyn(mbs):

@@ -26,15 +26,14 @@ from scipy.interpolate import CubicSpline
 
 import jointplay as jp
 from reference_hydraulic import CylinderParameters
+from spatial_models import floats, marker, slider_crank_model
 from spatial_references import (
     BRICARD,
-    SPATIAL_SLIDER_CRANK,
     axial_gravity,
     body_marker,
     bricard_motion,
     closed_chamber_angular_frequency,
     heavy_symmetric_top,
-    slider_crank_bodies,
     slider_crank_motion,
     rotation_zxz,
     top_initial_state,
@@ -46,17 +45,6 @@ DOUBLE_PARALLELOGRAM = Path(__file__).resolve().parents[2] / "examples" / "doubl
 
 
 # helpers --------------------------------------------------------------------------------------------
-
-def floats(vector) -> list[float]:
-    return [float(v) for v in vector]
-
-
-def marker(position, axes=None):
-    """A point of a spatial body: its position [m] and, when given, its axes (columns: x, y, z)."""
-    if axes is None:
-        return floats(position)
-    return {"position": floats(position), "axes": {"matrix": np.asarray(axes, float).tolist()}}
-
 
 def rotations(results: jp.Results, body: str) -> np.ndarray:
     """Rotation matrices body -> global (n, 3, 3) from the quaternion channels (scalar first, Hamilton)."""
@@ -232,33 +220,6 @@ def test_bricard_joint_point_follows_the_minimal_coordinate_model():
 
 
 # Haug's spatial slider-crank --------------------------------------------------------------------------
-
-def slider_crank_model(theta0: float = SPATIAL_SLIDER_CRANK["theta0"],
-                       theta_dot0: float = SPATIAL_SLIDER_CRANK["theta_dot0"]) -> jp.Model:
-    """The spatial slider-crank of SPATIAL_SLIDER_CRANK, its bodies placed and moving at the crank angle
-    theta0 [rad] and rate theta_dot0 [rad/s] (``slider_crank_bodies``)."""
-    data = SPATIAL_SLIDER_CRANK
-    model = jp.Model("spatial slider-crank", gravity=floats(data["gravity"]), kinematics="spatial")
-    start = slider_crank_bodies(theta0, theta_dot0)
-    points = {body: {} for body in start}
-    for joint in data["joints"]:
-        for side in ("first", "second"):
-            body, position, axes = joint[side]
-            if body == "ground":
-                model.add_ground_point(joint["name"], floats(position),
-                                       axes=None if axes is None else {"matrix": np.asarray(axes, float).tolist()})
-            else:
-                points[body][joint["name"]] = marker(position, axes)
-    for body, state in start.items():
-        model.add_body(body, mass=data[f"{body}_mass"], inertia={"principal": floats(data[f"{body}_inertia"])},
-                       position=floats(state["position"]), orientation={"matrix": state["rotation"].tolist()},
-                       velocity=floats(state["velocity"]), angular_velocity=floats(state["angular_velocity"]),
-                       points=points[body])
-    for joint in data["joints"]:
-        add = getattr(model, f"add_{joint['type']}")
-        add(joint["name"], f"{joint['first'][0]}.{joint['name']}", f"{joint['second'][0]}.{joint['name']}")
-    return model
-
 
 def test_spatial_slider_crank_moves_as_lagrange_equation_in_the_crank_angle():
     model = slider_crank_model()
