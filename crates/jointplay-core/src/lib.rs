@@ -1,19 +1,20 @@
 //! # jointplay-core
 //!
-//! The numerical core of jointplay: planar mechanisms with ideal joints,
-//! dry revolute clearance joints, drivers and force elements, integrated by
-//! adaptive Runge-Kutta or Adams predictor-corrector methods with contact
-//! events.
+//! The numerical core of jointplay: planar and spatial mechanisms with
+//! ideal joints, revolute clearance joints (dry or lubricated), flexible
+//! links, drivers and force elements, integrated by adaptive Runge-Kutta,
+//! Adams, NDF or generalized-alpha methods with contact events.
 //!
 //! The folders read as a table of contents of the physics:
 //!
-//! - [`body`]: kinds of bodies behind one contract (the planar rigid body);
+//! - [`kinematics`]: the vocabulary bodies and elements speak (frames, markers, quaternions, Euler angles, wrenches);
+//! - [`body`]: kinds of bodies behind one trait (planar rigid, beam, modal, spatial rigid);
 //! - [`contact`]: normal contact force laws and contact stiffness laws;
 //! - [`friction`]: tangential friction laws;
 //! - [`motion`]: prescribed functions of time for drivers and loads;
 //! - [`lubrication`]: journal-bearing film models and the Reynolds solver;
-//! - [`joint`]: ideal joints as constraints, the clearance revolute joint as a force element;
-//! - [`force`]: springs, dampers, applied loads, gravity;
+//! - [`joint`]: ideal joints from constraint primitives (planar and spatial), the clearance revolute joint as a force element;
+//! - [`force`]: springs, dampers, bushings, applied loads, hydraulic cylinders;
 //! - [`dynamics`]: model, state, workspace, equations of motion, assembly, projection;
 //! - [`integrate`]: time integrators with dense output and event location;
 //! - [`linalg`]: the small dense factorisations the hot loop uses without allocating;
