@@ -91,6 +91,13 @@ const UNBALANCED: f64 = 1e-3;
 /// first Newton step of a stiff beam under its whole load is the linear
 /// solution, which stretches the beam as it bends it.
 pub fn equilibrium(model: &Model, t0: f64, options: &EquilibriumOptions, ws: &mut Workspace) -> Result<Equilibrium, SimulationError> {
+    if !model.layout.identity_position_rates {
+        // (the Newton iteration below moves the positions as a vector of the velocities' size)
+        return Err(SimulationError::InvalidInput {
+            time: t0,
+            message: "the static equilibrium of a model whose positions are not its velocities' integrals (a spatial body's quaternion) is not available; simulate from the assembled start instead (with damping, to rest)".to_string(),
+        });
+    }
     let start = assemble(model, t0, ws)?;
     let all = model.constraints.len();
     if all == model.n_dynamic_constraints {
