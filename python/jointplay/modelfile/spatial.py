@@ -177,19 +177,7 @@ class SpatialSections:
         return False
 
     def joints(self) -> None:
-        b = self.b
-        for name, where, raw in b.entries("joints"):
-            b.claim(name, where)
-            if self.planar_only("joints", raw, where):
-                continue
-            kind = b.tagged(raw, "type", s.SPATIAL_JOINTS, where)
-            if kind is None:
-                continue
-            b.joint_types[name] = kind
-            table = b.validate(s.SPATIAL_JOINTS[kind], raw, where, hint=f"{kind} joint: ")
-            joint = None if table is None else b.element_spec(p.SPATIAL_JOINTS[kind], name, where, table, raw)
-            if joint is not None:
-                b.spec["spatial_joints"].append(joint)
+        self.elements("joints", s.SPATIAL_JOINTS, p.SPATIAL_JOINTS, "spatial_joints", " joint")
 
     def drivers(self) -> None:
         b = self.b
@@ -213,18 +201,26 @@ class SpatialSections:
                 b.spec["drivers"].append({"name": name, "joint": table.joint, "function": function})
 
     def forces(self) -> None:
+        self.elements("forces", s.SPATIAL_FORCES, p.SPATIAL_FORCES, "spatial_forces", "")
+
+    def elements(self, section: str, schemas: dict, tables: dict, spec_key: str, word: str) -> None:
+        """The entries of ``section`` (``joints``, ``forces``), each validated by the schema of its ``type`` and
+        added to the core's ``spec_key``; a planar-only type gets its message (joints' types are remembered for
+        the drivers)."""
         b = self.b
-        for name, where, raw in b.entries("forces"):
+        for name, where, raw in b.entries(section):
             b.claim(name, where)
-            if self.planar_only("forces", raw, where):
+            if self.planar_only(section, raw, where):
                 continue
-            kind = b.tagged(raw, "type", s.SPATIAL_FORCES, where)
+            kind = b.tagged(raw, "type", schemas, where)
             if kind is None:
                 continue
-            table = b.validate(s.SPATIAL_FORCES[kind], raw, where, hint=f"{kind}: ")
-            force = None if table is None else b.element_spec(p.SPATIAL_FORCES[kind], name, where, table, raw)
-            if force is not None:
-                b.spec["spatial_forces"].append(force)
+            if section == "joints":
+                b.joint_types[name] = kind
+            table = b.validate(schemas[kind], raw, where, hint=f"{kind}{word}: ")
+            element = None if table is None else b.element_spec(tables[kind], name, where, table, raw)
+            if element is not None:
+                b.spec[spec_key].append(element)
 
     def connectivity(self) -> None:
         """A model without bodies, or a body that nothing refers to (unless ``free = true``), is a mistake."""

@@ -15,7 +15,7 @@ use crate::error::ModelErrors;
 use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
 use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
 use super::joint_coordinates::JointTree;
-use crate::spec::{ranges, Range, BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, PointSpec, SensorSpec, GROUND};
+use crate::spec::{ranges, Range, SpringDamperSpec, BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, PointSpec, SensorSpec, GROUND};
 
 #[path = "compile/beams.rs"]
 mod beams;
@@ -523,7 +523,7 @@ impl<'s> Compiler<'s> {
     /// The element described by `f`, with its name and initial states.
     fn force(&mut self, loc: &str, f: &'s ForceSpec) -> Option<(&'s str, ForceElement, Vec<f64>)> {
         match f {
-            ForceSpec::SpringDamper { name, first, second, stiffness, damping, free_length } => {
+            ForceSpec::SpringDamper(SpringDamperSpec { name, first, second, stiffness, damping, free_length }) => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let a = self.point(first, format!("{loc}.first"));
                 let b = self.point(second, format!("{loc}.second"));

@@ -209,20 +209,7 @@ pub struct DriverSpec {
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 pub enum ForceSpec {
     /// Linear spring and damper between two points, tension positive.
-    SpringDamper {
-        /// Name.
-        name: String,
-        /// Point on the first body.
-        first: String,
-        /// Point on the second body.
-        second: String,
-        /// Stiffness [N/m].
-        stiffness: f64,
-        /// Damping coefficient [N s/m].
-        damping: f64,
-        /// Free length [m].
-        free_length: f64,
-    },
+    SpringDamper(SpringDamperSpec),
     /// Torsional spring and damper on the relative angle of two bodies.
     RotationalSpringDamper {
         /// Name.
@@ -261,6 +248,25 @@ pub enum ForceSpec {
     /// Double-acting hydraulic cylinder between two points, along their line;
     /// its chamber pressures are states of the simulation.
     HydraulicCylinder(HydraulicCylinderSpec),
+}
+
+/// A linear spring and damper between two points, tension positive (in the
+/// plane and in space alike).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpringDamperSpec {
+    /// Name.
+    pub name: String,
+    /// Point on the first body.
+    pub first: String,
+    /// Point on the second body.
+    pub second: String,
+    /// Stiffness [N/m].
+    pub stiffness: f64,
+    /// Damping coefficient [N s/m].
+    pub damping: f64,
+    /// Free length [m].
+    pub free_length: f64,
 }
 
 /// A hydraulic cylinder: barrel attached at `first`, rod eye at `second`.

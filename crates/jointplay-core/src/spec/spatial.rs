@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Deserializer, Serialize};
 
-use super::{FunctionSpec, HydraulicCylinderSpec};
+use super::{FunctionSpec, HydraulicCylinderSpec, SpringDamperSpec};
 
 /// A 3-vector given as 3 numbers, or as 2 (the third zero: planar descriptions).
 pub fn vector3<'de, D: Deserializer<'de>>(deserializer: D) -> Result<[f64; 3], D::Error> {
@@ -104,20 +104,7 @@ pub enum LoadFrameSpec {
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SpatialForceSpec {
     /// Linear spring and damper between two points, tension positive.
-    SpringDamper {
-        /// Name.
-        name: String,
-        /// Point on the first body.
-        first: String,
-        /// Point on the second body.
-        second: String,
-        /// Stiffness [N/m].
-        stiffness: f64,
-        /// Damping coefficient [N s/m].
-        damping: f64,
-        /// Free length [m].
-        free_length: f64,
-    },
+    SpringDamper(SpringDamperSpec),
     /// Six linear springs and dampers between two marker frames, in the first's axes.
     Bushing {
         /// Name.

@@ -13,7 +13,7 @@ use crate::kinematics::marker::{BodyIndex, Marker, Site, SpatialMarker};
 use crate::kinematics::euler::EulerSequence;
 use crate::kinematics::quaternion;
 use crate::kinematics::spatial::{Mat3, Vec3};
-use crate::spec::{ranges, Range, LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec};
+use crate::spec::{ranges, Range, SpringDamperSpec, LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec};
 
 /// Tolerance on a marker's axes being a rotation: `|A^T A - I|` and `|det A - 1|` [-].
 const AXES_TOLERANCE: f64 = 1e-6;
@@ -161,7 +161,7 @@ impl<'s> Compiler<'s> {
 
     fn spatial_force(&mut self, loc: &str, f: &'s SpatialForceSpec) -> Option<(&'s str, ForceElement, Vec<f64>)> {
         match f {
-            SpatialForceSpec::SpringDamper { name, first, second, stiffness, damping, free_length } => {
+            SpatialForceSpec::SpringDamper(SpringDamperSpec { name, first, second, stiffness, damping, free_length }) => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let (a, b) = (self.spatial_point(first, format!("{loc}.first")), self.spatial_point(second, format!("{loc}.second")));
                 let checks = [
