@@ -15,6 +15,7 @@
 //! - [`lubrication`]: journal-bearing film models and the Reynolds solver;
 //! - [`joint`]: ideal joints from constraint primitives (planar and spatial), the clearance revolute joint as a force element;
 //! - [`force`]: springs, dampers, bushings, applied loads, hydraulic cylinders;
+//! - [`element`]: the one contract of every joint, driver and force element, and the list of their kinds;
 //! - [`dynamics`]: model, state, workspace, equations of motion, assembly, projection;
 //! - [`integrate`]: time integrators with dense output and event location;
 //! - [`linalg`]: the small dense factorisations the hot loop uses without allocating;
@@ -32,6 +33,7 @@ pub mod beam;
 pub mod body;
 pub mod contact;
 pub mod dynamics;
+pub mod element;
 pub mod error;
 pub mod force;
 pub mod friction;

@@ -263,9 +263,9 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
     }
     d.set_item("bodies", bodies)?;
     let elements = PyList::empty(py);
-    for el in &m.elements {
+    for (k, el) in m.ideal_elements() {
         let e = PyDict::new(py);
-        e.set_item("name", &el.name)?;
+        e.set_item("name", &m.elements[k].name)?;
         e.set_item("kind", format!("{:?}", el.kind))?;
         e.set_item("first", m.body_name(el.first))?;
         e.set_item("second", m.body_name(el.second))?;
@@ -275,7 +275,7 @@ pub fn describe<'py>(py: Python<'py>, m: &Model) -> PyResult<Bound<'py, PyDict>>
     }
     d.set_item("elements", elements)?;
     let clearance: Vec<&str> = m.clearance_joints().map(|(_, name, _)| name).collect();
-    let forces: Vec<&str> = m.force_names.iter().map(String::as_str).filter(|name| !clearance.contains(name)).collect();
+    let forces: Vec<&str> = m.acting.iter().map(|&k| m.elements[k].name.as_str()).filter(|name| !clearance.contains(name)).collect();
     d.set_item("clearance_joints", clearance)?;
     d.set_item("forces", forces)?;
     d.set_item("n_coordinates", m.n_velocities())?;

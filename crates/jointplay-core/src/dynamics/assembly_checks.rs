@@ -13,7 +13,7 @@ use super::projection::project_positions;
 use super::rigid_placement::place_bodies_rigidly;
 use crate::kinematics::marker::Marker;
 use crate::kinematics::planar::Frame;
-use super::model::ElementKind;
+use crate::joint::IdealKind;
 use super::{Model, Workspace};
 use crate::body::BodyKind;
 use crate::error::SimulationError;
@@ -157,10 +157,10 @@ fn driver_notes(model: &Model, t0: f64, ws: &mut Workspace) -> Vec<AssemblyNote>
     let size = mechanism_size(model, &frames);
     constraint_residuals(model, model.n_dynamic_constraints, t0, ws);
     let mut notes = Vec::new();
-    for element in &model.elements {
+    for (k, element) in model.ideal_elements() {
         let angle = match element.kind {
-            ElementKind::AngleDriver => true,
-            ElementKind::DisplacementDriver => false,
+            IdealKind::AngleDriver => true,
+            IdealKind::DisplacementDriver => false,
             _ => continue,
         };
         let row = model.row_offsets[element.constraints.start];
@@ -174,7 +174,7 @@ fn driver_notes(model: &Model, t0: f64, ws: &mut Workspace) -> Vec<AssemblyNote>
         if off {
             let what = if angle { "relative angle" } else { "displacement" };
             notes.push(AssemblyNote {
-                name: element.name.clone(),
+                name: model.elements[k].name.clone(),
                 on_body: false,
                 message: format!(
                     "its value at the start (t = {t0:.6} s) differs by {text} from the {what} its joint has between the bodies as given; assembly moved the linkage to the driver's value (see the notes on the bodies moved): give the bodies at the driver's start value, or the driver's `initial` that matches them"

@@ -5,7 +5,8 @@ use super::spatial_reactions::{spatial_driver_effort, spatial_reactions};
 use std::ops::Range;
 
 use crate::kinematics::planar::cross;
-use super::model::ElementKind;
+use crate::element::ElementModel;
+use crate::joint::IdealKind;
 use crate::body::{BodyKind, BodyModel};
 use super::{Model, Workspace};
 
@@ -29,9 +30,9 @@ pub(crate) enum Source {
     Velocity(usize),
     /// Acceleration of coordinate `k`.
     Acceleration(usize),
-    /// Ideal element (joint or driver): the index of the output among its kind's channels.
+    /// Ideal element (joint or driver; an index into `Model::elements`): the index of the output among its kind's channels.
     Ideal(usize, u8),
-    /// Force element (clearance joints included): the index of the output among its channels.
+    /// Element acting through forces (clearance joints included; an index into `Model::elements`): the index of the output among its channels.
     Force(usize, u8),
     /// Strain gauge: the index of the output among [`super::model::StrainGauge::CHANNELS`].
     Gauge(usize, u8),
@@ -143,8 +144,8 @@ pub(crate) fn read_channels(model: &Model, reads: &[ChannelRead], y: &[f64], ws:
             ChannelRead::Coordinates(r) => out.copy_from_slice(&q[r.clone()]),
             ChannelRead::Velocities(r) => out.copy_from_slice(&v[r.clone()]),
             ChannelRead::Accelerations(r) => out.copy_from_slice(&ws.accelerations[r.clone()]),
-            ChannelRead::ForceOutputs { element, outputs } => model.forces[*element].outputs(outputs.clone(), &ws.frames, &ws.element_work[*element], out),
-            ChannelRead::Reactions { element, outputs } if model.elements[*element].spatial_markers.is_some() => {
+            ChannelRead::ForceOutputs { element, outputs } => model.elements[*element].kind.outputs(outputs.clone(), &ws.frames, &ws.element_work[*element], out),
+            ChannelRead::Reactions { element, outputs } if model.ideal(*element).spatial_markers.is_some() => {
                 out.copy_from_slice(&spatial_reactions(model, *element, ws)[outputs.clone()]);
             }
             ChannelRead::Reactions { element, outputs } => out.copy_from_slice(&reactions(model, *element, ws)[outputs.clone()]),
@@ -159,7 +160,7 @@ pub(crate) fn read_channels(model: &Model, reads: &[ChannelRead], y: &[f64], ws:
 
 /// Whether ideal element `e` is a driver (one output, its effort).
 fn is_driver(model: &Model, e: usize) -> bool {
-    matches!(model.elements[e].kind, ElementKind::AngleDriver | ElementKind::DisplacementDriver | ElementKind::SpatialAngleDriver | ElementKind::SpatialDisplacementDriver)
+    model.ideal(e).kind.is_driver()
 }
 
 /// The value of one channel; `energy` is `[kinetic, potential]` [J] of the sample.
@@ -168,13 +169,13 @@ pub(crate) fn value(model: &Model, source: Source, y: &[f64], ws: &Workspace, en
         Source::Coordinate(k) => y[k],
         Source::Velocity(k) => y[model.layout.nq + k],
         Source::Acceleration(k) => ws.accelerations[k],
-        Source::Ideal(e, which) if model.elements[e].spatial_markers.is_some() => match model.elements[e].kind {
-            ElementKind::SpatialAngleDriver => spatial_driver_effort(model, e, ws, true),
-            ElementKind::SpatialDisplacementDriver => spatial_driver_effort(model, e, ws, false),
+        Source::Ideal(e, which) if model.ideal(e).spatial_markers.is_some() => match model.ideal(e).kind {
+            IdealKind::SpatialAngleDriver => spatial_driver_effort(model, e, ws, true),
+            IdealKind::SpatialDisplacementDriver => spatial_driver_effort(model, e, ws, false),
             _ => spatial_reactions(model, e, ws)[which as usize],
         },
         Source::Ideal(e, which) => if is_driver(model, e) { driver_effort(model, e, ws) } else { reactions(model, e, ws)[which as usize] },
-        Source::Force(f, which) => model.forces[f].output(which as usize, &ws.frames, &ws.element_work[f]),
+        Source::Force(f, which) => model.elements[f].kind.output(which as usize, &ws.frames, &ws.element_work[f]),
         Source::Gauge(k, which) => gauge_value(model, k, which, y),
         Source::Derived(k, which) => {
             let (address, (q, v, _)) = (&model.layout.bodies[k], model.layout.split(y));
@@ -213,7 +214,7 @@ pub(crate) fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
         }
         return;
     }
-    for (e, element) in model.elements.iter().enumerate() {
+    for (e, element) in model.ideal_elements() {
         if element.constraints.end <= model.n_dynamic_constraints {
             ws.constraint_forces[e] = constraint_force_on_second(model, e, ws);
         }
@@ -225,7 +226,7 @@ pub(crate) fn update_constraint_forces(model: &Model, ws: &mut Workspace) {
 /// second is the ground): the loads of its rows' multipliers, `-Phi_q^T lambda`,
 /// as each primitive states them at its markers.
 fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 3] {
-    let element = &model.elements[e];
+    let element = model.ideal(e);
     let (slot, sign) = if element.second.is_ground() { (0, -1.0) } else { (1, 1.0) };
     let centre = ws.frames[element.frames[slot]].position;
     let mut g = [0.0; 3];
@@ -243,16 +244,16 @@ fn constraint_force_on_second(model: &Model, e: usize, ws: &Workspace) -> [f64; 
 /// (the moment about the element's point on its second body).
 fn reactions(model: &Model, e: usize, ws: &Workspace) -> [f64; 4] {
     let [fx, fy, moment] = ws.constraint_forces[e];
-    let element = &model.elements[e];
+    let element = model.ideal(e);
     let frame = &ws.frames[element.frames[1]];
     [fx, fy, (fx * fx + fy * fy).sqrt(), moment - cross(frame.rotate(element.second_point), nalgebra::Vector2::new(fx, fy))]
 }
 
 fn driver_effort(model: &Model, e: usize, ws: &Workspace) -> f64 {
-    let element = &model.elements[e];
+    let element = model.ideal(e);
     let [fx, fy, moment] = ws.constraint_forces[e];
     match element.kind {
-        ElementKind::DisplacementDriver => ws.frames[element.frames[0]].rotate(element.axis).dot(&nalgebra::Vector2::new(fx, fy)),
+        IdealKind::DisplacementDriver => ws.frames[element.frames[0]].rotate(element.axis).dot(&nalgebra::Vector2::new(fx, fy)),
         _ => moment,
     }
 }
@@ -263,7 +264,7 @@ fn kinetic_and_potential_energy(model: &Model, y: &[f64], ws: &Workspace) -> [f6
     let bodies = model.bodies.iter().zip(&model.layout.bodies);
     let kinetic: f64 = bodies.clone().map(|(b, a)| b.kind.kinetic_energy(&q[a.q_range()], &v[a.v_range()])).sum();
     let own: f64 = bodies.map(|(b, a)| b.kind.potential_energy(model.gravity, &q[a.q_range()])).sum();
-    let elements: f64 = model.forces.iter().zip(&ws.element_work).map(|(element, work)| element.potential_energy(work)).sum();
+    let elements: f64 = model.elements.iter().zip(&ws.element_work).map(|(element, work)| element.kind.potential_energy(work)).sum();
     let potential = own + elements;
     [kinetic, potential]
 }

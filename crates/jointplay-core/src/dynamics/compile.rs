@@ -8,12 +8,13 @@ use super::constraint_jacobian::{JacobianPattern, MarkerColumns};
 use crate::kinematics::marker::{BodyIndex, Marker, ModalNodeSite, Site, SpatialMarker};
 use crate::kinematics::planar::{perp, Frame, Vec2};
 use crate::kinematics::spatial::Vec3;
-use super::model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
+use super::model::{Body, Model, SchurTerm, Section, StrainGauge, VelocityStart};
 use crate::body::{BodyKind, BodyModel, MassBlock, PlanarRigidBody};
 use crate::linalg::PatternLdl;
 use crate::error::ModelErrors;
-use crate::force::{AppliedTorque, ForceElement, PointForce, RotationalSpringDamper, SpringDamper};
-use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, PointCoincidence, RelativeAngle, Target};
+use crate::element::{Element, ElementKind, ElementModel};
+use crate::force::{AppliedTorque, PointForce, RotationalSpringDamper, SpringDamper};
+use crate::joint::{AxialProjection, ClearanceRevolute, Constraint, ConstraintKind, IdealElement, IdealKind, PointCoincidence, RelativeAngle, Target};
 use super::joint_coordinates::JointTree;
 use crate::spec::{ranges, Range, SpringDamperSpec, BeamSpec, ModalBodySpec, ClearanceJointSpec, DriverSpec, ForceSpec, JointSpec, ModelSpec, PointSpec, SensorSpec, GROUND};
 
@@ -88,7 +89,7 @@ struct Compiler<'s> {
     spatial_joint_index: HashMap<&'s str, SpatialJointEntry>,
     model: Model,
     /// joint name -> (kind, element index) for drivers
-    joint_index: HashMap<&'s str, (ElementKind, usize)>,
+    joint_index: HashMap<&'s str, (IdealKind, usize)>,
     /// Clearance joints to lock at assembly: bearing, journal, initial eccentricity [m], name.
     assembly_locks: Vec<(Marker, Marker, Vec2, String)>,
     names: HashMap<String, String>,
@@ -114,9 +115,9 @@ impl<'s> Compiler<'s> {
             schur_terms: Vec::new(),
             schur_factor: PatternLdl::analyse(0, &[]),
             elements: Vec::new(),
-            forces: Vec::new(),
-            force_names: Vec::new(),
+            acting: Vec::new(),
             event_offsets: vec![0],
+            memory_offsets: vec![0],
             event_bodies: Vec::new(),
             initial_coordinates: Vec::new(),
             initial_velocities: Vec::new(),
@@ -309,8 +310,8 @@ impl<'s> Compiler<'s> {
         Some(MarkerColumns { body: marker.body.0 - 1, body_columns: address.v_range(), columns: address.v + within.start..address.v + within.end })
     }
 
-    /// Adds an element owning `kinds`; returns its index.
-    fn add_element(&mut self, name: &str, kind: ElementKind, first: Marker, second: Marker, axis: Vec2, kinds: Vec<ConstraintKind>) -> usize {
+    /// Adds an ideal element owning the constraints `kinds`, with its channels; returns its index.
+    fn add_element(&mut self, name: &str, kind: IdealKind, first: Marker, second: Marker, axis: Vec2, kinds: Vec<ConstraintKind>) -> usize {
         let owner = self.model.elements.len();
         let start = self.model.constraints.len();
         for k in kinds {
@@ -322,8 +323,7 @@ impl<'s> Compiler<'s> {
             self.model.jacobian_pattern.push_rows(rows, markers);
             self.model.constraints.push(Constraint { kind: k, owner });
         }
-        self.model.elements.push(IdealElement {
-            name: name.to_string(),
+        let ideal = IdealElement {
             kind,
             first: first.body,
             second: second.body,
@@ -332,18 +332,26 @@ impl<'s> Compiler<'s> {
             axis,
             constraints: start..self.model.constraints.len(),
             spatial_markers: None,
-        });
-        owner
+        };
+        self.push_element(name, ElementKind::Ideal(ideal), Vec::new())
+    }
+
+    /// The ideal element `element`, to complete.
+    fn ideal_mut(&mut self, element: usize) -> &mut IdealElement {
+        match &mut self.model.elements[element].kind {
+            ElementKind::Ideal(ideal) => ideal,
+            _ => unreachable!("the element was added as an ideal one"),
+        }
     }
 
     fn joints(&mut self) {
         for (k, joint) in self.spec.joints.iter().enumerate() {
             let loc = format!("joints[{k}]");
             match joint {
-                JointSpec::Revolute { name, first, second } => self.ideal_joint(&loc, name, first, second, ElementKind::RevoluteJoint, None),
-                JointSpec::Fixed { name, first, second } => self.ideal_joint(&loc, name, first, second, ElementKind::FixedJoint, None),
+                JointSpec::Revolute { name, first, second } => self.ideal_joint(&loc, name, first, second, IdealKind::RevoluteJoint, None),
+                JointSpec::Fixed { name, first, second } => self.ideal_joint(&loc, name, first, second, IdealKind::FixedJoint, None),
                 JointSpec::Translational { name, first, second, axis } => {
-                    self.ideal_joint(&loc, name, first, second, ElementKind::TranslationalJoint, Some(*axis))
+                    self.ideal_joint(&loc, name, first, second, IdealKind::TranslationalJoint, Some(*axis))
                 }
                 JointSpec::ClearanceRevolute(c) => self.clearance_joint(&loc, c),
             }
@@ -358,7 +366,7 @@ impl<'s> Compiler<'s> {
         true
     }
 
-    fn ideal_joint(&mut self, loc: &str, name: &'s str, first: &str, second: &str, kind: ElementKind, axis: Option<[f64; 2]>) {
+    fn ideal_joint(&mut self, loc: &str, name: &'s str, first: &str, second: &str, kind: IdealKind, axis: Option<[f64; 2]>) {
         self.claim_name(name, &format!("{loc}.name"));
         let a = self.point(first, format!("{loc}.first"));
         let b = self.point(second, format!("{loc}.second"));
@@ -371,8 +379,8 @@ impl<'s> Compiler<'s> {
         let coincide = ConstraintKind::PointCoincidence(PointCoincidence { first: a, second: b, offset: Vec2::zeros() });
         let mut unit_axis = Vec2::zeros();
         let kinds = match kind {
-            ElementKind::RevoluteJoint => vec![coincide],
-            ElementKind::FixedJoint => vec![coincide, lock_rotation],
+            IdealKind::RevoluteJoint => vec![coincide],
+            IdealKind::FixedJoint => vec![coincide, lock_rotation],
             _ => {
                 let axis = axis.unwrap_or([0.0, 0.0]);
                 let v = Vec2::new(axis[0], axis[1]);
@@ -387,7 +395,6 @@ impl<'s> Compiler<'s> {
         };
         let element = self.add_element(name, kind, a, b, unit_axis, kinds);
         self.joint_index.insert(name, (kind, element));
-        self.ideal_channels(element, name);
     }
 
     fn clearance_joint(&mut self, loc: &str, c: &'s ClearanceJointSpec) {
@@ -444,7 +451,7 @@ impl<'s> Compiler<'s> {
             initial_eccentricity: e0,
             lubrication,
         };
-        self.push_force_element(&c.name, ForceElement::ClearanceRevolute(joint), Vec::new());
+        self.push_element(&c.name, ElementKind::ClearanceRevolute(joint), Vec::new());
     }
 
     fn drivers(&mut self) {
@@ -467,15 +474,15 @@ impl<'s> Compiler<'s> {
             return;
         };
         let Some(function) = function else { return };
-        let element = self.model.elements[joint].clone();
+        let element = self.model.ideal(joint).clone();
         let [first_point, second] = self.joint_points(joint);
         let (driver_kind, constraint) = match kind {
-            ElementKind::RevoluteJoint => (
-                ElementKind::AngleDriver,
+            IdealKind::RevoluteJoint => (
+                IdealKind::AngleDriver,
                 ConstraintKind::RelativeAngle(RelativeAngle { first: first_point, second, target: Target::Driven(function) }),
             ),
-            ElementKind::TranslationalJoint => (
-                ElementKind::DisplacementDriver,
+            IdealKind::TranslationalJoint => (
+                IdealKind::DisplacementDriver,
                 ConstraintKind::AxialProjection(AxialProjection { first: first_point, second, direction: element.axis, target: Target::Driven(function) }),
             ),
             _ => {
@@ -483,45 +490,50 @@ impl<'s> Compiler<'s> {
                 return;
             }
         };
-        let index = self.add_element(&d.name, driver_kind, first_point, second, element.axis, vec![constraint]);
-        self.ideal_channels(index, &d.name);
+        self.add_element(&d.name, driver_kind, first_point, second, element.axis, vec![constraint]);
     }
 
     /// The first and the second point of an ideal joint (its constraints' markers).
     fn joint_points(&self, element: usize) -> [Marker; 2] {
-        self.model.constraints[self.model.elements[element].constraints.start].kind.markers()
+        self.model.constraints[self.model.ideal(element).constraints.start].kind.markers()
     }
 
     fn forces(&mut self) {
         for (k, f) in self.spec.forces.iter().enumerate() {
             let loc = format!("forces[{k}]");
             if let Some((name, element, states)) = self.force(&loc, f) {
-                self.push_force_element(name, element, states);
+                self.push_element(name, element, states);
             }
         }
     }
 
-    /// Adds a force element with its channels, initial states and events.
-    fn push_force_element(&mut self, name: &str, element: ForceElement, initial_states: Vec<f64>) {
-        let index = self.model.forces.len();
-        for (q, (quantity, unit, description)) in element.channels().iter().enumerate() {
-            self.channel(name, quantity, unit, description.to_string(), Source::Force(index, q as u8));
+    /// Adds an element with its channels, initial states, events and memory
+    /// slots, as its kind declares them; returns its index.
+    fn push_element(&mut self, name: &str, kind: ElementKind, initial_states: Vec<f64>) -> usize {
+        let index = self.model.elements.len();
+        let acting = kind.acts_through_forces();
+        for (q, (quantity, unit, description)) in kind.channels().iter().enumerate() {
+            let source = if acting { Source::Force(index, q as u8) } else { Source::Ideal(index, q as u8) };
+            self.channel(name, quantity, unit, description.to_string(), source);
         }
-        self.model.layout.push_force_states(element.n_states());
+        self.model.layout.push_element_states(kind.n_states());
         self.model.initial_element_states.extend(initial_states);
-        let events = self.model.n_events() + element.n_events();
-        self.model.event_offsets.push(events);
-        for body in element.event_bodies() {
+        self.model.event_offsets.push(self.model.n_events() + kind.n_events());
+        self.model.memory_offsets.push(self.model.memory_offsets[index] + kind.n_memory_slots());
+        for body in kind.event_bodies() {
             if !body.is_ground() && !self.model.event_bodies.contains(&body) {
                 self.model.event_bodies.push(body);
             }
         }
-        self.model.forces.push(element);
-        self.model.force_names.push(name.to_string());
+        if acting {
+            self.model.acting.push(index);
+        }
+        self.model.elements.push(Element { name: name.to_string(), kind });
+        index
     }
 
     /// The element described by `f`, with its name and initial states.
-    fn force(&mut self, loc: &str, f: &'s ForceSpec) -> Option<(&'s str, ForceElement, Vec<f64>)> {
+    fn force(&mut self, loc: &str, f: &'s ForceSpec) -> Option<(&'s str, ElementKind, Vec<f64>)> {
         match f {
             ForceSpec::SpringDamper(SpringDamperSpec { name, first, second, stiffness, damping, free_length }) => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -530,7 +542,7 @@ impl<'s> Compiler<'s> {
                 let checks = [(ranges::FORCES_SPRING_DAMPER_STIFFNESS, *stiffness), (ranges::FORCES_SPRING_DAMPER_DAMPING, *damping), (ranges::FORCES_SPRING_DAMPER_FREE_LENGTH, *free_length)];
                 Range::check_all(&checks, loc, &mut self.errors);
                 let element = SpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_length: *free_length };
-                Some((name, ForceElement::SpringDamper(element), Vec::new()))
+                Some((name, ElementKind::SpringDamper(element), Vec::new()))
             }
             ForceSpec::RotationalSpringDamper { name, first, second, stiffness, damping, free_angle } => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -538,7 +550,7 @@ impl<'s> Compiler<'s> {
                 let b = self.body(second, format!("{loc}.second"));
                 Range::check_all(&[(ranges::FORCES_ROTATIONAL_SPRING_DAMPER_STIFFNESS, *stiffness), (ranges::FORCES_ROTATIONAL_SPRING_DAMPER_DAMPING, *damping)], loc, &mut self.errors);
                 let element = RotationalSpringDamper { first: Marker::reference(a?), second: Marker::reference(b?), stiffness: *stiffness, damping: *damping, free_angle: *free_angle };
-                Some((name, ForceElement::RotationalSpringDamper(element), Vec::new()))
+                Some((name, ElementKind::RotationalSpringDamper(element), Vec::new()))
             }
             ForceSpec::PointForce { name, point, fx, fy } => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -546,13 +558,13 @@ impl<'s> Compiler<'s> {
                 let fx = build_function(fx, &format!("{loc}.fx"), &mut self.errors);
                 let fy = build_function(fy, &format!("{loc}.fy"), &mut self.errors);
                 let element = PointForce { point: p?, fx: fx?, fy: fy? };
-                Some((name, ForceElement::PointForce(element), Vec::new()))
+                Some((name, ElementKind::PointForce(element), Vec::new()))
             }
             ForceSpec::Torque { name, body, torque } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let b = self.body(body, format!("{loc}.body"));
                 let torque = build_function(torque, &format!("{loc}.torque"), &mut self.errors);
-                Some((name, ForceElement::Torque(AppliedTorque { body: Marker::reference(b?), torque: torque? }), Vec::new()))
+                Some((name, ElementKind::Torque(AppliedTorque { body: Marker::reference(b?), torque: torque? }), Vec::new()))
             }
             ForceSpec::HydraulicCylinder(c) => {
                 self.claim_name(&c.name, &format!("{loc}.name"));
@@ -561,7 +573,7 @@ impl<'s> Compiler<'s> {
                 let (a, b) = (a?, b?);
                 let length = (self.initial_point(b) - self.initial_point(a)).norm();
                 let (element, states) = build_cylinder(c, (a, b), length, loc, &mut self.errors)?;
-                Some((&c.name, ForceElement::HydraulicCylinder(element), states))
+                Some((&c.name, ElementKind::HydraulicCylinder(element), states))
             }
         }
     }
@@ -608,7 +620,7 @@ impl<'s> Compiler<'s> {
         self.model.n_dynamic_constraints = self.model.constraints.len();
         for (bearing, journal, eccentricity, name) in std::mem::take(&mut self.assembly_locks) {
             let kind = ConstraintKind::PointCoincidence(PointCoincidence { first: bearing, second: journal, offset: eccentricity });
-            self.add_element(&format!("{name} (assembly lock)"), ElementKind::AssemblyLock, bearing, journal, Vec2::zeros(), vec![kind]);
+            self.add_element(&format!("{name} (assembly lock)"), IdealKind::AssemblyLock, bearing, journal, Vec2::zeros(), vec![kind]);
         }
     }
 
@@ -704,13 +716,6 @@ impl<'s> Compiler<'s> {
         }
         for (i, (quantity, unit, description)) in self.model.bodies[k].kind.derived_channels().iter().enumerate() {
             self.channel(name, quantity, unit, description.to_string(), Source::Derived(k, i as u8));
-        }
-    }
-
-    /// The channels the kind of ideal element `element` declares.
-    fn ideal_channels(&mut self, element: usize, name: &str) {
-        for (q, (quantity, unit, description)) in self.model.elements[element].kind.channels().iter().enumerate() {
-            self.channel(name, quantity, unit, description.to_string(), Source::Ideal(element, q as u8));
         }
     }
 }

@@ -1,12 +1,14 @@
-//! The element contract (`crate::force::ForceElement`) as the engine uses it:
-//! the clearance joint's event function, memory, acceptance and outputs
-//! through the contract, and events and memory of several elements routed
-//! to their own element in a run.
+//! The element contract (`crate::element::ElementModel`) as the engine uses
+//! it: the clearance joint's event function, memory, acceptance and outputs
+//! through the contract, events and memory slots of several elements routed
+//! to their own element in a run, and an element's several events and slots
+//! addressed by their offsets.
 
 use crate::kinematics::marker::BodyIndex;
 use crate::kinematics::planar::Frame;
 use super::*;
-use crate::force::{ElementFault, ElementMemory, ElementWork, ForceElement};
+use crate::element::{ElementFault, ElementKind, ElementMemory, ElementModel, ElementWork};
+use crate::kinematics::frames::Frames;
 use crate::joint::ContactMemory;
 use crate::spec::ModelSpec;
 
@@ -50,8 +52,11 @@ fn frame(x: f64, y: f64, angle: f64, vx: f64, vy: f64, omega: f64) -> Frame {
 fn events_and_memory_of_several_elements_go_to_their_own_element() {
     let model = two_clearance_joints();
     // the elements in description order, each with its events
-    assert_eq!(model.force_names, ["A", "B", "idle"]);
+    let names: Vec<&str> = model.elements.iter().map(|e| e.name.as_str()).collect();
+    assert_eq!(names, ["A", "B", "idle"]);
+    assert_eq!(model.acting, [0, 1, 2]);
     assert_eq!(model.event_offsets, [0, 1, 2, 2]);
+    assert_eq!(model.memory_offsets, [0, 1, 2, 2]);
     assert_eq!(model.event_bodies, [BodyIndex(1), BodyIndex(2)]);
     let mut ws = Workspace::new(&model);
     let mut state = assemble(&model, 0.0, &mut ws).unwrap();
@@ -61,9 +66,9 @@ fn events_and_memory_of_several_elements_go_to_their_own_element() {
     let impacts_b = outcome.diagnostics.impacts[1];
     assert_eq!(outcome.diagnostics.impacts[0], 0);
     assert!(impacts_b >= 1);
-    assert_eq!(state.memory[0], ElementMemory::Contact(ContactMemory::default()));
-    assert!(matches!(state.memory[1], ElementMemory::Contact(m) if m.impacts == impacts_b));
-    assert_eq!(state.memory[2], ElementMemory::None);
+    assert_eq!(state.memory[model.memory_of(0)], [ElementMemory::Contact(ContactMemory::default())]);
+    assert!(matches!(state.memory[model.memory_of(1)], [ElementMemory::Contact(m)] if m.impacts == impacts_b));
+    assert!(state.memory[model.memory_of(2)].is_empty() && state.memory.len() == 2);
     // the summary reads each joint's own gap
     let [a, b] = &outcome.extrema.clearance_joints[..] else { panic!("two joints") };
     assert_eq!((a.name.as_str(), a.impacts, a.contact_time, a.max_penetration), ("A", 0, 0.0, 0.0));
@@ -104,14 +109,14 @@ fn contact_forces_through_the_element_contract_conserve_linear_momentum() {
 #[test]
 fn the_clearance_joint_as_an_element_reports_its_event_memory_and_outputs() {
     let model = two_clearance_joints();
-    let element = &model.forces[1];
-    let ForceElement::ClearanceRevolute(joint) = element else { panic!("B is a clearance joint") };
-    assert_eq!((element.n_events(), element.n_states(), element.channels().len()), (1, 0, 12));
+    let element = &model.elements[1].kind;
+    let ElementKind::ClearanceRevolute(joint) = element else { panic!("B is a clearance joint") };
+    assert_eq!((element.n_events(), element.n_memory_slots(), element.n_states(), element.channels().len()), (1, 1, 0, 12));
     // upper at rest; lower's journal (its top point) 0.1 mm + 2 um right of the bearing, approaching
     let depth = 2e-6;
     let mut frames = vec![Frame::GROUND, frame(0.0, -0.1, 0.0, 0.0, 0.0, 0.0), frame(1e-4 + depth, -0.3, 0.0, 0.03, 0.0, -0.2)];
     let (mut g, mut rate) = ([0.0], [0.0]);
-    element.event_functions(&frames, &mut g, Some(&mut rate));
+    element.event_functions(&Frames { planar: &frames, spatial: &[] }, &mut g, Some(&mut rate));
     assert!((g[0] - depth).abs() < 1e-15, "event function {} against the penetration {depth}", g[0]);
     // its rate against a central difference of the gap along the motion
     let h = 1e-7;
@@ -119,22 +124,24 @@ fn the_clearance_joint_as_an_element_reports_its_event_memory_and_outputs() {
         let mut f = frames.clone();
         f[2] = frame(1e-4 + depth + 0.03 * s, -0.3, -0.2 * s, 0.03, 0.0, -0.2);
         let mut g = [0.0];
-        element.event_functions(&f, &mut g, None);
+        element.event_functions(&Frames { planar: &f, spatial: &[] }, &mut g, None);
         g[0]
     };
     assert!((rate[0] - (moved(h) - moved(-h)) / (2.0 * h)).abs() < 1e-8, "rate {}", rate[0]);
     // the first accepted step in contact latches the onset velocity and counts an impact, once
-    let mut memory = element.new_memory();
-    let first = element.accept(&frames, &mut memory).unwrap();
+    let mut memory = [ElementMemory::None];
+    element.start_memory(&mut memory);
+    assert_eq!(memory, [ElementMemory::Contact(ContactMemory::default())]);
+    let first = element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap();
     assert!(first.memory_changed && first.penetration == g[0] && !first.deep_penetration);
-    let ElementMemory::Contact(latched) = memory else { panic!("contact memory") };
+    let [ElementMemory::Contact(latched)] = memory else { panic!("contact memory") };
     assert_eq!(latched.impacts, 1);
     assert_eq!(latched.onset_velocity, Some(joint.onset_velocity(&frames)));
-    assert!(!element.accept(&frames, &mut memory).unwrap().memory_changed);
+    assert!(!element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap().memory_changed);
     // the outputs read the latched memory through apply
     let mut work = element.new_work();
     let mut q = vec![0.0; model.n_velocities()];
-    let frames3 = crate::kinematics::frames::Frames { planar: &frames, spatial: &[] };
+    let frames3 = Frames { planar: &frames, spatial: &[] };
     let mut forces = GeneralisedForces::new(&mut q, &model.bodies, &model.layout, frames3);
     element.apply(&frames3, 0.0, (&[], &mut []), &memory, &mut work, false, &mut forces).unwrap();
     let direct = joint.evaluate(&frames, latched.onset_velocity);
@@ -143,28 +150,44 @@ fn the_clearance_joint_as_an_element_reports_its_event_memory_and_outputs() {
     assert!(direct.in_contact && direct.normal_force > 0.0);
     assert_eq!((out("fn"), out("ft"), out("fx"), out("contact")), (direct.normal_force, direct.friction_force, direct.force_on_journal.x, 1.0));
     assert!((0..names.len()).all(|k| element.output(k, &frames, &work).is_finite()));
-    assert!(ForceElement::outputs_finite(&work) && element.potential_energy(&work) > 0.0);
+    assert!(work.is_finite() && element.potential_energy(&work) > 0.0);
     // equal and opposite forces on the two bars (Newton's third law through the contract)
     assert!((q[0] + q[3]).abs() < 1e-12 * q[3].abs() && (q[1] + q[4]).abs() < 1e-12 * q[3].abs(), "{q:?}");
     assert!(matches!(&work, ElementWork::Clearance(w) if w.contact == direct));
     // free again: the onset velocity is cleared, the impacts stay counted
     frames[2] = frame(0.0, -0.3, 0.0, 0.0, 0.0, 0.0);
-    assert!(element.accept(&frames, &mut memory).unwrap().memory_changed);
-    assert_eq!(memory, ElementMemory::Contact(ContactMemory { onset_velocity: None, impacts: 1 }));
+    assert!(element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap().memory_changed);
+    assert_eq!(memory, [ElementMemory::Contact(ContactMemory { onset_velocity: None, impacts: 1 })]);
     // a penetration beyond the bound stops with the depth and the bound
     frames[2] = frame(1e-4 + 2.0 * joint.max_penetration, -0.3, 0.0, 0.0, 0.0, 0.0);
-    let fault = element.accept(&frames, &mut memory).unwrap_err();
+    let fault = element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap_err();
     assert!(matches!(fault, ElementFault::ExcessivePenetration { penetration, bound } if bound == joint.max_penetration && penetration > bound));
 }
 
 #[test]
 fn elements_without_events_or_memory_keep_none() {
     let model = two_clearance_joints();
-    let idle = &model.forces[2];
-    let mut memory = idle.new_memory();
+    let idle = &model.elements[2].kind;
     let frames = vec![Frame::GROUND; 3];
-    assert_eq!((idle.n_events(), memory), (0, ElementMemory::None));
+    let frames = Frames { planar: &frames, spatial: &[] };
+    assert_eq!((idle.n_events(), idle.n_memory_slots(), idle.constraints()), (0, 0, 0..0));
+    let mut memory: [ElementMemory; 0] = [];
     assert_eq!(idle.accept(&frames, &mut memory).unwrap(), Default::default());
     idle.on_event(&frames, 0, &mut memory);
-    assert_eq!(memory, ElementMemory::None);
+}
+
+#[test]
+fn an_elements_several_events_and_memory_slots_are_addressed_by_its_offsets() {
+    // the offsets as the compiler lays them out for elements with 3, 0 and 2
+    // events and 2, 0 and 3 memory slots: each event and slot belongs to one element
+    let mut model = two_clearance_joints();
+    model.event_offsets = vec![0, 3, 3, 5];
+    model.memory_offsets = vec![0, 2, 2, 5];
+    let owners: Vec<(usize, usize)> = (0..5).map(|event| model.event_owner(event)).collect();
+    assert_eq!(owners, [(0, 0), (0, 1), (0, 2), (2, 0), (2, 1)]);
+    assert_eq!((model.events_of(1), model.memory_of(0), model.memory_of(1), model.memory_of(2)), (3..3, 0..2, 2..2, 2..5));
+    // impacts are counted over an element's slots
+    let contact = |impacts| ElementMemory::Contact(ContactMemory { onset_velocity: None, impacts });
+    let memory = [contact(1), contact(2), contact(4), ElementMemory::None, contact(8)];
+    assert_eq!((model.impacts(0, &memory), model.impacts(1, &memory), model.impacts(2, &memory)), (3, 0, 12));
 }

@@ -18,7 +18,7 @@ use super::generalised_force::GeneralisedForces;
 use super::constraint_solution;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::force::{ElementMemory, ForceElement};
+use crate::element::{ElementMemory, ElementModel};
 use crate::joint::ConstraintRows;
 use crate::linalg::RankDeficiency;
 
@@ -158,12 +158,13 @@ pub(crate) fn applied_forces(model: &Model, memory: &[ElementMemory], t: f64, (q
     if ws.gravity_load.is_none() {
         forces.add_gravity(model.gravity, q);
     }
-    for (k, element) in model.forces.iter().enumerate() {
-        let states = model.layout.force_states[k].clone();
+    for &k in &model.acting {
+        let (element, states) = (&model.elements[k], model.layout.element_states[k].clone());
         let own = (&z[states.clone()], &mut ws.element_state_rates[states]);
         element
-            .apply(&frames, t, own, &memory[k], &mut ws.element_work[k], ws.detailed, &mut forces)
-            .map_err(|fault| fault.at(t, &model.force_names[k]))?;
+            .kind
+            .apply(&frames, t, own, &memory[model.memory_of(k)], &mut ws.element_work[k], ws.detailed, &mut forces)
+            .map_err(|fault| fault.at(t, &element.name))?;
     }
     Ok(())
 }
@@ -246,8 +247,8 @@ pub(crate) fn check_finite(model: &Model, t: f64, ws: &Workspace) -> Result<(), 
     let element = ws
         .element_work
         .iter()
-        .position(|work| !ForceElement::outputs_finite(work))
-        .map(|k| model.force_names[k].clone())
+        .position(|work| !work.is_finite())
+        .map(|k| model.elements[k].name.clone())
         .unwrap_or_else(|| "state".to_string());
     Err(SimulationError::NonFinite { time: t, element })
 }

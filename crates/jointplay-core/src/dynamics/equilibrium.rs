@@ -32,7 +32,7 @@ use crate::kinematics::planar::{Frame, Vec2};
 use super::state::State;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
-use crate::force::{ElementMemory, ForceElement};
+use crate::element::{ElementMemory, ElementModel};
 use crate::joint::{ClearanceRevolute, ConstraintKind};
 
 /// Options of the static analysis.
@@ -160,10 +160,7 @@ fn resting_journals(model: &Model, t: f64, locked: &Equilibrium, ws: &mut Worksp
     let q = locked.state.coordinates();
     for k in model.n_dynamic_constraints..model.constraints.len() {
         let ConstraintKind::PointCoincidence(lock) = &model.constraints[k].kind else { continue };
-        let Some(joint) = model.forces.iter().find_map(|f| match f {
-            ForceElement::ClearanceRevolute(j) if j.bearing == lock.first && j.journal == lock.second => Some(j),
-            _ => None,
-        }) else {
+        let Some((_, _, joint)) = model.clearance_joints().find(|(_, _, j)| j.bearing == lock.first && j.journal == lock.second) else {
             continue;
         };
         let force = lock_force_on_journal(model, k, t, q, &locked.multipliers, ws);
@@ -408,10 +405,9 @@ impl<'m> Statics<'m> {
         let (n, rows) = (model.layout.nv, model.row_offsets[self.n_constraints]);
         let q = x.as_slice()[..n].to_vec();
         update_frames(model, &q, &self.zeros, &mut ws.frames, &mut ws.spatial_frames);
-        for (k, element) in model.forces.iter().enumerate() {
-            let range = model.layout.force_states[k].clone();
+        for (element, range) in model.elements.iter().zip(&model.layout.element_states) {
             let reference = Frames { planar: &self.reference_frames, spatial: &self.reference_spatial_frames };
-            element.static_states(&reference, &ws.frames(), &self.reference_states[range.clone()], &mut self.states[range]);
+            element.kind.static_states(&reference, &ws.frames(), &self.reference_states[range.clone()], &mut self.states[range.clone()]);
         }
         applied_forces(model, &self.memory, self.t, (&q, &self.zeros, &self.states), ws)?;
         if self.load_factor != 1.0 {

@@ -23,7 +23,6 @@
 
 use super::constraint_solution;
 use super::equations::{jacobian_times, jacobian_transpose_times, update_frames};
-use crate::kinematics::marker::Marker;
 use crate::kinematics::frames::Frames;
 use crate::kinematics::planar::Frame;
 use crate::kinematics::spatial::SpatialFrame;
@@ -31,12 +30,12 @@ use super::generalised_force::GeneralisedForces;
 use super::{Model, Workspace};
 use crate::body::{BodyKind, BodyModel};
 use crate::error::SimulationError;
-use crate::force::{ElementMemory, ElementWork, ForceElement};
+use crate::element::{ElementMemory, ElementModel, ElementWork};
 
 /// One part of the local forces, evaluated on its own.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Contribution {
-    /// Force element `k` of `Model::forces`: its generalised forces and its states' rates.
+    /// Element `k` of `Model::elements` (one acting through forces): its generalised forces and its states' rates.
     Force(usize),
     /// Minus the internal forces of element `element` of the beam `body` (index
     /// into `Model::bodies`), whose coordinates are the body's `first..first + count`.
@@ -126,21 +125,6 @@ struct Scratch {
     local: Vec<f64>,
 }
 
-/// The markers a force element acts at (the ground's included; they are skipped).
-fn force_markers(element: &ForceElement) -> [Option<Marker>; 2] {
-    match element {
-        ForceElement::SpringDamper(e) => [Some(e.first), Some(e.second)],
-        ForceElement::RotationalSpringDamper(e) => [Some(e.first), Some(e.second)],
-        ForceElement::PointForce(e) => [Some(e.point), None],
-        ForceElement::Torque(e) => [Some(e.body), None],
-        ForceElement::HydraulicCylinder(e) => [Some(e.first), Some(e.second)],
-        ForceElement::ClearanceRevolute(e) => [Some(e.bearing), Some(e.journal)],
-        ForceElement::SpatialSpringDamper(e) => [Some(e.first.planar()), Some(e.second.planar())],
-        ForceElement::Bushing(e) => [Some(e.first.planar()), Some(e.second.planar())],
-        ForceElement::PrescribedLoad(e) => [Some(e.marker.planar()), None],
-    }
-}
-
 /// Appends `items` to `list` sorted and without repeats, and closes its offsets.
 fn push_set(list: &mut Vec<usize>, offsets: &mut Vec<usize>, mut items: Vec<usize>) {
     items.sort_unstable();
@@ -157,9 +141,9 @@ impl StructuredJacobian {
         let mut contributions = Vec::new();
         let (mut reads, mut read_offsets, mut writes, mut write_offsets) = (Vec::new(), vec![0], Vec::new(), vec![0]);
         // force elements: the coordinates their markers move with, and their own states
-        for (k, element) in model.forces.iter().enumerate() {
+        for &k in &model.acting {
             let (mut read, mut written) = (Vec::new(), Vec::new());
-            for marker in force_markers(element).into_iter().flatten() {
+            for marker in model.elements[k].kind.markers() {
                 let Some(address) = layout.body(marker.body) else { continue };
                 for c in model.bodies[marker.body.0 - 1].kind.marker_coordinates(&marker) {
                     // (q_dot = v: position coordinate c sits where velocity coordinate c does)
@@ -167,7 +151,7 @@ impl StructuredJacobian {
                     written.push(address.v + c);
                 }
             }
-            for i in layout.force_states[k].clone() {
+            for i in layout.element_states[k].clone() {
                 read.push(nq + nv + i);
                 written.push(nv + i);
             }
@@ -235,7 +219,7 @@ impl StructuredJacobian {
             scratch: Scratch {
                 frames: vec![Frame::GROUND; model.n_frames()],
                 spatial_frames: vec![SpatialFrame::GROUND; if model.spatial { model.n_frames() } else { 0 }],
-                work: model.forces.iter().map(ForceElement::new_work).collect(),
+                work: model.elements.iter().map(|e| e.kind.new_work()).collect(),
                 forces: vec![0.0; nv],
                 rates: vec![0.0; nz],
                 local: Vec::new(),
@@ -532,12 +516,14 @@ fn evaluate(model: &Model, memory: &[ElementMemory], t: f64, contribution: Contr
     match contribution {
         Contribution::Force(k) => {
             scratch.forces.fill(0.0);
-            let states = layout.force_states[k].clone();
+            let states = layout.element_states[k].clone();
             let frames = Frames { planar: &scratch.frames, spatial: &scratch.spatial_frames };
             let mut forces = GeneralisedForces::new(&mut scratch.forces, &model.bodies, layout, frames);
-            model.forces[k]
-                .apply(&frames, t, (&z[states.clone()], &mut scratch.rates[states]), &memory[k], &mut scratch.work[k], false, &mut forces)
-                .map_err(|fault| fault.at(t, &model.force_names[k]))?;
+            let element = &model.elements[k];
+            element
+                .kind
+                .apply(&frames, t, (&z[states.clone()], &mut scratch.rates[states]), &memory[model.memory_of(k)], &mut scratch.work[k], false, &mut forces)
+                .map_err(|fault| fault.at(t, &element.name))?;
             for (out, &r) in scratch.local.iter_mut().zip(rows) {
                 *out = if r < nv { scratch.forces[r] } else { scratch.rates[r - nv] };
             }

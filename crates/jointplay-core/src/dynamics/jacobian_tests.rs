@@ -10,7 +10,7 @@ use super::beam_tests::{deformed, free_beam, model, slider_crank, spin_up_beam};
 use super::equations::{applied_forces, constrained_accelerations, update_frames};
 use super::jacobian::{Contribution, StructuredJacobian};
 use super::*;
-use crate::force::ElementMemory;
+use crate::element::ElementMemory;
 use crate::integrate::{IntegratorOptions, JacobianMethod, Method, Statistics};
 
 /// A beam (damped, three quadratic elements) pinned to the ground, a block

@@ -42,8 +42,8 @@ impl BodyAddress {
 pub struct StateLayout {
     /// Addresses of body `k` (its [`BodyIndex`] is `k + 1`; the ground has none).
     pub bodies: Vec<BodyAddress>,
-    /// States of force element `k`, within `z`.
-    pub force_states: Vec<Range<usize>>,
+    /// States of element `k`, within `z`.
+    pub element_states: Vec<Range<usize>>,
     /// Number of position coordinates.
     pub nq: usize,
     /// Number of velocity coordinates.
@@ -70,9 +70,9 @@ impl StateLayout {
         self.nv += nv;
     }
 
-    /// Appends the `nz` states of the next force element.
-    pub fn push_force_states(&mut self, nz: usize) {
-        self.force_states.push(self.nz..self.nz + nz);
+    /// Appends the `nz` states of the next element.
+    pub fn push_element_states(&mut self, nz: usize) {
+        self.element_states.push(self.nz..self.nz + nz);
         self.nz += nz;
     }
 
@@ -136,12 +136,12 @@ mod tests {
         layout.push_body(&planar());
         layout.bodies.push(BodyAddress { q: layout.nq, nq: 7, v: layout.nv, nv: 6 });
         (layout.nq, layout.nv) = (layout.nq + 7, layout.nv + 6);
-        layout.push_force_states(0);
-        layout.push_force_states(3);
+        layout.push_element_states(0);
+        layout.push_element_states(3);
         assert_eq!(layout.body(BodyIndex(2)), Some(&BodyAddress { q: 3, nq: 7, v: 3, nv: 6 }));
         assert_eq!(layout.body(BodyIndex::GROUND), None);
         assert_eq!((layout.nq, layout.nv, layout.nz, layout.len()), (10, 9, 3, 22));
-        assert_eq!(layout.force_states, vec![0..0, 0..3]);
+        assert_eq!(layout.element_states, vec![0..0, 0..3]);
         let y: Vec<f64> = (0..22).map(f64::from).collect();
         let (q, v, z) = layout.split(&y);
         assert_eq!((q.len(), v[0], z), (10, 10.0, &[19.0, 20.0, 21.0][..]));

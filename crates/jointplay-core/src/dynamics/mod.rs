@@ -49,7 +49,7 @@ pub use joint_coordinates::{Formulation, JointTree};
 pub use layout::{BodyAddress, StateLayout};
 pub use extrema_summary::{ChannelPeak, Extrema, JointExtrema, PEAK_UNITS};
 pub use equations::{accelerations, update_frames, Stabilization};
-pub use model::{Body, ElementKind, IdealElement, Model, SchurTerm, Section, StrainGauge, VelocityStart};
+pub use model::{Body, Model, SchurTerm, Section, StrainGauge, VelocityStart};
 pub use progress::Progress;
 pub use redundancy::{constraint_rank, ConstraintRank};
 pub use simulate::{simulate, simulate_with_sink, Diagnostics, SimulationOptions, SimulationOutcome, PROJECTION_CEILING, PROJECTION_FLOOR, PROJECTION_SHARE};

@@ -1,16 +1,15 @@
 //! The compiled, immutable description of a mechanism.
 
 use super::channels::{Channel, ChannelRead};
-use crate::kinematics::marker::{BodyIndex, Marker, SectionSite, Site, SpatialMarker};
-use crate::spec::SpatialJointKind;
-use crate::kinematics::planar::{Frame, Vec2};
+use crate::kinematics::marker::{BodyIndex, Marker, SectionSite, Site};
+use crate::kinematics::planar::Frame;
 use crate::kinematics::spatial::Vec3;
 use super::joint_coordinates::JointTree;
 use super::constraint_jacobian::JacobianPattern;
 use super::layout::StateLayout;
 use crate::body::{BodyKind, BodyModel};
-use crate::force::{ElementMemory, ForceElement, OutputInfo};
-use crate::joint::{ClearanceRevolute, Constraint};
+use crate::element::{Element, ElementKind, ElementMemory, ElementModel, OutputInfo};
+use crate::joint::{ClearanceRevolute, Constraint, IdealElement};
 use crate::linalg::PatternLdl;
 
 /// A body: its name and its kind (which holds its mass properties).
@@ -38,103 +37,6 @@ pub enum VelocityStart {
     /// A flexible body whose rigid motion was given: held as given, and the
     /// assembly fails, naming the body, if the joints contradict it.
     Given,
-}
-
-/// What an element owning constraint equations is.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ElementKind {
-    /// Ideal revolute joint.
-    RevoluteJoint,
-    /// Ideal translational joint.
-    TranslationalJoint,
-    /// Ideal fixed joint.
-    FixedJoint,
-    /// Driver of a revolute joint's relative angle.
-    AngleDriver,
-    /// Driver of a translational joint's displacement.
-    DisplacementDriver,
-    /// A clearance joint held at its initial eccentricity while assembling.
-    AssemblyLock,
-    /// Ideal joint between two marker frames in space.
-    SpatialJoint(SpatialJointKind),
-    /// Driver of the rotation about a spatial joint's axis.
-    SpatialAngleDriver,
-    /// Driver of the displacement along a spatial joint's axis.
-    SpatialDisplacementDriver,
-}
-
-/// Reaction channels of an ideal joint that leaves the relative rotation free.
-const PIN_REACTION_CHANNELS: [OutputInfo; 3] = [
-    ("fx", "N", "reaction on the second body from the first, x"),
-    ("fy", "N", "reaction on the second body from the first, y"),
-    ("f", "N", "reaction on the second body from the first, magnitude"),
-];
-
-/// Reaction channels of an ideal joint that also transmits a moment.
-const REACTION_CHANNELS: [OutputInfo; 4] = [
-    PIN_REACTION_CHANNELS[0],
-    PIN_REACTION_CHANNELS[1],
-    PIN_REACTION_CHANNELS[2],
-    ("moment", "N m", "reaction on the second body from the first, moment about the joint point"),
-];
-
-/// Reaction channels of a spatial joint: the wrench on the second body from
-/// the first at the second marker's point, global and in the joint's frame
-/// (the first marker's axes).
-pub const SPATIAL_REACTION_CHANNELS: [OutputInfo; 13] = [
-    ("fx", "N", "reaction on the second body from the first, global x"),
-    ("fy", "N", "reaction on the second body from the first, global y"),
-    ("fz", "N", "reaction on the second body from the first, global z"),
-    ("f", "N", "reaction on the second body from the first, magnitude"),
-    ("mx", "N m", "reaction moment on the second body about its marker point, global x"),
-    ("my", "N m", "reaction moment on the second body about its marker point, global y"),
-    ("mz", "N m", "reaction moment on the second body about its marker point, global z"),
-    ("joint_fx", "N", "reaction on the second body, along the joint frame's x"),
-    ("joint_fy", "N", "reaction on the second body, along the joint frame's y"),
-    ("joint_fz", "N", "reaction on the second body, along the joint frame's z (the axis)"),
-    ("joint_mx", "N m", "reaction moment on the second body, about the joint frame's x"),
-    ("joint_my", "N m", "reaction moment on the second body, about the joint frame's y"),
-    ("joint_mz", "N m", "reaction moment on the second body, about the joint frame's z (the axis)"),
-];
-
-impl ElementKind {
-    /// Output channels: quantity, unit, description (reactions `0 fx, 1 fy, 2 |f|, 3 moment`;
-    /// a driver's one channel is its effort).
-    pub fn channels(self) -> &'static [OutputInfo] {
-        match self {
-            Self::RevoluteJoint => &PIN_REACTION_CHANNELS,
-            Self::TranslationalJoint | Self::FixedJoint => &REACTION_CHANNELS,
-            Self::AngleDriver => &[("torque", "N m", "driver effort on the second body of the driven joint")],
-            Self::DisplacementDriver => &[("force", "N", "driver effort along the axis on the second body of the driven joint")],
-            Self::AssemblyLock => &[],
-            Self::SpatialJoint(_) => &SPATIAL_REACTION_CHANNELS,
-            Self::SpatialAngleDriver => &[("torque", "N m", "driver effort on the second body about the joint's axis")],
-            Self::SpatialDisplacementDriver => &[("force", "N", "driver effort on the second body along the joint's axis")],
-        }
-    }
-}
-
-/// An element that owns constraint equations (joint, driver or assembly lock).
-#[derive(Clone, Debug, PartialEq)]
-pub struct IdealElement {
-    /// Name (as in the model description).
-    pub name: String,
-    /// Kind.
-    pub kind: ElementKind,
-    /// First body.
-    pub first: BodyIndex,
-    /// Second body.
-    pub second: BodyIndex,
-    /// Point of the second marker's frame at which the reaction moment is reported [m].
-    pub second_point: Vec2,
-    /// Frames of the first and the second marker (the bodies' own, or beam sections).
-    pub frames: [usize; 2],
-    /// Unit axis in the first body's frame (translational joints and their drivers) [-].
-    pub axis: Vec2,
-    /// Indices of its constraints in `Model::constraints`.
-    pub constraints: std::ops::Range<usize>,
-    /// The first and the second marker frame of a spatial joint or driver.
-    pub spatial_markers: Option<Box<[SpatialMarker; 2]>>,
 }
 
 /// The compiled mechanism. Built by [`super::compile`]; never changes.
@@ -176,15 +78,15 @@ pub struct Model {
     pub schur_terms: Vec<SchurTerm>,
     /// Factorisation of `Phi_q M^-1 Phi_q^T` for the dynamic rows, chosen from its pattern.
     pub schur_factor: PatternLdl,
-    /// Joints, drivers and assembly locks that own constraints.
-    pub elements: Vec<IdealElement>,
-    /// Elements acting through forces (clearance joints included), in the
-    /// order of the description: clearance joints with the joints, then the forces.
-    pub forces: Vec<ForceElement>,
-    /// Names of the force elements.
-    pub force_names: Vec<String>,
-    /// First event function of every force element, plus the total at the end.
+    /// Every element (joints, drivers, clearance joints, force elements, then
+    /// the assembly locks), in the order of the description.
+    pub elements: Vec<Element>,
+    /// The elements acting through forces (indices into `elements`), in order.
+    pub acting: Vec<usize>,
+    /// First event function of every element, plus the total at the end.
     pub event_offsets: Vec<usize>,
+    /// First discrete memory slot of every element, plus the total at the end.
+    pub memory_offsets: Vec<usize>,
     /// The bodies some event function reads (each once, ground excluded).
     pub event_bodies: Vec<BodyIndex>,
     /// Approximate initial coordinates from the description.
@@ -336,7 +238,7 @@ impl Model {
 
     /// Whether some element has outputs only recorded samples need (a film's peak pressure).
     pub fn has_detailed_outputs(&self) -> bool {
-        self.forces.iter().any(ForceElement::has_detailed_outputs)
+        self.elements.iter().any(|e| e.kind.has_detailed_outputs())
     }
 
     /// Number of event functions of all elements.
@@ -344,15 +246,56 @@ impl Model {
         *self.event_offsets.last().unwrap_or(&0)
     }
 
-    /// The discrete memory of every force element at the start of a run.
-    pub fn initial_memory(&self) -> Vec<ElementMemory> {
-        self.forces.iter().map(ForceElement::new_memory).collect()
+    /// The event functions of element `k`.
+    #[inline]
+    pub fn events_of(&self, k: usize) -> std::ops::Range<usize> {
+        self.event_offsets[k]..self.event_offsets[k + 1]
     }
 
-    /// The clearance joints: index in [`Self::forces`], name and joint.
+    /// The element owning event function `event`, and the event's index among that element's.
+    #[inline]
+    pub fn event_owner(&self, event: usize) -> (usize, usize) {
+        // the last element whose first event is at or before it (one with no
+        // events starts where the next one does, after its owner)
+        let k = self.event_offsets.partition_point(|&first| first <= event) - 1;
+        (k, event - self.event_offsets[k])
+    }
+
+    /// The discrete memory slots of element `k`.
+    #[inline]
+    pub fn memory_of(&self, k: usize) -> std::ops::Range<usize> {
+        self.memory_offsets[k]..self.memory_offsets[k + 1]
+    }
+
+    /// The discrete memory of every element at the start of a run (all slots, element by element).
+    pub fn initial_memory(&self) -> Vec<ElementMemory> {
+        let mut memory = vec![ElementMemory::None; *self.memory_offsets.last().unwrap_or(&0)];
+        for (k, element) in self.elements.iter().enumerate() {
+            element.kind.start_memory(&mut memory[self.memory_of(k)]);
+        }
+        memory
+    }
+
+    /// Contact onsets counted in element `k`'s memory slots.
+    pub fn impacts(&self, k: usize, memory: &[ElementMemory]) -> usize {
+        memory[self.memory_of(k)].iter().map(ElementMemory::impacts).sum()
+    }
+
+    /// The ideal joint, driver or assembly lock `e` (an index into [`Self::elements`] of one).
+    #[inline]
+    pub fn ideal(&self, e: usize) -> &IdealElement {
+        self.elements[e].ideal().expect("the element owns constraint equations: it is ideal")
+    }
+
+    /// The ideal joints, drivers and assembly locks: index in [`Self::elements`] and element.
+    pub fn ideal_elements(&self) -> impl Iterator<Item = (usize, &IdealElement)> + Clone {
+        self.elements.iter().enumerate().filter_map(|(k, element)| element.ideal().map(|ideal| (k, ideal)))
+    }
+
+    /// The clearance joints: index in [`Self::elements`], name and joint.
     pub fn clearance_joints(&self) -> impl Iterator<Item = (usize, &str, &ClearanceRevolute)> + Clone {
-        self.forces.iter().enumerate().filter_map(|(k, element)| match element {
-            ForceElement::ClearanceRevolute(joint) => Some((k, self.force_names[k].as_str(), joint)),
+        self.elements.iter().enumerate().filter_map(|(k, element)| match &element.kind {
+            ElementKind::ClearanceRevolute(joint) => Some((k, element.name.as_str(), joint)),
             _ => None,
         })
     }

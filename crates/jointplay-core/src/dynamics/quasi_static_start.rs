@@ -31,7 +31,7 @@ use super::rigid_motion_start::{follow_rigid_motion, free_rigid_motions};
 use super::{Model, Workspace};
 use crate::body::{BodyKind, BodyModel};
 use crate::error::SimulationError;
-use crate::force::ElementMemory;
+use crate::element::ElementMemory;
 
 /// Newton iterations allowed; a quasi-static strain is small, Newton needs two or three.
 const ITERATIONS: usize = 12;

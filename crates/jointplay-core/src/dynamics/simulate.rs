@@ -12,7 +12,7 @@ use super::extrema_summary::{is_peak_unit, Extrema, JointToSummarize};
 use super::system::{MechanismSystem, StepEndCache, Tracking};
 use super::{Model, Progress, State, Workspace};
 use crate::error::SimulationError;
-use crate::force::{ElementMemory, ElementWork};
+use crate::element::{ElementMemory, ElementWork};
 use crate::integrate::{integrate, IntegratorOptions, Method, Statistics};
 
 /// Options of one simulation.
@@ -232,7 +232,7 @@ fn run(
             None => state.y = tracking.accepted_state,
         }
     }
-    diagnostics.impacts = model.clearance_joints().map(|(k, _, _)| state.memory[k].impacts()).collect();
+    diagnostics.impacts = model.clearance_joints().map(|(k, _, _)| model.impacts(k, &state.memory)).collect();
     let extrema = summarize(model, &tracking.tracker, &tracking.channels, &state.memory);
     // a cancelled run stops wherever a loop saw it (a Reynolds solve says "interrupted"): say why it stopped
     let cancelled = progress.is_some_and(Progress::is_cancelled);
@@ -298,7 +298,7 @@ fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], memory
         .map(|(k, name, joint)| JointToSummarize {
             name: name.to_string(),
             event: model.event_offsets[k],
-            impacts: memory[k].impacts(),
+            impacts: model.impacts(k, memory),
             lubricated: joint.lubrication.is_some(),
             clearance: joint.clearance,
         })

@@ -6,7 +6,7 @@
 
 use super::assembly_checks::significant;
 use super::conditioning::relative_smallest_singular_value;
-use super::model::ElementKind;
+use crate::joint::IdealKind;
 use super::{Model, Workspace};
 use crate::error::SimulationError;
 
@@ -40,13 +40,13 @@ pub(crate) fn diagnose_toggle(model: &Model, error: SimulationError, t0: f64, t:
     if with >= TOGGLE_RATIO {
         return error;
     }
-    let drivers = model.elements.iter().enumerate().filter(|(_, e)| matches!(e.kind, ElementKind::AngleDriver | ElementKind::DisplacementDriver));
-    for (k, driver) in drivers {
+    let drivers = model.ideal_elements().filter(|(_, e)| matches!(e.kind, IdealKind::AngleDriver | IdealKind::DisplacementDriver));
+    for (k, _) in drivers {
         let without = relative_smallest_singular_value(model, all, t, q, Some(k), ws);
         if without > DRIVER_GAIN * with {
             return SimulationError::SingularConfiguration {
                 time: error.time(),
-                element: driver.name.clone(),
+                element: model.elements[k].name.clone(),
                 cause: format!(
                     "the driver pushes the linkage through a toggle (singular) position at t = {} s: there the driven coordinate no longer moves the linkage (the smallest singular value of the joints' and drivers' equations, with the clearance joints held where they are, is {:.2e} of the largest, {:.2e} without this driver), so {}: {}; check the driver's range of motion (a crank-rocker driven at its rocker, a slider driven beyond its dead centre) or drive another joint",
                     significant(t),

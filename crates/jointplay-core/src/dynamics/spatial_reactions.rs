@@ -10,7 +10,7 @@ use crate::kinematics::wrench::Wrench;
 /// its rows on the second marker's body (on the first's, negated, when the
 /// second is the ground).
 pub(crate) fn reaction_wrench(model: &Model, e: usize, ws: &Workspace) -> Wrench {
-    let element = &model.elements[e];
+    let element = model.ideal(e);
     let Some([_, second]) = element.spatial_markers.as_deref() else { return Wrench::default() };
     let frames = ws.frames();
     let (slot, sign) = if element.second.is_ground() { (0, -1.0) } else { (1, 1.0) };
@@ -26,10 +26,10 @@ pub(crate) fn reaction_wrench(model: &Model, e: usize, ws: &Workspace) -> Wrench
     total
 }
 
-/// The reaction channels of spatial joint `e` (see [`super::model::SPATIAL_REACTION_CHANNELS`]).
+/// The reaction channels of spatial joint `e` (see [`crate::joint::SPATIAL_REACTION_CHANNELS`]).
 pub(crate) fn spatial_reactions(model: &Model, e: usize, ws: &Workspace) -> [f64; 13] {
     let w = reaction_wrench(model, e, ws);
-    let local = match model.elements[e].spatial_markers.as_deref() {
+    let local = match model.ideal(e).spatial_markers.as_deref() {
         Some([first, _]) => w.rotated(&ws.frames().marker_frame(first).rotation.transpose()),
         None => Wrench::default(),
     };
@@ -40,7 +40,7 @@ pub(crate) fn spatial_reactions(model: &Model, e: usize, ws: &Workspace) -> [f64
 /// The effort of spatial driver `e`: the reaction's moment about (angle
 /// driver) or force along (displacement driver) the first marker's z axis [N m or N].
 pub(crate) fn spatial_driver_effort(model: &Model, e: usize, ws: &Workspace, along_axis_moment: bool) -> f64 {
-    let Some([first, _]) = model.elements[e].spatial_markers.as_deref() else { return f64::NAN };
+    let Some([first, _]) = model.ideal(e).spatial_markers.as_deref() else { return f64::NAN };
     let axis: Vec3 = ws.frames().axis(first, 2);
     let w = reaction_wrench(model, e, ws);
     if along_axis_moment { w.moment.dot(&axis) } else { w.force.dot(&axis) }

@@ -2,7 +2,7 @@
 //! memory of each element.
 
 pub use crate::joint::ContactMemory;
-use crate::force::ElementMemory;
+use crate::element::ElementMemory;
 
 /// Everything that changes during a simulation.
 #[derive(Clone, Debug, PartialEq)]

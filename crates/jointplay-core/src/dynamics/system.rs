@@ -8,14 +8,15 @@ use super::extrema::{ExtremaTracker, StepProbe};
 use super::trajectory::Trajectory;
 use super::equations::{accelerations, update_frames, Stabilization};
 use super::joint_coordinates::{self, joint_accelerations, JointTree};
-use crate::kinematics::marker::Marker;
+use crate::kinematics::frames::Frames;
+use crate::kinematics::marker::{Marker, Site};
 use super::jacobian::StructuredJacobian;
 use super::newton_parts;
 use super::projection::{project_positions, project_velocities};
 use super::simulate::{Diagnostics, SimulationOptions};
 use super::{Model, Progress, Workspace};
 use crate::error::SimulationError;
-use crate::force::{ElementFault, ElementMemory};
+use crate::element::{ElementFault, ElementMemory, ElementModel};
 use crate::body::{BodyKind, BodyModel};
 use crate::integrate::{JacobianCost, NewtonParts, NewtonStructure, OdeSystem, SystemJacobian};
 
@@ -116,14 +117,16 @@ impl MechanismSystem<'_> {
             self.place_frames(t, y);
         }
         let mut changed = false;
-        for (k, element) in self.model.forces.iter().enumerate() {
-            let acceptance = match element.accept(&self.ws.frames, &mut self.memory[k]) {
+        for &k in &self.model.acting {
+            let element = &self.model.elements[k];
+            let frames = Frames { planar: &self.ws.frames, spatial: &self.ws.spatial_frames };
+            let acceptance = match element.kind.accept(&frames, &mut self.memory[self.model.memory_of(k)]) {
                 Ok(acceptance) => acceptance,
                 Err(fault) => {
                     if let ElementFault::ExcessivePenetration { penetration, .. } = fault {
                         self.diagnostics.max_penetration = self.diagnostics.max_penetration.max(penetration);
                     }
-                    return Err(fault.at(t, &self.model.force_names[k]));
+                    return Err(fault.at(t, &element.name));
                 }
             };
             changed |= acceptance.memory_changed;
@@ -137,8 +140,9 @@ impl MechanismSystem<'_> {
     /// (the frames are those of `y`: [`Self::accept_elements`] made them).
     fn check_elements(&self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let z = self.element_states(y);
-        for (k, element) in self.model.forces.iter().enumerate() {
-            element.check(&self.ws.frames(), &z[self.model.layout.force_states[k].clone()]).map_err(|fault| fault.at(t, &self.model.force_names[k]))?;
+        for &k in &self.model.acting {
+            let element = &self.model.elements[k];
+            element.kind.check(&self.ws.frames(), &z[self.model.layout.element_states[k].clone()]).map_err(|fault| fault.at(t, &element.name))?;
         }
         Ok(())
     }
@@ -225,6 +229,7 @@ impl MechanismSystem<'_> {
         if self.step_end.holds_evaluation(t, y) {
             // (the evaluation at this very state, a step end, placed them all)
             self.ws.event_frames.copy_from_slice(&self.ws.frames);
+            self.ws.event_spatial_frames.copy_from_slice(&self.ws.spatial_frames);
             return;
         }
         if let Some(tree) = self.tree {
@@ -245,15 +250,36 @@ impl MechanismSystem<'_> {
         for (k, section) in self.model.sections.iter().enumerate() {
             self.ws.event_frames[first + k] = self.model.section_frame(section, q, v, &self.ws.frames[first + k]);
         }
+        if self.model.spatial {
+            self.update_spatial_event_frames(q, v);
+        }
+    }
+
+    /// The spatial frames of the bodies the event functions read and of the
+    /// sections, from their planar event frames (a model with spatial elements).
+    fn update_spatial_event_frames(&mut self, q: &[f64], v: &[f64]) {
+        let ws = &mut *self.ws;
+        for &body in &self.model.event_bodies {
+            if let Some(address) = self.model.layout.body(body) {
+                let kind = &self.model.bodies[body.0 - 1].kind;
+                ws.event_spatial_frames[body.0] = kind.spatial_site_frame(&Site::Reference, &q[address.q_range()], &v[address.v_range()], &ws.event_frames[body.0]);
+            }
+        }
+        let first = 1 + self.model.bodies.len();
+        for (k, section) in self.model.sections.iter().enumerate() {
+            let address = &self.model.layout.bodies[section.body.0 - 1];
+            let kind = &self.model.bodies[section.body.0 - 1].kind;
+            ws.event_spatial_frames[first + k] = kind.spatial_site_frame(&section.site, &q[address.q_range()], &v[address.v_range()], &ws.event_frames[first + k]);
+        }
     }
 
     /// Event functions (and their rates, when asked) of every element at the event frames.
     fn element_event_functions(&self, g: &mut [f64], mut rates: Option<&mut [f64]>) {
-        let offsets = &self.model.event_offsets;
-        for (k, element) in self.model.forces.iter().enumerate() {
-            let events = offsets[k]..offsets[k + 1];
+        let frames = Frames { planar: &self.ws.event_frames, spatial: &self.ws.event_spatial_frames };
+        for &k in &self.model.acting {
+            let events = self.model.events_of(k);
             if !events.is_empty() {
-                element.event_functions(&self.ws.event_frames, &mut g[events.clone()], rates.as_deref_mut().map(|r| &mut r[events]));
+                self.model.elements[k].kind.event_functions(&frames, &mut g[events.clone()], rates.as_deref_mut().map(|r| &mut r[events]));
             }
         }
     }
@@ -373,8 +399,8 @@ impl OdeSystem for MechanismSystem<'_> {
             // joint angles [rad] and displacements [m] as the bodies' coordinates
             let (joint, z) = scales.split_at_mut(2 * tree.n_dofs);
             joint.fill(1.0);
-            for (element, states) in self.model.forces.iter().zip(&layout.force_states) {
-                element.tolerance_scales(&mut z[states.clone()]);
+            for (element, states) in self.model.elements.iter().zip(&layout.element_states) {
+                element.kind.tolerance_scales(&mut z[states.clone()]);
             }
             return;
         }
@@ -383,8 +409,8 @@ impl OdeSystem for MechanismSystem<'_> {
             body.kind.tolerance_scales(&mut q[address.q_range()], &mut v[address.v_range()]);
         }
         let (_, _, z) = layout.split_mut(scales);
-        for (element, states) in self.model.forces.iter().zip(&layout.force_states) {
-            element.tolerance_scales(&mut z[states.clone()]);
+        for (element, states) in self.model.elements.iter().zip(&layout.element_states) {
+            element.kind.tolerance_scales(&mut z[states.clone()]);
         }
     }
 
@@ -405,9 +431,9 @@ impl OdeSystem for MechanismSystem<'_> {
 
     fn on_event(&mut self, t: f64, y: &mut [f64], event: usize) -> Result<(), SimulationError> {
         self.place_frames(t, y);
-        // the element owning the event: the last whose first event is at or before it
-        let k = self.model.event_offsets.partition_point(|&first| first <= event) - 1;
-        self.model.forces[k].on_event(&self.ws.frames, event - self.model.event_offsets[k], &mut self.memory[k]);
+        let (k, own) = self.model.event_owner(event);
+        let frames = Frames { planar: &self.ws.frames, spatial: &self.ws.spatial_frames };
+        self.model.elements[k].kind.on_event(&frames, own, &mut self.memory[self.model.memory_of(k)]);
         Ok(())
     }
 
@@ -507,8 +533,9 @@ impl MechanismSystem<'_> {
     /// samples need (a film's peak pressure), re-evaluating just those.
     fn detail_elements(&mut self, t: f64) -> Result<(), SimulationError> {
         let ws = &mut *self.ws;
-        for (k, element) in self.model.forces.iter().enumerate() {
-            element.detail(&ws.frames, &mut ws.element_work[k]).map_err(|fault| fault.at(t, &self.model.force_names[k]))?;
+        for &k in &self.model.acting {
+            let element = &self.model.elements[k];
+            element.kind.detail(&ws.frames, &mut ws.element_work[k]).map_err(|fault| fault.at(t, &element.name))?;
         }
         self.step_end.evaluated_detailed = true;
         Ok(())

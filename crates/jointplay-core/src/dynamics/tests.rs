@@ -8,7 +8,7 @@ use crate::spec::ModelSpec;
 use std::f64::consts::PI;
 
 /// [`accelerations`] at positions `q` and velocities `v` (no element states).
-fn accelerations_at(model: &Model, memory: &[crate::force::ElementMemory], t: f64, q: &[f64], v: &[f64], stabilization: Stabilization, ws: &mut Workspace) -> Result<(), crate::SimulationError> {
+fn accelerations_at(model: &Model, memory: &[crate::element::ElementMemory], t: f64, q: &[f64], v: &[f64], stabilization: Stabilization, ws: &mut Workspace) -> Result<(), crate::SimulationError> {
     let y: Vec<f64> = q.iter().chain(v).chain(&model.initial_element_states).copied().collect();
     accelerations(model, memory, t, &y, stabilization, ws)
 }

@@ -8,7 +8,7 @@ use crate::kinematics::planar::Frame;
 use super::jacobian::StructuredJacobian;
 use super::joint_coordinates::JointWorkspace;
 use super::Model;
-use crate::force::{ElementWork, ForceElement};
+use crate::element::{ElementModel, ElementWork};
 
 /// Buffers sized once for a model.
 #[derive(Clone, Debug)]
@@ -20,6 +20,8 @@ pub struct Workspace {
     /// The spatial frames of the same (ground, bodies, sections), kept only in a
     /// model with spatial elements or bodies (empty otherwise).
     pub spatial_frames: Vec<SpatialFrame>,
+    /// Spatial frames the event functions work in (a model with spatial elements; only `Model::event_bodies` and the sections are kept current).
+    pub event_spatial_frames: Vec<SpatialFrame>,
     /// Generalised applied force `Q` over the velocity coordinates.
     pub generalised_force: Vec<f64>,
     /// The generalised force of gravity alone when it does not depend on the
@@ -97,6 +99,7 @@ impl Workspace {
             frames: vec![Frame::GROUND; model.n_frames()],
             event_frames: vec![Frame::GROUND; model.n_frames()],
             spatial_frames: vec![SpatialFrame::GROUND; if model.spatial { model.n_frames() } else { 0 }],
+            event_spatial_frames: vec![SpatialFrame::GROUND; if model.spatial { model.n_frames() } else { 0 }],
             generalised_force: vec![0.0; n],
             gravity_load: constant_gravity_load(model),
             jacobian: vec![0.0; model.jacobian_pattern.n_values()],
@@ -121,7 +124,7 @@ impl Workspace {
             sample: vec![0.0; model.layout.len()],
             element_state_rates: vec![0.0; model.layout.nz],
             detailed: false,
-            element_work: model.forces.iter().map(ForceElement::new_work).collect(),
+            element_work: model.elements.iter().map(|e| e.kind.new_work()).collect(),
             constraint_forces: vec![[0.0; 3]; model.elements.len()],
             joint: match &model.joint_tree {
                 Ok(tree) => JointWorkspace::new(tree, n, model.layout.len(), model.bodies.len()),

@@ -7,10 +7,10 @@
 //! ones the rotation vector is a finite measure of the twist (as in Adams'
 //! and Exudyn's rigid-body spring-dampers, `docs/theory/spatial-force-elements.md`).
 
-use super::ForceOutput;
+use crate::element::{ElementFault, ElementMemory, ElementModel, ElementWork, ForceOutput, OutputInfo};
 use crate::dynamics::GeneralisedForces;
 use crate::kinematics::frames::Frames;
-use crate::kinematics::marker::SpatialMarker;
+use crate::kinematics::marker::{Marker, SpatialMarker};
 use crate::kinematics::quaternion;
 use crate::kinematics::spatial::Vec3;
 use crate::kinematics::wrench::Wrench;
@@ -34,7 +34,7 @@ pub struct Bushing {
 
 impl Bushing {
     /// Outputs (in the first marker's frame).
-    pub const CHANNELS: [super::OutputInfo; 6] = [
+    pub const CHANNELS: [OutputInfo; 6] = [
         ("fx", "N", "force on the second marker, first marker's x"),
         ("fy", "N", "force on the second marker, first marker's y"),
         ("fz", "N", "force on the second marker, first marker's z"),
@@ -44,7 +44,7 @@ impl Bushing {
     ];
 
     /// Applies the wrench to both markers; outputs it in the first marker's frame.
-    pub fn apply(&self, frames: &Frames<'_>, forces: &mut GeneralisedForces) -> ForceOutput {
+    pub fn load(&self, frames: &Frames<'_>, forces: &mut GeneralisedForces) -> ForceOutput {
         let (fi, fj) = (frames.marker_frame(&self.first), frames.marker_frame(&self.second));
         let to_first = fi.rotation.transpose();
         // relative motion of the second marker seen in the first marker's (turning) frame
@@ -62,5 +62,21 @@ impl Bushing {
         forces.add_wrench(&self.first, fj.position, &on_first);
         let energy = 0.5 * (displacement.dot(&self.stiffness.component_mul(&displacement)) + rotation.dot(&self.rotational_stiffness.component_mul(&rotation)));
         ForceOutput::new(&[force.x, force.y, force.z, moment.x, moment.y, moment.z], energy)
+    }
+}
+
+impl ElementModel for Bushing {
+    fn channels(&self) -> &'static [OutputInfo] {
+        &Self::CHANNELS
+    }
+
+    fn markers(&self) -> Vec<Marker> {
+        vec![self.first.planar(), self.second.planar()]
+    }
+
+    #[inline]
+    fn apply(&self, frames: &Frames<'_>, _t: f64, _states: (&[f64], &mut [f64]), _memory: &[ElementMemory], work: &mut ElementWork, _detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+        *work.outputs_mut() = self.load(frames, forces);
+        Ok(())
     }
 }

@@ -4,7 +4,7 @@
 //! deflection) integrated as element states. Theory:
 //! `docs/theory/hydraulic-cylinder.md`.
 
-use super::ForceOutput;
+use crate::element::{ElementFault, ElementMemory, ElementModel, ElementWork, ForceOutput, OutputInfo};
 use crate::kinematics::frames::Frames;
 use crate::kinematics::marker::{Marker, SpatialMarker};
 use crate::kinematics::spatial::Vec3;
@@ -49,7 +49,7 @@ struct Line {
 
 impl CylinderActuator {
     /// Outputs, in the order of [`Self::CHANNELS`].
-    pub const CHANNELS: [(&'static str, &'static str, &'static str); 7] = [
+    pub const CHANNELS: [OutputInfo; 7] = [
         ("p_cap", "Pa", "cap-chamber gauge pressure"),
         ("p_rod", "Pa", "rod-chamber gauge pressure"),
         ("force", "N", "force pushing the attachments apart (pressure force minus seal friction)"),
@@ -105,7 +105,7 @@ impl CylinderActuator {
 
     /// Applies the force along the line and writes the state rates into `z_rate`
     /// (same layout as `z`: p_cap, p_rod, bristle deflection).
-    pub fn apply(&self, frames: &Frames<'_>, t: f64, z: &[f64], z_rate: &mut [f64], forces: &mut GeneralisedForces) -> ForceOutput {
+    pub fn load(&self, frames: &Frames<'_>, t: f64, z: &[f64], z_rate: &mut [f64], forces: &mut GeneralisedForces) -> ForceOutput {
         let line = self.line(frames);
         let e = self.cylinder.evaluate_unchecked(line.stroke, line.stroke_rate, z, self.inflows(t));
         z_rate.copy_from_slice(e.state_rates());
@@ -132,7 +132,7 @@ impl CylinderActuator {
 
     /// Whether the state is inside the range of the law (stroke within [0, S],
     /// pressures above the floor); checked at every accepted step.
-    pub fn check(&self, frames: &Frames<'_>, z: &[f64]) -> Result<(), CylinderFault> {
+    pub fn check_state(&self, frames: &Frames<'_>, z: &[f64]) -> Result<(), CylinderFault> {
         self.cylinder.check(self.line(frames).stroke, z)
     }
 
@@ -140,13 +140,47 @@ impl CylinderActuator {
     /// the pressure change a piston displacement of one unit of the length
     /// tolerance causes in that chamber, `beta A / V` [Pa/m] at the initial
     /// stroke; the bristle deflection is a length (1).
-    pub fn tolerance_scales(&self, scales: &mut [f64]) {
+    pub fn state_tolerance_scales(&self, scales: &mut [f64]) {
         let g = self.cylinder.geometry();
         let (cap, rod) = g.volumes(self.initial_stroke);
         let beta = self.cylinder.bulk_modulus();
         scales[0] = beta * g.piston_area() / cap;
         scales[1] = beta * g.rod_side_area() / rod;
         scales[2..].fill(1.0);
+    }
+}
+
+
+impl ElementModel for CylinderActuator {
+    fn channels(&self) -> &'static [OutputInfo] {
+        &Self::CHANNELS
+    }
+
+    fn markers(&self) -> Vec<Marker> {
+        vec![self.first, self.second]
+    }
+
+    fn n_states(&self) -> usize {
+        self.cylinder.n_states()
+    }
+
+    #[inline]
+    fn apply(&self, frames: &Frames<'_>, t: f64, (z, z_rate): (&[f64], &mut [f64]), _memory: &[ElementMemory], work: &mut ElementWork, _detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+        *work.outputs_mut() = self.load(frames, t, z, z_rate, forces);
+        Ok(())
+    }
+
+    /// Closed chambers: the pressures follow their volumes ([`Self::closed_states`]).
+    fn static_states(&self, reference_frames: &Frames<'_>, frames: &Frames<'_>, reference: &[f64], z: &mut [f64]) {
+        self.closed_states(reference_frames, frames, reference, z);
+    }
+
+    fn check(&self, frames: &Frames<'_>, z: &[f64]) -> Result<(), ElementFault> {
+        self.check_state(frames, z).map_err(|fault| ElementFault::OutOfRange(fault.to_string()))
+    }
+
+    fn tolerance_scales(&self, scales: &mut [f64]) {
+        self.state_tolerance_scales(scales);
     }
 }
 

@@ -2,10 +2,10 @@
 //! marker's body, each as three functions of time, in the global frame or in
 //! the marker's frame (turning with the body).
 
-use super::ForceOutput;
+use crate::element::{ElementFault, ElementMemory, ElementModel, ElementWork, ForceOutput, OutputInfo};
 use crate::dynamics::GeneralisedForces;
 use crate::kinematics::frames::Frames;
-use crate::kinematics::marker::SpatialMarker;
+use crate::kinematics::marker::{Marker, SpatialMarker};
 use crate::kinematics::spatial::Vec3;
 use crate::kinematics::wrench::Wrench;
 use crate::motion::TimeFunction;
@@ -43,12 +43,12 @@ pub struct PrescribedLoad {
 
 impl PrescribedLoad {
     /// Outputs of a force (global components).
-    pub const FORCE_CHANNELS: [super::OutputInfo; 3] = [("fx", "N", "applied force, global x"), ("fy", "N", "applied force, global y"), ("fz", "N", "applied force, global z")];
+    pub const FORCE_CHANNELS: [OutputInfo; 3] = [("fx", "N", "applied force, global x"), ("fy", "N", "applied force, global y"), ("fz", "N", "applied force, global z")];
     /// Outputs of a torque (global components).
-    pub const TORQUE_CHANNELS: [super::OutputInfo; 3] = [("mx", "N m", "applied torque, global x"), ("my", "N m", "applied torque, global y"), ("mz", "N m", "applied torque, global z")];
+    pub const TORQUE_CHANNELS: [OutputInfo; 3] = [("mx", "N m", "applied torque, global x"), ("my", "N m", "applied torque, global y"), ("mz", "N m", "applied torque, global z")];
 
     /// Output channels.
-    pub fn channels(&self) -> &'static [super::OutputInfo] {
+    pub fn load_channels(&self) -> &'static [OutputInfo] {
         match self.kind {
             LoadKind::Force => &Self::FORCE_CHANNELS,
             LoadKind::Torque => &Self::TORQUE_CHANNELS,
@@ -56,7 +56,7 @@ impl PrescribedLoad {
     }
 
     /// Applies the load; outputs its global components.
-    pub fn apply(&self, frames: &Frames<'_>, t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
+    pub fn load(&self, frames: &Frames<'_>, t: f64, forces: &mut GeneralisedForces) -> ForceOutput {
         let [x, y, z] = &self.components;
         let local = Vec3::new(x.sample(t).value, y.sample(t).value, z.sample(t).value);
         let global = match self.frame {
@@ -69,5 +69,21 @@ impl PrescribedLoad {
         };
         forces.add_wrench(&self.marker, frames.point(&self.marker), &wrench);
         ForceOutput::new(global.as_slice(), 0.0)
+    }
+}
+
+impl ElementModel for PrescribedLoad {
+    fn channels(&self) -> &'static [OutputInfo] {
+        self.load_channels()
+    }
+
+    fn markers(&self) -> Vec<Marker> {
+        vec![self.marker.planar()]
+    }
+
+    #[inline]
+    fn apply(&self, frames: &Frames<'_>, t: f64, _states: (&[f64], &mut [f64]), _memory: &[ElementMemory], work: &mut ElementWork, _detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+        *work.outputs_mut() = self.load(frames, t, forces);
+        Ok(())
     }
 }

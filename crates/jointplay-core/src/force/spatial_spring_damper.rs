@@ -1,10 +1,10 @@
 //! Linear translational spring-damper between two points in space:
 //! tension `F = k (l - l0) + c l_dot`, pulling the points together.
 
-use super::ForceOutput;
+use crate::element::{ElementFault, ElementMemory, ElementModel, ElementWork, ForceOutput, OutputInfo};
 use crate::dynamics::GeneralisedForces;
 use crate::kinematics::frames::Frames;
-use crate::kinematics::marker::SpatialMarker;
+use crate::kinematics::marker::{Marker, SpatialMarker};
 use crate::kinematics::wrench::Wrench;
 use crate::kinematics::spatial::Vec3;
 
@@ -25,10 +25,10 @@ pub struct SpatialSpringDamper {
 
 impl SpatialSpringDamper {
     /// Outputs.
-    pub const CHANNELS: [super::OutputInfo; 3] = [("force", "N", "tension"), ("length", "m", "length"), ("rate", "m/s", "rate of the length")];
+    pub const CHANNELS: [OutputInfo; 3] = [("force", "N", "tension"), ("length", "m", "length"), ("rate", "m/s", "rate of the length")];
 
     /// Applies the tension to both points; outputs tension [N], length [m] and its rate [m/s].
-    pub fn apply(&self, frames: &Frames<'_>, forces: &mut GeneralisedForces) -> ForceOutput {
+    pub fn load(&self, frames: &Frames<'_>, forces: &mut GeneralisedForces) -> ForceOutput {
         let (pi, pj) = (frames.point(&self.first), frames.point(&self.second));
         let d = pj - pi;
         let length = d.norm();
@@ -44,5 +44,21 @@ impl SpatialSpringDamper {
         forces.add_wrench(&self.first, pi, &pull(u * tension));
         forces.add_wrench(&self.second, pj, &pull(-u * tension));
         ForceOutput::new(&[tension, length, rate], potential_energy)
+    }
+}
+
+impl ElementModel for SpatialSpringDamper {
+    fn channels(&self) -> &'static [OutputInfo] {
+        &Self::CHANNELS
+    }
+
+    fn markers(&self) -> Vec<Marker> {
+        vec![self.first.planar(), self.second.planar()]
+    }
+
+    #[inline]
+    fn apply(&self, frames: &Frames<'_>, _t: f64, _states: (&[f64], &mut [f64]), _memory: &[ElementMemory], work: &mut ElementWork, _detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+        *work.outputs_mut() = self.load(frames, forces);
+        Ok(())
     }
 }

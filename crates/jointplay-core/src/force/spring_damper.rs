@@ -1,10 +1,11 @@
 //! Linear translational spring-damper between two points:
 //! tension `F = k (l - l0) + c l_dot`, pulling the points together.
 
-use super::ForceOutput;
+use crate::element::{ElementFault, ElementMemory, ElementModel, ElementWork, ForceOutput, OutputInfo};
 use crate::kinematics::marker::Marker;
 use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
+use crate::kinematics::frames::Frames;
 
 /// Point-to-point spring and damper.
 #[derive(Clone, Debug, PartialEq)]
@@ -23,10 +24,10 @@ pub struct SpringDamper {
 
 impl SpringDamper {
     /// Outputs.
-    pub const CHANNELS: [super::OutputInfo; 2] = [("force", "N", "tension"), ("length", "m", "length")];
+    pub const CHANNELS: [OutputInfo; 2] = [("force", "N", "tension"), ("length", "m", "length")];
 
     /// Applies the tension to both points; outputs tension [N] and length [m].
-    pub fn apply(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
+    pub fn load(&self, frames: &[Frame], forces: &mut GeneralisedForces) -> ForceOutput {
         let (fi, fj) = (&frames[self.first.frame], &frames[self.second.frame]);
         let (pi, pj) = (fi.point(self.first.local), fj.point(self.second.local));
         let d = pj - pi;
@@ -42,5 +43,21 @@ impl SpringDamper {
         forces.add_point_force(&self.first, fi, pi, u * tension);
         forces.add_point_force(&self.second, fj, pj, -u * tension);
         ForceOutput::new(&[tension, length], potential_energy)
+    }
+}
+
+impl ElementModel for SpringDamper {
+    fn channels(&self) -> &'static [OutputInfo] {
+        &Self::CHANNELS
+    }
+
+    fn markers(&self) -> Vec<Marker> {
+        vec![self.first, self.second]
+    }
+
+    #[inline]
+    fn apply(&self, frames: &Frames<'_>, _t: f64, _states: (&[f64], &mut [f64]), _memory: &[ElementMemory], work: &mut ElementWork, _detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+        *work.outputs_mut() = self.load(frames.planar, forces);
+        Ok(())
     }
 }

@@ -1,16 +1,17 @@
 //! The clearance revolute joint under the element contract
-//! ([`crate::force::ForceElement`]): its event (contact onset, the
-//! penetration crossing zero), its discrete memory (the onset velocity
+//! ([`crate::element::ElementModel`]): its one event (contact onset, the
+//! penetration crossing zero), its one memory slot (the onset velocity
 //! latched at the accepted step where contact began, and the impact count),
 //! its evaluation (dry contact plus the optional film) with the scratch it
 //! needs, and its channels. The laws themselves are in
 //! [`super::clearance_revolute`] and [`super::lubricated_film`].
 
 use super::{ClearanceRevolute, ContactEvaluation, FilmEvaluation, Lubrication};
-use crate::kinematics::marker::BodyIndex;
-use crate::kinematics::planar::Frame;
 use crate::dynamics::GeneralisedForces;
-use crate::force::{Acceptance, ElementFault, OutputInfo};
+use crate::element::{Acceptance, ElementFault, ElementMemory, ElementModel, ElementWork, OutputInfo};
+use crate::kinematics::frames::Frames;
+use crate::kinematics::marker::{BodyIndex, Marker};
+use crate::kinematics::planar::Frame;
 use crate::lubrication::reynolds::ReynoldsSolver;
 
 /// A penetration deeper than this fraction of the clearance is reported in
@@ -36,6 +37,14 @@ pub struct ClearanceWork {
     pub film: FilmEvaluation,
     /// Reynolds solver of the exact film mode.
     pub solver: Option<ReynoldsSolver>,
+}
+
+impl ClearanceWork {
+    /// Whether the last evaluation's forces are finite.
+    pub fn forces_finite(&self) -> bool {
+        let (c, f) = (&self.contact, &self.film);
+        c.normal_force.is_finite() && c.friction_force.is_finite() && f.force_on_journal.x.is_finite() && f.force_on_journal.y.is_finite()
+    }
 }
 
 /// Channels of a clearance joint: the contact quantities, then (lubricated joints only) the film's.
@@ -64,26 +73,143 @@ pub const CHANNELS: [OutputInfo; 19] = [
 /// Number of the contact channels (the film's follow).
 const CONTACT_CHANNELS: usize = 12;
 
-impl ClearanceRevolute {
-    /// Channels: quantity, unit, description.
-    pub fn channels(&self) -> &'static [OutputInfo] {
+/// The joint's one memory slot.
+#[inline]
+fn contact(memory: &[ElementMemory]) -> &ContactMemory {
+    match memory {
+        [ElementMemory::Contact(memory)] => memory,
+        _ => unreachable!("a clearance joint's memory is its one contact slot"),
+    }
+}
+
+/// The joint's one memory slot, to change.
+fn contact_mut(memory: &mut [ElementMemory]) -> &mut ContactMemory {
+    match memory {
+        [ElementMemory::Contact(memory)] => memory,
+        _ => unreachable!("a clearance joint's memory is its one contact slot"),
+    }
+}
+
+/// The joint's record in the workspace.
+#[inline]
+fn clearance_work(work: &ElementWork) -> &ClearanceWork {
+    match work {
+        ElementWork::Clearance(work) => work,
+        ElementWork::Outputs(_) => unreachable!("a clearance joint's work is its own"),
+    }
+}
+
+/// The joint's record in the workspace, to change.
+#[inline]
+fn clearance_work_mut(work: &mut ElementWork) -> &mut ClearanceWork {
+    match work {
+        ElementWork::Clearance(work) => work,
+        ElementWork::Outputs(_) => unreachable!("a clearance joint's work is its own"),
+    }
+}
+
+impl ElementModel for ClearanceRevolute {
+    /// The contact channels, then (lubricated joints only) the film's.
+    fn channels(&self) -> &'static [OutputInfo] {
         if self.lubrication.is_some() { &CHANNELS } else { &CHANNELS[..CONTACT_CHANNELS] }
     }
 
-    /// Scratch and last evaluation for the workspace.
-    pub fn new_work(&self) -> ClearanceWork {
-        ClearanceWork { solver: self.lubrication.as_ref().and_then(Lubrication::new_solver), ..Default::default() }
+    fn markers(&self) -> Vec<Marker> {
+        vec![self.bearing, self.journal]
     }
 
-    /// The bodies the event function reads.
-    pub fn event_bodies(&self) -> [BodyIndex; 2] {
-        [self.bearing.body, self.journal.body]
+    /// One: the penetration crossing zero upwards.
+    fn n_events(&self) -> usize {
+        1
     }
 
+    /// One: the contact's onset memory.
+    fn n_memory_slots(&self) -> usize {
+        1
+    }
+
+    fn event_bodies(&self) -> Vec<BodyIndex> {
+        vec![self.bearing.body, self.journal.body]
+    }
+
+    fn start_memory(&self, memory: &mut [ElementMemory]) {
+        memory[0] = ElementMemory::Contact(ContactMemory::default());
+    }
+
+    fn new_work(&self) -> ElementWork {
+        ElementWork::Clearance(Box::new(ClearanceWork { solver: self.lubrication.as_ref().and_then(Lubrication::new_solver), ..Default::default() }))
+    }
+
+    /// Evaluates contact and film with the latched onset velocity of its
+    /// memory, adds their generalised forces and keeps the evaluations.
+    #[inline]
+    fn apply(&self, frames: &Frames<'_>, _t: f64, _states: (&[f64], &mut [f64]), memory: &[ElementMemory], work: &mut ElementWork, detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+        self.apply_contact_and_film(frames.planar, contact(memory), clearance_work_mut(work), detailed, forces)
+    }
+
+    /// Re-evaluates the film with the outputs only samples need (the peak pressure).
+    fn detail(&self, frames: &[Frame], work: &mut ElementWork) -> Result<(), ElementFault> {
+        if self.lubrication.is_some() {
+            let work = clearance_work_mut(work);
+            work.film = self.film(frames, work.solver.as_mut(), true)?;
+        }
+        Ok(())
+    }
+
+    fn has_detailed_outputs(&self) -> bool {
+        self.lubrication.is_some()
+    }
+
+    fn outputs(&self, which: std::ops::Range<usize>, frames: &[Frame], work: &ElementWork, out: &mut [f64]) {
+        out.copy_from_slice(&self.all_outputs(frames, clearance_work(work))[which]);
+    }
+
+    fn output(&self, which: usize, frames: &[Frame], work: &ElementWork) -> f64 {
+        self.all_outputs(frames, clearance_work(work))[which]
+    }
+
+    /// Elastic energy stored in the contact [J].
+    fn potential_energy(&self, work: &ElementWork) -> f64 {
+        self.stiffness.elastic_energy(clearance_work(work).contact.penetration.max(0.0))
+    }
+
+    fn event_functions(&self, frames: &Frames<'_>, g: &mut [f64], rates: Option<&mut [f64]>) {
+        g[0] = self.penetration(frames.planar);
+        if let Some(rates) = rates {
+            rates[0] = self.penetration_rate(frames.planar);
+        }
+    }
+
+    fn on_event(&self, frames: &Frames<'_>, _event: usize, memory: &mut [ElementMemory]) {
+        self.latch_onset(frames.planar, contact_mut(memory));
+    }
+
+    /// Latches or clears the onset velocity at an accepted state and checks the
+    /// penetration bound.
+    fn accept(&self, frames: &Frames<'_>, memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault> {
+        let memory = contact_mut(memory);
+        let penetration = self.penetration(frames.planar);
+        if penetration <= 0.0 {
+            return Ok(Acceptance { memory_changed: memory.onset_velocity.take().is_some(), ..Default::default() });
+        }
+        let mut memory_changed = false;
+        if memory.onset_velocity.is_none() {
+            // contact present without a located onset (start in contact, or re-contact inside one step)
+            self.latch_onset(frames.planar, memory);
+            memory_changed = true;
+        }
+        if penetration > self.max_penetration {
+            return Err(ElementFault::ExcessivePenetration { penetration, bound: self.max_penetration });
+        }
+        Ok(Acceptance { memory_changed, penetration, deep_penetration: penetration > DEEP_PENETRATION_FRACTION * self.clearance })
+    }
+}
+
+impl ClearanceRevolute {
     /// Evaluates contact and film with the latched onset velocity of `memory`,
     /// adds their generalised forces and keeps the evaluations in `work`;
     /// `detailed` asks for the film outputs only recorded samples need.
-    pub fn apply_element(&self, frames: &[Frame], memory: &ContactMemory, work: &mut ClearanceWork, detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
+    pub fn apply_contact_and_film(&self, frames: &[Frame], memory: &ContactMemory, work: &mut ClearanceWork, detailed: bool, forces: &mut GeneralisedForces) -> Result<(), ElementFault> {
         let c = self.evaluate(frames, memory.onset_velocity);
         let (bi, bj) = (&self.bearing, &self.journal);
         let (fi, fj) = (&frames[bi.frame], &frames[bj.frame]);
@@ -99,14 +225,6 @@ impl ClearanceRevolute {
         Ok(())
     }
 
-    /// Re-evaluates the film with the outputs only samples need (the peak pressure).
-    pub fn detail(&self, frames: &[Frame], work: &mut ClearanceWork) -> Result<(), ElementFault> {
-        if self.lubrication.is_some() {
-            work.film = self.film(frames, work.solver.as_mut(), true)?;
-        }
-        Ok(())
-    }
-
     fn film(&self, frames: &[Frame], solver: Option<&mut ReynoldsSolver>, detailed: bool) -> Result<FilmEvaluation, ElementFault> {
         let Some(lubrication) = &self.lubrication else { return Ok(FilmEvaluation::default()) };
         let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
@@ -114,38 +232,14 @@ impl ClearanceRevolute {
         lubrication.evaluate(&kinematics, solver, detailed).map_err(ElementFault::Film)
     }
 
-    /// Latches or clears the onset velocity at an accepted state and checks the
-    /// penetration bound.
-    pub fn accept(&self, frames: &[Frame], memory: &mut ContactMemory) -> Result<Acceptance, ElementFault> {
-        let penetration = self.penetration(frames);
-        if penetration <= 0.0 {
-            return Ok(Acceptance { memory_changed: memory.onset_velocity.take().is_some(), ..Default::default() });
-        }
-        let mut memory_changed = false;
-        if memory.onset_velocity.is_none() {
-            // contact present without a located onset (start in contact, or re-contact inside one step)
-            self.on_event(frames, memory);
-            memory_changed = true;
-        }
-        if penetration > self.max_penetration {
-            return Err(ElementFault::ExcessivePenetration { penetration, bound: self.max_penetration });
-        }
-        Ok(Acceptance { memory_changed, penetration, deep_penetration: penetration > DEEP_PENETRATION_FRACTION * self.clearance })
-    }
-
     /// Contact onset located: latches the approach velocity and counts the impact.
-    pub fn on_event(&self, frames: &[Frame], memory: &mut ContactMemory) {
+    fn latch_onset(&self, frames: &[Frame], memory: &mut ContactMemory) {
         memory.onset_velocity = Some(self.onset_velocity(frames));
         memory.impacts += 1;
     }
 
-    /// Value of channel `which` (an index into [`CHANNELS`]) from the last evaluation.
-    pub fn output(&self, which: usize, frames: &[Frame], work: &ClearanceWork) -> f64 {
-        self.outputs(frames, work)[which]
-    }
-
     /// Values of all channels ([`CHANNELS`], the film's zero for a dry joint) from the last evaluation.
-    pub fn outputs(&self, frames: &[Frame], work: &ClearanceWork) -> [f64; CHANNELS.len()] {
+    pub fn all_outputs(&self, frames: &[Frame], work: &ClearanceWork) -> [f64; CHANNELS.len()] {
         let (c, f) = (&work.contact, &work.film);
         // the joint's total force on the journal: dry contact plus film (zero for a dry joint)
         let total = c.force_on_journal + f.force_on_journal;
@@ -181,16 +275,5 @@ impl ClearanceRevolute {
         let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
         let e_dot = fj.point_velocity(self.journal.local) - fi.point_velocity(self.bearing.local);
         e_dot.dot(&c.eccentricity) / distance
-    }
-
-    /// Elastic energy stored in the contact [J].
-    pub fn potential_energy(&self, work: &ClearanceWork) -> f64 {
-        self.stiffness.elastic_energy(work.contact.penetration.max(0.0))
-    }
-
-    /// Whether the last evaluation's forces are finite.
-    pub fn outputs_finite(work: &ClearanceWork) -> bool {
-        let (c, f) = (&work.contact, &work.film);
-        c.normal_force.is_finite() && c.friction_force.is_finite() && f.force_on_journal.x.is_finite() && f.force_on_journal.y.is_finite()
     }
 }

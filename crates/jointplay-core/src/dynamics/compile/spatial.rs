@@ -6,8 +6,10 @@ use super::hydraulic::build_cylinder;
 use super::laws::build_function;
 use super::{Compiler, SpatialJointEntry};
 use crate::body::{BodyKind, BodyModel, SpatialRigidBody};
-use crate::dynamics::model::{Body, ElementKind, VelocityStart};
-use crate::force::{Bushing, ForceElement, LoadFrame, LoadKind, PrescribedLoad, SpatialSpringDamper};
+use crate::dynamics::model::{Body, VelocityStart};
+use crate::element::ElementKind;
+use crate::joint::IdealKind;
+use crate::force::{Bushing, LoadFrame, LoadKind, PrescribedLoad, SpatialSpringDamper};
 use crate::joint::{AxisDistance, AxisRotation, ConstraintKind, PerpendicularAxes, SpatialPointCoincidence, Target};
 use crate::kinematics::marker::{BodyIndex, Marker, Site, SpatialMarker};
 use crate::kinematics::euler::EulerSequence;
@@ -120,10 +122,9 @@ impl<'s> Compiler<'s> {
             return;
         }
         let kinds = joint_equations(j.kind, a, b);
-        let element = self.add_element(&j.name, ElementKind::SpatialJoint(j.kind), a.planar(), b.planar(), Default::default(), kinds);
-        self.model.elements[element].spatial_markers = Some(Box::new([a, b]));
+        let element = self.add_element(&j.name, IdealKind::SpatialJoint(j.kind), a.planar(), b.planar(), Default::default(), kinds);
+        self.ideal_mut(element).spatial_markers = Some(Box::new([a, b]));
         self.spatial_joint_index.insert(&j.name, SpatialJointEntry { kind: j.kind, markers: [a, b] });
-        self.ideal_channels(element, &j.name);
     }
 
     /// A driver of the spatial joint `entry`: the rotation about its axis
@@ -133,10 +134,10 @@ impl<'s> Compiler<'s> {
         let [a, b] = entry.markers;
         let (kind, constraint) = match entry.kind {
             SpatialJointKind::Revolute | SpatialJointKind::Cylindrical => {
-                (ElementKind::SpatialAngleDriver, ConstraintKind::AxisRotation(Box::new(AxisRotation { first: a, second: b, target: Target::Driven(function) })))
+                (IdealKind::SpatialAngleDriver, ConstraintKind::AxisRotation(Box::new(AxisRotation { first: a, second: b, target: Target::Driven(function) })))
             }
             SpatialJointKind::Translational => (
-                ElementKind::SpatialDisplacementDriver,
+                IdealKind::SpatialDisplacementDriver,
                 ConstraintKind::AxisDistance(Box::new(AxisDistance { first: a, second: b, axis: 2, target: Target::Driven(function) })),
             ),
             other => {
@@ -145,8 +146,7 @@ impl<'s> Compiler<'s> {
             }
         };
         let element = self.add_element(name, kind, a.planar(), b.planar(), Default::default(), vec![constraint]);
-        self.model.elements[element].spatial_markers = Some(Box::new([a, b]));
-        self.ideal_channels(element, name);
+        self.ideal_mut(element).spatial_markers = Some(Box::new([a, b]));
     }
 
     /// The force elements in space.
@@ -154,12 +154,12 @@ impl<'s> Compiler<'s> {
         for (k, f) in self.spec.spatial_forces.iter().flatten().enumerate() {
             let loc = format!("spatial_forces[{k}]");
             if let Some((name, element, states)) = self.spatial_force(&loc, f) {
-                self.push_force_element(name, element, states);
+                self.push_element(name, element, states);
             }
         }
     }
 
-    fn spatial_force(&mut self, loc: &str, f: &'s SpatialForceSpec) -> Option<(&'s str, ForceElement, Vec<f64>)> {
+    fn spatial_force(&mut self, loc: &str, f: &'s SpatialForceSpec) -> Option<(&'s str, ElementKind, Vec<f64>)> {
         match f {
             SpatialForceSpec::SpringDamper(SpringDamperSpec { name, first, second, stiffness, damping, free_length }) => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -171,7 +171,7 @@ impl<'s> Compiler<'s> {
                 ];
                 Range::check_all(&checks, loc, &mut self.errors);
                 let element = SpatialSpringDamper { first: a?, second: b?, stiffness: *stiffness, damping: *damping, free_length: *free_length };
-                Some((name, ForceElement::SpatialSpringDamper(Box::new(element)), Vec::new()))
+                Some((name, ElementKind::SpatialSpringDamper(Box::new(element)), Vec::new()))
             }
             SpatialForceSpec::Bushing { name, first, second, stiffness, damping, rotational_stiffness, rotational_damping } => {
                 self.claim_name(name, &format!("{loc}.name"));
@@ -194,19 +194,19 @@ impl<'s> Compiler<'s> {
                     rotational_stiffness: Vec3::from(*rotational_stiffness),
                     rotational_damping: Vec3::from(*rotational_damping),
                 };
-                Some((name, ForceElement::Bushing(Box::new(element)), Vec::new()))
+                Some((name, ElementKind::Bushing(Box::new(element)), Vec::new()))
             }
             SpatialForceSpec::PointForce { name, point, force, frame } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let marker = self.spatial_point(point, format!("{loc}.point"));
                 let components = self.functions(force, &format!("{loc}.force"));
-                Some((name, ForceElement::PrescribedLoad(Box::new(PrescribedLoad { marker: marker?, kind: LoadKind::Force, frame: load_frame(*frame), components: components? })), Vec::new()))
+                Some((name, ElementKind::PrescribedLoad(Box::new(PrescribedLoad { marker: marker?, kind: LoadKind::Force, frame: load_frame(*frame), components: components? })), Vec::new()))
             }
             SpatialForceSpec::Torque { name, body, torque, frame } => {
                 self.claim_name(name, &format!("{loc}.name"));
                 let marker = self.spatial_body_marker(body, format!("{loc}.body"));
                 let components = self.functions(torque, &format!("{loc}.torque"));
-                Some((name, ForceElement::PrescribedLoad(Box::new(PrescribedLoad { marker: marker?, kind: LoadKind::Torque, frame: load_frame(*frame), components: components? })), Vec::new()))
+                Some((name, ElementKind::PrescribedLoad(Box::new(PrescribedLoad { marker: marker?, kind: LoadKind::Torque, frame: load_frame(*frame), components: components? })), Vec::new()))
             }
             SpatialForceSpec::HydraulicCylinder(c) => {
                 self.claim_name(&c.name, &format!("{loc}.name"));
@@ -215,7 +215,7 @@ impl<'s> Compiler<'s> {
                 let length = (self.initial_spatial_point(b) - self.initial_spatial_point(a)).norm();
                 let (mut element, states) = build_cylinder(c, (a.planar(), b.planar()), length, loc, &mut self.errors)?;
                 element.spatial_attachments = Some(Box::new([a, b]));
-                Some((&c.name, ForceElement::HydraulicCylinder(element), states))
+                Some((&c.name, ElementKind::HydraulicCylinder(element), states))
             }
         }
     }

@@ -3,7 +3,7 @@
 use super::tree::{JointTree, ANY_DOFS, FIXED_DOFS_MAX};
 use crate::dynamics::equations::{applied_forces, check_finite};
 use crate::kinematics::planar::Frame;
-use crate::force::ElementMemory;
+use crate::element::ElementMemory;
 use crate::dynamics::{Model, Workspace};
 use crate::error::SimulationError;
 use crate::linalg::ldl_solve_scaled;

@@ -15,7 +15,7 @@
 
 use super::tree::{EdgeJoint, JointTree, TreeEdge};
 use crate::kinematics::planar::{cross, Frame, Vec2};
-use crate::dynamics::model::IdealElement;
+use crate::joint::IdealElement;
 use crate::dynamics::{Model, Workspace};
 
 /// A wrench `(force [N], moment [N m])` acting at a point.
@@ -48,7 +48,7 @@ impl JointTree {
         for edge in &self.edges {
             let Some(joint) = edge.joint_element else { continue };
             let w = wrenches[edge.child.0];
-            let (joint_force, driver_force) = split(edge, &model.elements[joint], &ws.frames, w);
+            let (joint_force, driver_force) = split(edge, model.ideal(joint), &ws.frames, w);
             ws.constraint_forces[joint] = joint_force;
             if let Some(driver) = edge.driver_element {
                 ws.constraint_forces[driver] = driver_force;

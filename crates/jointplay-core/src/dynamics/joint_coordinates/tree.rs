@@ -4,7 +4,8 @@
 use crate::body::BodyKind;
 use crate::kinematics::marker::{BodyIndex, Marker};
 use crate::kinematics::planar::Vec2;
-use crate::dynamics::model::{ElementKind, Model};
+use crate::dynamics::model::Model;
+use crate::joint::IdealKind;
 use crate::joint::{ConstraintKind, Target};
 use crate::motion::TimeFunction;
 
@@ -121,14 +122,14 @@ impl JointTree {
         loop {
             let Some(parent) = queue.pop_front().or_else(|| next_root(&mut roots, &mut placed, &mut edges, &mut n_dofs)) else { break };
             for (j, &element) in joints.iter().enumerate() {
-                let e = &model.elements[element];
+                let e = model.ideal(element);
                 if used[j] || (e.first != parent && e.second != parent) {
                     continue;
                 }
                 used[j] = true;
                 let child = if e.first == parent { e.second } else { e.first };
                 if placed[child.0] {
-                    return Err(format!("joint {:?} closes a loop of ideal joints", e.name));
+                    return Err(format!("joint {:?} closes a loop of ideal joints", model.elements[element].name));
                 }
                 placed[child.0] = true;
                 let (joint, has_coordinate) = edge_joint(model, element, parent);
@@ -192,15 +193,15 @@ fn next_root(
 /// The ideal joints acting during the simulation (element indices); an error for an element the tree cannot hold.
 fn joint_elements(model: &Model) -> Result<Vec<usize>, String> {
     let mut joints = Vec::new();
-    for (e, element) in model.elements.iter().enumerate() {
+    for (e, element) in model.ideal_elements() {
         if element.constraints.start >= model.n_dynamic_constraints {
             continue; // assembly locks
         }
         match element.kind {
-            ElementKind::RevoluteJoint | ElementKind::TranslationalJoint | ElementKind::FixedJoint => joints.push(e),
-            ElementKind::AngleDriver | ElementKind::DisplacementDriver => {}
-            ElementKind::AssemblyLock => return Err(format!("the assembly lock {:?} acts during the simulation", element.name)),
-            ElementKind::SpatialJoint(_) | ElementKind::SpatialAngleDriver | ElementKind::SpatialDisplacementDriver => return Err(SPATIAL_MODELS.to_string()),
+            IdealKind::RevoluteJoint | IdealKind::TranslationalJoint | IdealKind::FixedJoint => joints.push(e),
+            IdealKind::AngleDriver | IdealKind::DisplacementDriver => {}
+            IdealKind::AssemblyLock => return Err(format!("the assembly lock {:?} acts during the simulation", model.elements[e].name)),
+            IdealKind::SpatialJoint(_) | IdealKind::SpatialAngleDriver | IdealKind::SpatialDisplacementDriver => return Err(SPATIAL_MODELS.to_string()),
         }
     }
     Ok(joints)
@@ -209,17 +210,18 @@ fn joint_elements(model: &Model) -> Result<Vec<usize>, String> {
 /// For each joint of `joints`, its driver element and function, if driven.
 fn drivers_of(model: &Model, joints: &[usize]) -> Result<Vec<Option<(usize, TimeFunction)>>, String> {
     let mut drivers: Vec<Option<(usize, TimeFunction)>> = vec![None; joints.len()];
-    for (d, element) in model.elements.iter().enumerate() {
+    for (d, element) in model.ideal_elements() {
         let wanted = match element.kind {
-            ElementKind::AngleDriver => ElementKind::RevoluteJoint,
-            ElementKind::DisplacementDriver => ElementKind::TranslationalJoint,
+            IdealKind::AngleDriver => IdealKind::RevoluteJoint,
+            IdealKind::DisplacementDriver => IdealKind::TranslationalJoint,
             _ => continue,
         };
+        let name = &model.elements[d].name;
         let Some(j) = joints.iter().position(|&e| {
-            let joint = &model.elements[e];
+            let joint = model.ideal(e);
             joint.kind == wanted && joint.first == element.first && joint.second == element.second
         }) else {
-            return Err(format!("the driver {:?} drives no joint of the tree", element.name));
+            return Err(format!("the driver {name:?} drives no joint of the tree"));
         };
         if drivers[j].is_some() {
             return Err(format!("joint {:?} is driven twice", model.elements[joints[j]].name));
@@ -227,9 +229,9 @@ fn drivers_of(model: &Model, joints: &[usize]) -> Result<Vec<Option<(usize, Time
         let function = match &model.constraints[element.constraints.start].kind {
             ConstraintKind::RelativeAngle(c) => &c.target,
             ConstraintKind::AxialProjection(c) => &c.target,
-            _ => return Err(format!("the driver {:?} has no driven planar coordinate", element.name)),
+            _ => return Err(format!("the driver {name:?} has no driven planar coordinate")),
         };
-        let Target::Driven(function) = function else { return Err(format!("the driver {:?} prescribes no function", element.name)) };
+        let Target::Driven(function) = function else { return Err(format!("the driver {name:?} prescribes no function")) };
         drivers[j] = Some((d, function.clone()));
     }
     Ok(drivers)
@@ -237,7 +239,7 @@ fn drivers_of(model: &Model, joints: &[usize]) -> Result<Vec<Option<(usize, Time
 
 /// The joint of element `e` seen from `parent`, and whether it has a coordinate.
 fn edge_joint(model: &Model, e: usize, parent: BodyIndex) -> (EdgeJoint, bool) {
-    let element = &model.elements[e];
+    let element = model.ideal(e);
     let mut points: Option<(Marker, Marker)> = None;
     let mut relative_angle = 0.0;
     for c in element.constraints.clone() {
@@ -258,8 +260,8 @@ fn edge_joint(model: &Model, e: usize, parent: BodyIndex) -> (EdgeJoint, bool) {
     let (parent_point, child_point) = if parent_is_first { (first.local, second.local) } else { (second.local, first.local) };
     let sign = if parent_is_first { 1.0 } else { -1.0 };
     match element.kind {
-        ElementKind::RevoluteJoint => (EdgeJoint::Revolute { parent_point, child_point, sign }, true),
-        ElementKind::TranslationalJoint => {
+        IdealKind::RevoluteJoint => (EdgeJoint::Revolute { parent_point, child_point, sign }, true),
+        IdealKind::TranslationalJoint => {
             (EdgeJoint::Translational { parent_point, child_point, axis: element.axis, parent_is_first, relative_angle }, true)
         }
         _ => (EdgeJoint::Fixed { parent_point, child_point, relative_angle: sign * relative_angle }, false),
