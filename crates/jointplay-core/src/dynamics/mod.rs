@@ -75,3 +75,5 @@ mod jacobian_tests;
 mod newton_parts_tests;
 #[cfg(test)]
 mod spatial_tests;
+#[cfg(test)]
+mod spatial_clearance_tests;

@@ -18,6 +18,12 @@ use crate::lubrication::reynolds::ReynoldsSolver;
 /// the acceptance as deep (a hint that the contact is soft for the clearance).
 const DEEP_PENETRATION_FRACTION: f64 = 0.1;
 
+/// Largest tilt of the bearing's or the journal's frame out of the plane
+/// z = 0 [rad]: the joint's law is planar, exact while both turn about the
+/// global z axis only (in a spatial model, bodies kept in the plane by their
+/// joints stay within round-off of it).
+const MAX_TILT: f64 = 1e-6;
+
 /// Discrete memory of one clearance joint, changed only at its events and at accepted steps.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct ContactMemory {
@@ -187,6 +193,7 @@ impl ElementModel for ClearanceRevolute {
     /// Latches or clears the onset velocity at an accepted state and checks the
     /// penetration bound.
     fn accept(&self, frames: &Frames<'_>, memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault> {
+        self.check_in_plane(frames)?;
         let memory = contact_mut(memory);
         let penetration = self.penetration(frames.planar);
         if penetration <= 0.0 {
@@ -230,6 +237,23 @@ impl ClearanceRevolute {
         let (fi, fj) = (&frames[self.bearing.frame], &frames[self.journal.frame]);
         let kinematics = Lubrication::kinematics(fi, fj, fi.point(self.bearing.local), fj.point(self.journal.local));
         lubrication.evaluate(&kinematics, solver, detailed).map_err(ElementFault::Film)
+    }
+
+    /// In a spatial model: an error when the bearing's or the journal's frame
+    /// tilts out of the plane z = 0, where the planar law no longer holds.
+    fn check_in_plane(&self, frames: &Frames<'_>) -> Result<(), ElementFault> {
+        if frames.spatial.is_empty() {
+            return Ok(());
+        }
+        for (role, marker) in [("bearing", &self.bearing), ("journal", &self.journal)] {
+            let tilt = frames.spatial[marker.frame].rotation[(2, 2)].clamp(-1.0, 1.0).acos();
+            if tilt > MAX_TILT {
+                return Err(ElementFault::OutOfRange(format!(
+                    "the {role}'s frame tilted {tilt:.3e} rad out of the plane z = 0 (at most {MAX_TILT:e}): the planar clearance joint holds only while its bodies turn about the global z axis"
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// Contact onset located: latches the approach velocity and counts the impact.
