@@ -27,7 +27,7 @@ pub(crate) fn reaction_wrench(model: &Model, e: usize, ws: &Workspace) -> Wrench
     total
 }
 
-/// The reaction channels of spatial joint `e` (see [`super::model::SPATIAL_REACTION_CHANNELS`]).
+/// The reaction channels of spatial joint `e` (see [`crate::dynamics::model::mechanism::SPATIAL_REACTION_CHANNELS`]).
 pub(crate) fn spatial_reactions(model: &Model, e: usize, ws: &Workspace) -> [f64; 13] {
     let w = reaction_wrench(model, e, ws);
     let local = match model.elements[e].spatial_markers.as_deref() {
