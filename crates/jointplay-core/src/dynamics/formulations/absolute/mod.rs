@@ -13,6 +13,6 @@ pub(crate) mod projection;
 pub(crate) mod redundancy;
 
 #[cfg(test)]
-pub(crate) mod jacobian_tests;
+mod jacobian_tests;
 #[cfg(test)]
 mod newton_parts_tests;
