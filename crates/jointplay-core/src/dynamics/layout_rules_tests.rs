@@ -3,9 +3,10 @@
 //! a folder of a lower stage, written `crate::dynamics::<folder>::...`. The two
 //! folders of stage 1 (the compiler and the formulations) do not import each
 //! other; nothing inside `dynamics/` goes through the root re-exports
-//! (`crate::dynamics::Model`) or climbs with `super::super`. Test files
-//! (`tests.rs`, `*_tests.rs`) and everything from a file's first
-//! `#[cfg(test)]` line on are exempt.
+//! (`crate::dynamics::Model`) or climbs with `super::super`; a source file
+//! directly in `dynamics/` other than `mod.rs` belongs to no stage and is
+//! refused. Test files (`tests.rs`, `*_tests.rs`) and everything from a
+//! file's first `#[cfg(test)]` line on are exempt.
 
 use std::fs;
 use std::path::Path;
@@ -50,8 +51,12 @@ fn violations(path: &str, text: &str) -> Vec<String> {
         return found;
     }
     let components: Vec<&str> = path.split('/').collect();
-    // a file directly in dynamics/ (the root module) belongs to no stage
+    // directly in dynamics/: only the root module (the public names) and tests
     let folder = if components.len() > 1 { Some(components[0]) } else { None };
+    if folder.is_none() && path != "mod.rs" {
+        found.push(format!("{path}: a source file outside the stage folders (put it in the folder of its stage)"));
+        return found;
+    }
     let stage_root = components.len() == 2 && components[1] == "mod.rs";
     for (number, line) in code_part(text) {
         let mut breach = |what: String| found.push(format!("{path}:{number}: {what}: `{}`", line.trim()));
@@ -133,6 +138,10 @@ fn the_rule_names_each_kind_of_breach() {
     let climbing = "use super::super::model::mechanism::Model;\n";
     assert_eq!(violations("formulations/absolute/equations.rs", climbing).len(), 1);
     assert_eq!(violations("outputs/mod.rs", "use super::Model;\n").len(), 1);
+
+    let flat = violations("elements.rs", "use crate::dynamics::model::mechanism::Model;\n");
+    assert!(flat.len() == 1 && flat[0].contains("outside the stage folders"), "{flat:?}");
+    assert_eq!(violations("mod.rs", "pub use model::mechanism::Model;\n"), Vec::<String>::new());
 
     // allowed: own folder, lower stages, and anything in tests
     let allowed = "use super::equations::update_frames;\nuse crate::dynamics::model::mechanism::Model;\nuse crate::dynamics::formulations::workspace::Workspace;\nuse crate::dynamics::starts::assembly::assemble;\n#[cfg(test)]\nuse crate::dynamics::simulate;\n";
