@@ -1,6 +1,6 @@
 """The formulation option from Python: a tree of ideal joints runs in joint coordinates by default and
 gives what the absolute formulation gives (the core's tests compare every channel of a tree with every
-kind of joint, `dynamics/joint_coordinates/tests.rs`); here the Flores dry slider-crank up to and through
+kind of joint, `dynamics/formulations/joint_coordinates/tests.rs`); here the Flores dry slider-crank up to and through
 its first impact, and the options' errors. The comparisons with the independent SciPy model
 (tests/physics/reference_slider_crank.py, test_engine_vs_reference.py) run the default, joint coordinates."""
 

@@ -16,7 +16,9 @@
 //! - [`joint`]: ideal joints from constraint primitives (planar and spatial), the clearance revolute joint as a force element;
 //! - [`force`]: springs, dampers, bushings, applied loads, hydraulic cylinders;
 //! - [`element`]: the one contract of every joint, driver and force element, and the list of their kinds;
-//! - [`dynamics`]: model, state, workspace, equations of motion, assembly, projection;
+//! - [`dynamics`]: the pipeline, one folder per stage: the compiled model and its state,
+//!   the compiler, the formulations (equations of motion, projection), the starts
+//!   (assembly, equilibrium), the outputs and the simulation driver;
 //! - [`integrate`]: time integrators with dense output and event location;
 //! - [`linalg`]: the small dense factorisations the hot loop uses without allocating;
 //! - [`spec`]: the plain-data model description that the front ends produce.

@@ -3,6 +3,8 @@
 //! mechanisms.
 
 use super::*;
+use crate::dynamics::formulations::absolute::{constraint_solution, equations, redundancy};
+use crate::dynamics::model::channels;
 use crate::integrate::IntegratorOptions;
 use crate::spec::ModelSpec;
 use std::f64::consts::PI;
@@ -506,7 +508,7 @@ fn the_slider_crank_constraint_matrix_factors_without_fill_in_and_solves_like_th
     let n = model.n_velocities();
     update_frames(&model, state.coordinates(), state.velocities(), &mut ws.frames, &mut ws.spatial_frames);
     equations::linearise_constraints(&model, model.n_dynamic_constraints, 0.0, &mut ws);
-    assert_eq!(super::constraint_solution::factor(&model, rows, state.coordinates(), &mut ws).unwrap(), super::constraint_solution::FactorKind::Pattern);
+    assert_eq!(constraint_solution::factor(&model, rows, state.coordinates(), &mut ws).unwrap(), constraint_solution::FactorKind::Pattern);
     let sparse = ws.schur[..rows * (rows + 1)].to_vec();
     // the same matrix formed densely from the Jacobian and factored by the dense kernel
     // (M^-1 column by column through the body kinds' solves)
