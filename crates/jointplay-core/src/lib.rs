@@ -34,6 +34,7 @@
 pub mod beam;
 pub mod body;
 pub mod contact;
+mod dispatch;
 pub mod dynamics;
 pub mod element;
 pub mod error;

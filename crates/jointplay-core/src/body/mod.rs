@@ -260,24 +260,6 @@ pub trait BodyModel {
     fn add_wrench(&self, at: MarkerFrames<'_>, marker: &SpatialMarker, point: Vec3, wrench: &Wrench, out: &mut [f64]);
 }
 
-/// Forwards each listed method of [`BodyModel`] from [`BodyKind`] to the
-/// kind it holds, by one `match` over the kinds `[$kind ...]`.
-macro_rules! forward {
-    ($kinds:tt;) => {};
-    ($kinds:tt; $(#[$attr:meta])* fn $name:ident(&self $(, $arg:ident: $ty:ty)*) $(-> $ret:ty)?; $($rest:tt)*) => {
-        $(#[$attr])*
-        fn $name(&self $(, $arg: $ty)*) $(-> $ret)? {
-            forward!(@match self, $kinds, $name($($arg),*))
-        }
-        forward!($kinds; $($rest)*);
-    };
-    (@match $self:ident, [$($kind:ident)+], $name:ident $args:tt) => {
-        match $self {
-            $(Self::$kind(body) => body.$name $args,)+
-        }
-    };
-}
-
 /// The list of body kinds: defines [`BodyKind`] with one variant per kind and
 /// its [`BodyModel`], forwarding every method to the kind's own.
 macro_rules! bodies {
@@ -289,7 +271,7 @@ macro_rules! bodies {
         }
 
         impl BodyModel for BodyKind {
-            forward! { [$($kind)+];
+            crate::dispatch::forward! { [$($kind)+];
                 fn nq(&self) -> usize;
                 fn nv(&self) -> usize;
                 #[inline] fn frame(&self, q: &[f64], v: &[f64], previous: &Frame) -> Frame;

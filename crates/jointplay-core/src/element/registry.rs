@@ -13,24 +13,6 @@ use crate::kinematics::frames::Frames;
 use crate::kinematics::marker::{BodyIndex, Marker};
 use crate::kinematics::planar::Frame;
 
-/// Forwards each listed method of [`ElementModel`] from [`ElementKind`] to the
-/// kind it holds, by one `match` over the kinds `[$kind ...]`.
-macro_rules! forward {
-    ($kinds:tt;) => {};
-    ($kinds:tt; $(#[$attr:meta])* fn $name:ident(&self $(, $arg:ident: $ty:ty)*) $(-> $ret:ty)?; $($rest:tt)*) => {
-        $(#[$attr])*
-        fn $name(&self $(, $arg: $ty)*) $(-> $ret)? {
-            forward!(@match self, $kinds, $name($($arg),*))
-        }
-        forward!($kinds; $($rest)*);
-    };
-    (@match $self:ident, [$($kind:ident)+], $name:ident $args:tt) => {
-        match $self {
-            $(Self::$kind(element) => element.$name $args,)+
-        }
-    };
-}
-
 /// The list of element kinds: defines [`ElementKind`] with one variant per
 /// kind and its [`ElementModel`], forwarding every method to the kind's own.
 macro_rules! elements {
@@ -42,7 +24,7 @@ macro_rules! elements {
         }
 
         impl ElementModel for ElementKind {
-            forward! { [$($kind)+];
+            crate::dispatch::forward! { [$($kind)+];
                 fn channels(&self) -> &'static [OutputInfo];
                 fn markers(&self) -> Vec<Marker>;
                 fn constraints(&self) -> Range<usize>;
