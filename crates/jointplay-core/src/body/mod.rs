@@ -260,6 +260,20 @@ pub trait BodyModel {
     fn add_wrench(&self, at: MarkerFrames<'_>, marker: &SpatialMarker, point: Vec3, wrench: &Wrench, out: &mut [f64]);
 }
 
+/// Calls `method` of a body kind with the planar rigid body, the kind of every
+/// body of a planar rigid model, peeled off first: its code is then inlined at
+/// the call, the other kinds dispatched as usual.
+macro_rules! planar_first {
+    ($kind:expr, $method:ident($($arg:expr),*)) => {
+        match $kind {
+            $crate::body::BodyKind::PlanarRigid(body) => body.$method($($arg),*),
+            kind => kind.$method($($arg),*),
+        }
+    };
+}
+
+pub(crate) use planar_first;
+
 /// The list of body kinds: defines [`BodyKind`] with one variant per kind and
 /// its [`BodyModel`], forwarding every method to the kind's own.
 macro_rules! bodies {

@@ -108,7 +108,7 @@ impl ConstraintRows<'_> {
         let values = self.pattern.slot_values(self.row + r, slot);
         if !values.is_empty() {
             let kind = &self.bodies[marker.body.0 - 1].kind;
-            kind.add_marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, along, &mut self.jacobian[values]);
+            crate::body::planar_first!(kind, add_marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, along, &mut self.jacobian[values]));
         }
     }
 
@@ -123,7 +123,7 @@ impl ConstraintRows<'_> {
         // (a later row's blocks sit after an earlier row's)
         let (head, tail) = self.jacobian.split_at_mut(y.start);
         let (jx, jy) = (&mut head[x], &mut tail[..y.end - y.start]);
-        self.bodies[marker.body.0 - 1].kind.marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, scale, jx, jy);
+        crate::body::planar_first!(&self.bodies[marker.body.0 - 1].kind, marker_jacobian(&frames[marker.body.0], &frames[marker.frame], marker, scale, jx, jy));
     }
 
     /// Adds `scale d(omega)/d(v)` of `marker`'s frame to row `row + r`, block `slot`.
@@ -131,7 +131,7 @@ impl ConstraintRows<'_> {
     pub fn add_angle_jacobian(&mut self, r: usize, slot: usize, marker: &Marker, scale: f64) {
         let values = self.pattern.slot_values(self.row + r, slot);
         if !values.is_empty() {
-            self.bodies[marker.body.0 - 1].kind.add_marker_angle_jacobian(marker, scale, &mut self.jacobian[values]);
+            crate::body::planar_first!(&self.bodies[marker.body.0 - 1].kind, add_marker_angle_jacobian(marker, scale, &mut self.jacobian[values]));
         }
     }
 
@@ -141,7 +141,7 @@ impl ConstraintRows<'_> {
         if marker.body.is_ground() {
             return Vec2::zeros();
         }
-        self.bodies[marker.body.0 - 1].kind.marker_bias_acceleration(&frames[marker.body.0], &frames[marker.frame], marker)
+        crate::body::planar_first!(&self.bodies[marker.body.0 - 1].kind, marker_bias_acceleration(&frames[marker.body.0], &frames[marker.frame], marker))
     }
 
     /// Adds `along . d(v_P)/d(v)` of the spatial `marker`'s point to row `row + r`, block `slot`.
@@ -178,7 +178,7 @@ impl ConstraintRows<'_> {
         if marker.body.is_ground() {
             return 0.0;
         }
-        self.bodies[marker.body.0 - 1].kind.marker_bias_angular_acceleration(&frames[marker.frame], marker)
+        crate::body::planar_first!(&self.bodies[marker.body.0 - 1].kind, marker_bias_angular_acceleration(&frames[marker.frame], marker))
     }
 }
 

@@ -46,7 +46,7 @@ pub enum Stabilization {
 pub fn update_frames(model: &Model, q: &[f64], v: &[f64], frames: &mut [Frame], spatial: &mut [SpatialFrame]) {
     let (bodies, sections) = frames[1..].split_at_mut(model.bodies.len());
     for ((body, address), frame) in model.bodies.iter().zip(&model.layout.bodies).zip(bodies) {
-        body.kind.update_frame(&q[address.q_range()], &v[address.v_range()], frame);
+        crate::body::planar_first!(&body.kind, update_frame(&q[address.q_range()], &v[address.v_range()], frame));
     }
     for (section, frame) in model.sections.iter().zip(sections) {
         *frame = model.section_frame(section, q, v, frame);

@@ -34,7 +34,7 @@ impl<'a> GeneralisedForces<'a> {
     pub fn add_point_force(&mut self, marker: &Marker, frame: &Frame, p: Vec2, f: Vec2) {
         if let Some(address) = self.layout.body(marker.body) {
             let body = &self.frames.planar[marker.body.0];
-            self.bodies[marker.body.0 - 1].kind.add_point_force(body, frame, marker, p, f, &mut self.values[address.v_range()]);
+            crate::body::planar_first!(&self.bodies[marker.body.0 - 1].kind, add_point_force(body, frame, marker, p, f, &mut self.values[address.v_range()]));
         }
     }
 
@@ -53,7 +53,7 @@ impl<'a> GeneralisedForces<'a> {
     #[inline]
     pub fn add_moment(&mut self, marker: &Marker, m: f64) {
         if let Some(address) = self.layout.body(marker.body) {
-            self.bodies[marker.body.0 - 1].kind.add_moment(marker, m, &mut self.values[address.v_range()]);
+            crate::body::planar_first!(&self.bodies[marker.body.0 - 1].kind, add_moment(marker, m, &mut self.values[address.v_range()]));
         }
     }
 
