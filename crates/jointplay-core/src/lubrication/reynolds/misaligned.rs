@@ -6,11 +6,13 @@
 //! `tau` the misalignment [m/m], the rate at which the journal axis moves
 //! away from the bore axis along z. The film is
 //! `h(theta, z) = c - e(z) . u(theta)`, its rate
-//! `dh/dt = -(e0_dot + z tau_dot) . u(theta)` (Vijayaraghavan and Keith 1990,
-//! "Analysis of a finite grooved misaligned journal bearing considering
-//! cavitation and starvation effects", J. Tribol. 112; Jang and Khonsari
+//! `dh/dt = -(e0_dot + z tau_dot) . u(theta)`: the rigid journal's axis is a
+//! straight line, so its offset from the bore axis is linear in z (the film
+//! model of the misaligned-bearing literature reviewed by Jang and Khonsari
 //! 2015, "On the characteristics of misaligned journal bearings",
-//! Lubricants 3, 27-53, eq. for the film of a tilted journal).
+//! Lubricants 3, 27-53). The journal's surface speed is taken around the bore
+//! axis: its axial part, of order `R omega |tau|`, is dropped with the other
+//! terms of order `c / L`.
 //!
 //! A small tilt `(a_x, a_y)` of the journal about the bearing's x and y axes
 //! gives `tau = (a_y, -a_x)`; the tilt as a rotation vector is therefore

@@ -25,13 +25,13 @@ fn with_supply(mut o: ReynoldsOptions) -> ReynoldsOptions {
     o
 }
 
-/// A tilted, spinning, squeezing journal: mid-plane eccentricity 0.3 c, end eccentricities about 0.75 c.
+/// A tilted, spinning, squeezing journal: mid-plane eccentricity ratio 0.32, at the ends 0.67 (z = L/2) and 0.10 (z = -L/2).
 fn tilted() -> MisalignedFilmKinematics {
     let c = geometry().clearance;
     MisalignedFilmKinematics {
         eccentricity: Vector2::new(0.3, 0.1) * c,
         eccentricity_rate: Vector2::new(2e-4, -1e-4),
-        misalignment: Vector2::new(0.04, 0.03) * c / 0.01,
+        misalignment: Vector2::new(0.3, 0.2) * c / 0.01,
         misalignment_rate: Vector2::new(-0.01, 0.02),
         journal_spin: 100.0,
         bearing_spin: -10.0,
@@ -261,4 +261,46 @@ fn oversized_grid_and_contact_at_an_end_are_errors() {
     assert_eq!(s.solve(&k).unwrap_err(), "film thickness <= 0: eccentricity ratio 1 >= 1 at an end of the bearing");
     let bad = MisalignedFilmKinematics { misalignment_rate: Vector2::new(f64::NAN, 0.0), ..k };
     assert!(s.solve(&bad).unwrap_err().starts_with("film kinematics must be finite"));
+}
+
+/// Cost of a cold solve on the default 120 x 16 grid: the half grid (aligned
+/// state) against the full grid (the same state, and tilted), in interleaved
+/// rounds; prints medians [min-max] of wall time and of the ratio per round,
+/// and the sweeps. A measurement, not a check: `cargo test --release -- --ignored --nocapture misaligned_solve_cost`.
+#[test]
+#[ignore]
+fn misaligned_solve_cost() {
+    let o = ReynoldsOptions::default();
+    let aligned = MisalignedFilmKinematics { misalignment: Vector2::zeros(), misalignment_rate: Vector2::zeros(), ..tilted() };
+    let mut half = ReynoldsSolver::new(geometry(), o).unwrap();
+    let mut full = full_solver(o);
+    let (mut t_half, mut t_full_aligned, mut t_full_tilted) = (vec![], vec![], vec![]);
+    let mut sweeps = (0, 0, 0);
+    for _ in 0..15 {
+        for (times, which) in [(&mut t_half, 0), (&mut t_full_aligned, 1), (&mut t_full_tilted, 2)] {
+            half.reset();
+            full.reset();
+            let start = std::time::Instant::now();
+            let n = match which {
+                0 => half.solve(&aligned.mid_plane()).unwrap().iterations,
+                1 => full.solve(&aligned).unwrap().iterations,
+                _ => full.solve(&tilted()).unwrap().iterations,
+            };
+            times.push(start.elapsed().as_secs_f64() * 1e3);
+            match which {
+                0 => sweeps.0 = n,
+                1 => sweeps.1 = n,
+                _ => sweeps.2 = n,
+            }
+        }
+    }
+    let summary = |v: &[f64]| {
+        let mut s = v.to_vec();
+        s.sort_by(f64::total_cmp);
+        format!("{:.3} [{:.3}-{:.3}]", s[s.len() / 2], s[0], s[s.len() - 1])
+    };
+    let ratio = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x / y).collect::<Vec<f64>>();
+    println!("half grid, aligned:   {} ms, {} sweeps", summary(&t_half), sweeps.0);
+    println!("full grid, aligned:   {} ms, {} sweeps, ratio to half {}", summary(&t_full_aligned), sweeps.1, summary(&ratio(&t_full_aligned, &t_half)));
+    println!("full grid, tilted:    {} ms, {} sweeps, ratio to half {}", summary(&t_full_tilted), sweeps.2, summary(&ratio(&t_full_tilted, &t_half)));
 }
