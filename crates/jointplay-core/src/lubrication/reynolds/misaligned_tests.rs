@@ -56,13 +56,17 @@ fn zero_misalignment_takes_the_half_grid_path() {
     assert_eq!(solver.field_shape(), (120, 9));
 }
 
-/// Aligned on the full grid against the half grid, every cavitation model:
+/// Aligned on the full grid against the half grid, every cavitation model,
+/// a feed line and a 4 mm wide groove:
 /// the force agrees to the convergence tolerance and the moment vanishes to it.
 #[test]
 fn aligned_full_grid_matches_the_half_grid() {
     let k = MisalignedFilmKinematics { misalignment: Vector2::zeros(), misalignment_rate: Vector2::zeros(), ..tilted() };
-    for cav in [Cavitation::Gumbel, Cavitation::SwiftStieber, Cavitation::ElrodAdams] {
-        let o = with_supply(options(cav, (72, 16)));
+    let base = |cav| with_supply(options(cav, (72, 16)));
+    let feed_line = ReynoldsOptions { feed_at_thickest_film: true, ..base(Cavitation::SwiftStieber) };
+    let wide_groove = ReynoldsOptions { groove: Some(Groove { supply_pressure: 1e5, width: 0.004 }), ..base(Cavitation::ElrodAdams) };
+    for o in [base(Cavitation::Gumbel), base(Cavitation::SwiftStieber), base(Cavitation::ElrodAdams), feed_line, wide_groove] {
+        let cav = o.cavitation;
         let half = ReynoldsSolver::new(geometry(), o).unwrap().solve(&k.mid_plane()).unwrap();
         let full = full_solver(o).solve(&k).unwrap();
         let f = half.force_on_journal.norm();
