@@ -8,9 +8,13 @@
 //! Field layout: `p[i * n_rows + j]`, `n_rows = n_axial + 1`.
 //!
 //! Scaled equation at node (i, j), multiplied by `c^3 / R^2`:
-//! `[H+ (p_{i+1} - p_i) - H- (p_i - p_{i-1})] / dtheta^2
-//!  + kappa [Hu (p_{j+1} - p_j) - Hd (p_j - p_{j-1})]
-//!  = K [W (H_{i+1/2,j} - H_{i-1/2,j}) / dtheta + 2 Hdot_{ij}]`
+//!
+//! ```text
+//! [H+ (p_{i+1} - p_i) - H- (p_i - p_{i-1})] / dtheta^2
+//!   + kappa [Hu (p_{j+1} - p_j) - Hd (p_j - p_{j-1})]
+//!   = K [W (H_{i+1/2,j} - H_{i-1/2,j}) / dtheta + 2 Hdot_{ij}]
+//! ```
+//!
 //! with `H+-` the cube of `H = h / c` at the faces `i +- 1/2` of row j and
 //! `Hu`, `Hd` its cube at the faces `j +- 1/2` of column i (conservative in
 //! both directions, since `h` varies along z); `kappa`, `K`, `W` as in
