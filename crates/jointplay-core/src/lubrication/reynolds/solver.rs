@@ -17,6 +17,8 @@
 
 use nalgebra::Vector2;
 
+use super::full_length::FullLengthSolver;
+use super::misaligned::{MisalignedFilmKinematics, MisalignedFilmSolution};
 use super::options::{Cavitation, ReynoldsOptions};
 use super::outputs::{self, FilmSolution};
 use super::sweep;
@@ -68,6 +70,8 @@ pub struct ReynoldsSolver {
     full_film: Vec<f64>,
     fill: Vec<f64>,
     kinematics: Option<FilmKinematics>,
+    /// Full-length grid for tilted journals, set up at the first misaligned solve.
+    full_length: Option<Box<FullLengthSolver>>,
 }
 
 impl ReynoldsSolver {
@@ -94,11 +98,12 @@ impl ReynoldsSolver {
             spin_sum: 0.0,
             feed_column: usize::MAX,
         };
-        let relaxation = sor_factor(&stencil);
+        let relaxation = sor_factor(stencil.dtheta, stencil.kappa, stencil.n_half, stencil.j_free > 0);
         let n = n_theta * n_half;
         let mut solver = Self {
             geometry, options, stencil, relaxation,
             pressure: vec![0.0; n], full_film: vec![0.0; n], fill: vec![1.0; n], kinematics: None,
+            full_length: None,
         };
         solver.set_boundary_values();
         Ok(solver)
@@ -121,6 +126,25 @@ impl ReynoldsSolver {
         let iterations = if scale > 0.0 { self.relax(scale)? } else { self.zero_field() };
         self.kinematics = Some(*kinematics);
         Ok(outputs::evaluate(self.parts(), kinematics, iterations))
+    }
+
+    /// Solves for the film of a possibly tilted journal: force and moment.
+    ///
+    /// An aligned state ([`MisalignedFilmKinematics::is_aligned`]) takes
+    /// [`Self::solve`] on the half grid (same result, moment zero); a tilted
+    /// one the [`FullLengthSolver`] over the whole length, set up once at the
+    /// first such call (its only allocation) and warm-started afterwards.
+    pub fn solve_misaligned(&mut self, kinematics: &MisalignedFilmKinematics) -> Result<MisalignedFilmSolution, String> {
+        if kinematics.is_aligned() {
+            return self.solve(&kinematics.mid_plane()).map(|s| MisalignedFilmSolution::from_aligned(&s));
+        }
+        if self.full_length.is_none() {
+            self.full_length = Some(Box::new(FullLengthSolver::new(self.geometry, self.options)?));
+        }
+        match self.full_length.as_deref_mut() {
+            Some(full) => full.solve(kinematics),
+            None => Err("full-length Reynolds grid was not set up".to_string()),
+        }
     }
 
     /// Pressure field [Pa gauge] of the last solve, `p[i * n_half + j]` at
@@ -285,17 +309,19 @@ impl ReynoldsSolver {
 }
 
 /// SOR factor from the constant-coefficient model problem: the slowest mode
-/// is constant around the circumference and lowest along the axis.
-fn sor_factor(s: &Stencil) -> f64 {
-    let a_theta = 2.0 / (s.dtheta * s.dtheta);
-    let a_z = 2.0 * s.kappa;
-    let m = (s.n_half - 1) as f64;
-    let lowest = if s.j_free > 0 { std::f64::consts::PI / m } else { std::f64::consts::PI / (2.0 * m) };
+/// is constant around the circumference and lowest along the axis (the same
+/// on the half grid and on the full grid it mirrors: `n_half` nodes from the
+/// mid-plane to an end, with or without a groove holding the mid-plane).
+pub(super) fn sor_factor(dtheta: f64, kappa: f64, n_half: usize, groove: bool) -> f64 {
+    let a_theta = 2.0 / (dtheta * dtheta);
+    let a_z = 2.0 * kappa;
+    let m = (n_half - 1) as f64;
+    let lowest = if groove { std::f64::consts::PI / m } else { std::f64::consts::PI / (2.0 * m) };
     let rho = (a_theta + a_z * lowest.cos()) / (a_theta + a_z);
     (2.0 / (1.0 + (1.0 - rho * rho).sqrt())).min(1.95)
 }
 
-fn check_geometry(g: &BearingGeometry) -> Result<(), String> {
+pub(super) fn check_geometry(g: &BearingGeometry) -> Result<(), String> {
     for (name, v) in [("radius", g.radius), ("length", g.length), ("clearance", g.clearance), ("viscosity", g.viscosity)] {
         if !(v.is_finite() && v > 0.0) {
             return Err(format!("bearing {name} must be positive and finite, got {v}"));

@@ -16,7 +16,7 @@ use super::solver::Stencil;
 
 /// Neighbours of column `i` on the periodic grid.
 #[inline]
-fn neighbours(i: usize, n: usize) -> (usize, usize) {
+pub(super) fn neighbours(i: usize, n: usize) -> (usize, usize) {
     (if i == 0 { n - 1 } else { i - 1 }, if i + 1 == n { 0 } else { i + 1 })
 }
 
