@@ -388,7 +388,8 @@ impl SectionDistance {
     }
 
     /// Newton on `d(d^2)/dphi = 0` from `start`, safeguarded by bisection of
-    /// the bracket `[low, high]` (slope <= 0 at `low`, >= 0 at `high`), to round-off [rad].
+    /// the bracket `[low, high]` (slope <= 0 at `low`, >= 0 at `high`), to round-off [rad]
+    /// (Press et al., Numerical Recipes, 2nd ed., §9.4, `rtsafe`).
     fn refine(&self, mut low: f64, mut high: f64, start: f64) -> f64 {
         let mut phi = start;
         for _ in 0..MAX_NEWTON_STEPS {

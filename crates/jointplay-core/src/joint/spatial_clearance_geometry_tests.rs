@@ -67,9 +67,10 @@ fn random_pose(rng: &mut Lcg, max_tilt: f64, max_offset: f64, max_axial: f64) ->
 }
 
 /// The largest tilt of a centred journal: R_j / cos(g) + (L/2) tan(g) = R_b,
-/// by bisection (Flores, Ambrósio, Claro, Lankarani, "Spatial revolute joints
-/// with clearances for dynamic analysis of multibody systems", Proc. IMechE K
-/// 220, 2006; derived for the rim circle on the theory page).
+/// by bisection (derived for the rim circle in
+/// `docs/theory/spatial-clearance-geometry.md`; the spatial joint's geometry after
+/// Flores, Ambrósio, Claro, Lankarani, "Spatial revolute joints with clearances
+/// for dynamic analysis of multibody systems", Proc. IMechE K 220, 2006).
 fn largest_tilt(d: &JointDimensions) -> f64 {
     let excess = |g: f64| d.journal_radius / g.cos() + 0.5 * d.bearing_length * g.tan() - d.bore_radius;
     let (mut low, mut high) = (0.0, 0.5);
