@@ -17,6 +17,7 @@ mod lubricated_film;
 mod perpendicular_axes;
 mod point_coincidence;
 mod relative_angle;
+mod spatial_clearance_geometry;
 mod spatial_point_coincidence;
 
 pub use axial_projection::AxialProjection;
@@ -29,6 +30,7 @@ pub use lubricated_film::{FilmEvaluation, FilmModel, Lubrication};
 pub use perpendicular_axes::PerpendicularAxes;
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
+pub use spatial_clearance_geometry::{AxialContact, ContactPoint, JointDimensions, JointGeometry, JointMeasures, JointPose, RadialContact, RelativeMotion};
 pub use spatial_point_coincidence::SpatialPointCoincidence;
 
 use crate::body::BodyModel;
