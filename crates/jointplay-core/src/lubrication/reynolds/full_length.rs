@@ -230,41 +230,19 @@ impl FullLengthSolver {
         hydro.max(self.options.ambient_pressure).max(supply)
     }
 
-    /// Relaxation sweeps of the chosen cavitation model until converged.
+    /// Relaxation sweeps of the chosen cavitation model until converged ([`super::sweep::relax`]).
     fn relax(&mut self, scale: f64) -> Result<usize, String> {
-        let (o, s, w) = (&self.options, &self.stencil, self.relaxation);
-        let mut iterations = 0;
-        loop {
-            iterations += 1;
-            let change = match o.cavitation {
-                Cavitation::Gumbel => full_sweep::sor(s, &mut self.full_film, w, false),
-                Cavitation::SwiftStieber => full_sweep::sor(s, &mut self.pressure, w, true),
-                Cavitation::ElrodAdams => full_sweep::elrod_adams(s, &mut self.pressure, &mut self.fill, w, scale),
-            };
-            let field = if o.cavitation == Cavitation::Gumbel { &self.full_film } else { &self.pressure };
-            let (low, high) = field.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(*v), h.max(*v)));
-            let peak = high - low;
-            if change <= o.tolerance * peak.max(1e-9 * scale) {
-                break;
-            }
-            if !crate::interrupt::keep_going() {
-                self.reset();
-                return Err(crate::interrupt::INTERRUPTED.to_string());
-            }
-            if iterations >= o.max_iterations || !change.is_finite() {
-                self.reset();
-                return Err(format!(
-                    "Reynolds solver did not converge in {iterations} sweeps (relative change {:.3e})",
-                    change / peak.max(1e-300)
-                ));
-            }
+        let (options, stencil, w) = (&self.options, &self.stencil, self.relaxation);
+        let fields = super::sweep::Fields { pressure: &mut self.pressure, full_film: &mut self.full_film, fill: &mut self.fill };
+        let relaxed = super::sweep::relax(options, scale, fields, |f| match options.cavitation {
+            Cavitation::Gumbel => full_sweep::sor(stencil, f.full_film, w, false),
+            Cavitation::SwiftStieber => full_sweep::sor(stencil, f.pressure, w, true),
+            Cavitation::ElrodAdams => full_sweep::elrod_adams(stencil, f.pressure, f.fill, w, scale),
+        });
+        if relaxed.is_err() {
+            self.reset();
         }
-        if o.cavitation == Cavitation::Gumbel {
-            for (p, f) in self.pressure.iter_mut().zip(&self.full_film) {
-                *p = f.max(0.0);
-            }
-        }
-        Ok(iterations)
+        relaxed
     }
 
     /// No motion, no boundary pressure: the field is zero.

@@ -9,7 +9,6 @@
 //!   `T_P = -(1/2) integral e(z) x f(z) dz` (the by-parts identity row by row).
 
 use nalgebra::Vector2;
-use std::f64::consts::PI;
 
 use super::full_length::FullStencil;
 use super::misaligned::{MisalignedFilmKinematics, MisalignedFilmSolution};
@@ -88,28 +87,6 @@ pub fn evaluate(parts: Parts<'_>, k: &MisalignedFilmKinematics, iterations: usiz
 
 /// Largest pressure, its angle (parabola through the three nodes around it) and its axial position.
 fn peak(s: &FullStencil, p: &[f64]) -> (f64, f64, f64) {
-    let nz = s.n_rows;
-    let (mut best, mut at) = (f64::NEG_INFINITY, 0);
-    for (n, v) in p.iter().enumerate() {
-        if *v > best {
-            best = *v;
-            at = n;
-        }
-    }
-    let (i, j) = (at / nz, at % nz);
-    let im = if i == 0 { s.n_theta - 1 } else { i - 1 };
-    let ip = if i + 1 == s.n_theta { 0 } else { i + 1 };
-    let (pm, p0, pp) = (p[im * nz + j], best, p[ip * nz + j]);
-    let curvature = pm - 2.0 * p0 + pp;
-    let (shift, value) = if curvature < 0.0 {
-        let d = 0.5 * (pm - pp) / curvature;
-        (d, p0 - 0.25 * (pm - pp) * d)
-    } else {
-        (0.0, p0)
-    };
-    let mut angle = (i as f64 + shift) * s.dtheta;
-    if angle > PI {
-        angle -= 2.0 * PI;
-    }
+    let (value, angle, j) = super::outputs::peak_on_grid(p, s.n_theta, s.n_rows, s.dtheta);
     (value, angle, s.z(j))
 }

@@ -141,7 +141,14 @@ fn attitude(e: &Vector2<f64>, force: &Vector2<f64>) -> f64 {
 
 /// Largest pressure and its angle, refined by a parabola through the three nodes around it.
 fn peak(s: &Stencil, p: &[f64]) -> (f64, f64) {
-    let nz = s.n_half;
+    let (value, angle, _) = peak_on_grid(p, s.n_theta, s.n_half, s.dtheta);
+    (value, angle)
+}
+
+/// Largest pressure of a field `p[i * n_rows + j]` over `n_theta` columns `dtheta`
+/// apart [rad], its angle in (-pi, pi] refined by the parabola through the three
+/// nodes around it, and its row `j`.
+pub(super) fn peak_on_grid(p: &[f64], n_theta: usize, n_rows: usize, dtheta: f64) -> (f64, f64, usize) {
     let (mut best, mut at) = (f64::NEG_INFINITY, 0);
     for (n, v) in p.iter().enumerate() {
         if *v > best {
@@ -149,10 +156,10 @@ fn peak(s: &Stencil, p: &[f64]) -> (f64, f64) {
             at = n;
         }
     }
-    let (i, j) = (at / nz, at % nz);
-    let im = if i == 0 { s.n_theta - 1 } else { i - 1 };
-    let ip = if i + 1 == s.n_theta { 0 } else { i + 1 };
-    let (pm, p0, pp) = (p[im * nz + j], best, p[ip * nz + j]);
+    let (i, j) = (at / n_rows, at % n_rows);
+    let im = if i == 0 { n_theta - 1 } else { i - 1 };
+    let ip = if i + 1 == n_theta { 0 } else { i + 1 };
+    let (pm, p0, pp) = (p[im * n_rows + j], best, p[ip * n_rows + j]);
     let curvature = pm - 2.0 * p0 + pp;
     let (shift, value) = if curvature < 0.0 {
         let d = 0.5 * (pm - pp) / curvature;
@@ -160,11 +167,11 @@ fn peak(s: &Stencil, p: &[f64]) -> (f64, f64) {
     } else {
         (0.0, p0)
     };
-    let mut angle = (i as f64 + shift) * s.dtheta;
+    let mut angle = (i as f64 + shift) * dtheta;
     if angle > PI {
         angle -= 2.0 * PI;
     }
-    (value, angle)
+    (value, angle, j)
 }
 
 /// Couette divergence plus squeeze rate at full film in column `i`, as a velocity [m/s]:

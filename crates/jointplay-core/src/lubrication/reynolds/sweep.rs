@@ -12,7 +12,50 @@
 //! Each sweep returns the largest change it made (pressure [Pa]; for
 //! Elrod-Adams the fill change counts as `scale` times the change).
 
+use super::options::{Cavitation, ReynoldsOptions};
 use super::solver::Stencil;
+
+/// The fields a relaxation updates: the pressure [Pa], the unprojected
+/// full-film pressure of Gümbel's model [Pa] and the fill fraction [-].
+pub(super) struct Fields<'a> {
+    pub pressure: &'a mut [f64],
+    pub full_film: &'a mut [f64],
+    pub fill: &'a mut [f64],
+}
+
+/// Sweeps of the chosen cavitation model (`sweep` makes one and returns its
+/// largest change) until the change is within `options.tolerance` of the
+/// field's pressure variation (an ambient level does not count; `scale` [Pa]
+/// floors it); Gümbel's field is then clamped at zero. Returns the number of
+/// sweeps; an error when they do not converge within `options.max_iterations`
+/// or the run is cancelled (Ctrl-C stops inside a long solve, not after it),
+/// the fields then left for the caller to reset.
+pub(super) fn relax(options: &ReynoldsOptions, scale: f64, fields: Fields<'_>, mut sweep: impl FnMut(&mut Fields<'_>) -> f64) -> Result<usize, String> {
+    let mut fields = fields;
+    let mut iterations = 0;
+    loop {
+        iterations += 1;
+        let change = sweep(&mut fields);
+        let field: &[f64] = if options.cavitation == Cavitation::Gumbel { fields.full_film } else { fields.pressure };
+        let (low, high) = field.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| (l.min(*v), h.max(*v)));
+        let peak = high - low;
+        if change <= options.tolerance * peak.max(1e-9 * scale) {
+            break;
+        }
+        if !crate::interrupt::keep_going() {
+            return Err(crate::interrupt::INTERRUPTED.to_string());
+        }
+        if iterations >= options.max_iterations || !change.is_finite() {
+            return Err(format!("Reynolds solver did not converge in {iterations} sweeps (relative change {:.3e})", change / peak.max(1e-300)));
+        }
+    }
+    if options.cavitation == Cavitation::Gumbel {
+        for (p, f) in fields.pressure.iter_mut().zip(fields.full_film.iter()) {
+            *p = f.max(0.0);
+        }
+    }
+    Ok(iterations)
+}
 
 /// Neighbours of column `i` on the periodic grid.
 #[inline]
