@@ -12,7 +12,7 @@
 //! `Q` holds gravity, the force elements (springs, loads, clearance contacts
 //! at rest, cylinders) and a flexible body's internal forces; friction and
 //! damping vanish at rest. A cylinder's chambers are closed: its pressures
-//! follow their volumes from the assembled state ([`ForceElement::static_states`]).
+//! follow their volumes from the assembled state ([`crate::element::ElementModel::static_states`]).
 //! Newton with a Jacobian by forward differences in `q` (exact in `lambda`),
 //! each step the least-squares, minimum-norm solution (singular value
 //! decomposition: redundant joints and unloaded directions take no step),
