@@ -117,6 +117,18 @@ def _plain_vector(raw: Any, n: int, what: str, example: str) -> np.ndarray:
     return np.array([_plain(v, f"component {k + 1}") for k, v in enumerate(items)])
 
 
+def _nonzero_vector(raw: dict, key: str, n: int, what: str, example: str, zero: str) -> np.ndarray:
+    """The vector ``raw[key]`` of ``n`` plain numbers, not zero (``zero``: the message if it is); errors located
+    at ``key``."""
+    try:
+        vector = _plain_vector(raw[key], n, what, example)
+    except OrientationError as exc:
+        raise OrientationError(exc.message, key) from None
+    if float(np.linalg.norm(vector)) == 0.0:
+        raise OrientationError(zero, key)
+    return vector
+
+
 # orientations ---------------------------------------------------------------
 
 def _rotation():
@@ -174,13 +186,9 @@ def _form(raw: dict) -> str:
 
 
 def _axis_angle(raw: dict) -> list[float]:
-    try:
-        axis = _plain_vector(raw["axis"], 3, "a direction [x, y, z] of plain numbers", "[0, 0, 1]")
-    except OrientationError as exc:
-        raise OrientationError(exc.message, "axis") from None
+    axis = _nonzero_vector(raw, "axis", 3, "a direction [x, y, z] of plain numbers", "[0, 0, 1]",
+                           "must be a non-zero direction, got [0, 0, 0]")
     norm = float(np.linalg.norm(axis))
-    if norm == 0.0:
-        raise OrientationError("must be a non-zero direction, got [0, 0, 0]", "axis")
     try:
         angle = _quantity(raw["angle"], "angle")
     except OrientationError as exc:
@@ -248,14 +256,9 @@ def check_rotation_matrix(matrix: np.ndarray) -> None:
 
 
 def _quaternion(raw: dict) -> list[float]:
-    try:
-        q = _plain_vector(raw["quaternion"], 4, "four plain numbers [w, x, y, z], scalar first", "[1, 0, 0, 0]")
-    except OrientationError as exc:
-        raise OrientationError(exc.message, "quaternion") from None
+    q = _nonzero_vector(raw, "quaternion", 4, "four plain numbers [w, x, y, z], scalar first", "[1, 0, 0, 0]",
+                        "must not be zero: [w, x, y, z] is normalised, and a zero quaternion has no direction")
     norm = float(np.linalg.norm(q))
-    if norm == 0.0:
-        raise OrientationError("must not be zero: [w, x, y, z] is normalised, and a zero quaternion has no "
-                               "direction", "quaternion")
     if abs(norm - 1.0) <= ROUND_OFF:
         return [float(v) for v in q]  # unit already: kept as written, so that a written model reads back the same
     return [float(v) for v in q / norm]

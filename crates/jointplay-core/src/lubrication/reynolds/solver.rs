@@ -228,10 +228,7 @@ impl ReynoldsSolver {
     /// A pressure scale [Pa] for the convergence test: hydrodynamic, ambient and supply.
     fn pressure_scale(&self, eps: f64) -> f64 {
         let s = &self.stencil;
-        let rate = s.h_rate.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-        let hydro = s.k_scale * (s.spin_sum.abs() * eps + 2.0 * rate) / (1.0 - eps).powi(2);
-        let supply = self.options.groove.map_or(0.0, |g| g.supply_pressure);
-        hydro.max(self.options.ambient_pressure).max(supply)
+        super::sweep::pressure_scale(&self.options, s.k_scale, s.spin_sum, &s.h_rate, eps)
     }
 
     /// Relaxation sweeps of the chosen cavitation model until converged ([`super::sweep::relax`]).

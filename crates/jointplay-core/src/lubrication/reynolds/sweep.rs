@@ -23,6 +23,17 @@ pub(super) struct Fields<'a> {
     pub fill: &'a mut [f64],
 }
 
+/// A pressure scale [Pa] for the convergence test at eccentricity ratio `eps`:
+/// the hydrodynamic scale `K (|W| eps + 2 max|Hdot|) / (1 - eps)^2` from the
+/// stencil's `k_scale`, spin sum `spin_sum` and squeeze rates `h_rate`, or the
+/// ambient or supply pressure when larger.
+pub(super) fn pressure_scale(options: &ReynoldsOptions, k_scale: f64, spin_sum: f64, h_rate: &[f64], eps: f64) -> f64 {
+    let rate = h_rate.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let hydro = k_scale * (spin_sum.abs() * eps + 2.0 * rate) / (1.0 - eps).powi(2);
+    let supply = options.groove.map_or(0.0, |g| g.supply_pressure);
+    hydro.max(options.ambient_pressure).max(supply)
+}
+
 /// Sweeps of the chosen cavitation model (`sweep` makes one and returns its
 /// largest change) until the change is within `options.tolerance` of the
 /// field's pressure variation (an ambient level does not count; `scale` [Pa]
