@@ -110,3 +110,17 @@ def test_a_model_file_round_trips_the_joint():
     assert 'type = "spatial_clearance_revolute"' in text
     rebuilt = loads(text, name="again")
     assert rebuilt.to_spec()["spatial_clearance_joints"] == model.to_spec()["spatial_clearance_joints"]
+
+
+def test_jointplay_run_prints_the_mode_fractions_and_the_results_file_keeps_them(tmp_path):
+    from typer.testing import CliRunner
+
+    from jointplay.cli import app
+
+    path, out = tmp_path / "journal.toml", tmp_path / "journal.nc"
+    path.write_text(to_toml(journal_in_bore()), encoding="utf-8")
+    result = CliRunner().invoke(app, ["run", str(path), "--t-end", "0.05", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "motion modes" in result.output and "axial contact" in result.output
+    saved = jp.open_results(out).summary()["clearance_joints"]["play"]["mode_fractions"]
+    assert sum(saved[m] for m in MODES[:4]) == pytest.approx(1.0, abs=1e-12)
