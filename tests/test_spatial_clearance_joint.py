@@ -124,3 +124,21 @@ def test_jointplay_run_prints_the_mode_fractions_and_the_results_file_keeps_them
     assert "motion modes" in result.output and "axial contact" in result.output
     saved = jp.open_results(out).summary()["clearance_joints"]["play"]["mode_fractions"]
     assert sum(saved[m] for m in MODES[:4]) == pytest.approx(1.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("model", ["hamrock_short", "reynolds_exact"])
+def test_a_lubricated_joint_reports_its_film(model):
+    lubricated = journal_in_bore(lubrication={"model": model, "viscosity": "400 cP", "grid": [24, 8]}
+                                 if model == "reynolds_exact" else {"model": model, "viscosity": "400 cP"})
+    r = lubricated.simulate(t_end=0.005, output_step=1e-4, method="bdf")
+    for quantity in ("film_min", "film_fx", "film_fy", "film_fz", "film_f", "peak_pressure", "film_weight", "film_mode"):
+        assert f"play.{quantity}" in r.channels
+    assert r["play.film_f"].max() > 0 and r["play.film_min"].min() < 5e-4
+    # the dry joint has none of them
+    assert "play.film_f" not in journal_in_bore().simulate(t_end=1e-3).channels
+
+
+def test_a_lubricated_joint_needs_a_known_film_model():
+    with pytest.raises(ModelError) as caught:
+        journal_in_bore(lubrication={"model": "honey", "viscosity": "400 cP"}).check()
+    assert any(p.location == "joints.play.lubrication.model" for p in caught.value.problems), caught.value.problems

@@ -930,6 +930,9 @@ SPATIAL_CLEARANCE_REVOLUTE = Table(
         Param("mode_sliding_speed", "velocity", "sliding speed above which a radial contact is sliding, at or below "
               "it sustained (motion modes)", 5e-5, gt=0, why=_MODE_WHY + ": paper 002's stiction transition speed, "
               "0.05 mm/s, above which friction is kinetic"),
+        Param("lubrication", "table", "lubricant film; `reynolds_exact` solves it over the whole length of a tilted "
+              "journal, the other models hold for aligned axes and see the mid-plane; dry contact still acts",
+              None, of=LUBRICATION, apart=True, default_text="none (a dry joint)"),
     ), tag="type", relations=(
         Relation("clearance", "<", "bore_radius", "the journal's radius, bore_radius - clearance, is positive"),
         Relation("flange_radius", ">", "bore_radius", "the flanges reach over the bearing's end faces"),

@@ -158,6 +158,11 @@ class Builder:
         None when a function of time or a law could not be read."""
         out: dict[str, Any] = {"type": table.name, "name": name} if table.tag == "type" else {"name": name}
         self.relations(table, t, where)
+        if table is p.SPATIAL_CLEARANCE_REVOLUTE:
+            lubrication = self.lubrication(raw.get("lubrication"), join(where, "lubrication"), t.bearing_length, where)
+            if lubrication is False:
+                return None
+            given = {**(given or {}), "lubrication": lubrication}
         for param in table.params:
             if not param.in_spec:
                 continue

@@ -21,6 +21,7 @@ mod spatial_clearance_element;
 mod spatial_clearance_geometry;
 mod spatial_clearance_modes;
 mod spatial_clearance_revolute;
+mod spatial_film;
 mod spatial_point_coincidence;
 
 pub use axial_projection::AxialProjection;
@@ -37,6 +38,7 @@ pub use spatial_clearance_geometry::{AxialContact, ContactPoint, JointDimensions
 pub use spatial_clearance_element::{SpatialClearanceWork, CHANNELS as SPATIAL_CLEARANCE_CHANNELS};
 pub use spatial_clearance_modes::{ModeTally, ModeThresholds, MotionMode, AXIAL_BIN, MODE_BINS, MODE_NAMES};
 pub use spatial_clearance_revolute::{CandidateEvaluation, JointLoad, SpatialClearanceRevolute};
+pub use spatial_film::{misaligned_kinematics, SpatialFilmEvaluation};
 pub use spatial_point_coincidence::SpatialPointCoincidence;
 
 use crate::body::BodyModel;

@@ -9,7 +9,9 @@
 use super::spatial_clearance_geometry::JointPose;
 use super::spatial_clearance_modes::{ModeState, ModeTally, MotionMode};
 use super::spatial_clearance_revolute::{CandidateEvaluation, JointLoad, SpatialClearanceRevolute, CANDIDATES};
-use super::ContactMemory;
+use super::spatial_film::{self, SpatialFilmEvaluation};
+use super::{ContactMemory, Lubrication};
+use crate::lubrication::reynolds::ReynoldsSolver;
 use crate::dynamics::GeneralisedForces;
 use crate::element::{Acceptance, ElementFault, ElementMemory, ElementModel, ElementWork, OutputInfo};
 use crate::kinematics::frames::Frames;
@@ -24,7 +26,7 @@ const DEEP_PENETRATION_FRACTION: f64 = 0.1;
 const TALLY_SLOT: usize = CANDIDATES;
 
 /// Channels: quantity, unit, description, in the order [`SpatialClearanceWork::outputs`] writes them.
-pub const CHANNELS: [OutputInfo; 31] = [
+pub const CHANNELS: [OutputInfo; 39] = [
     ("e_a_x", "m", "journal axis offset from the bore axis at rim A (s = -L/2), bearing x"),
     ("e_a_y", "m", "journal axis offset from the bore axis at rim A (s = -L/2), bearing y"),
     ("e_m_x", "m", "journal axis offset from the bore axis at the bore's middle, bearing x"),
@@ -56,7 +58,18 @@ pub const CHANNELS: [OutputInfo; 31] = [
     ("f", "N", "magnitude of the joint force on the journal"),
     ("mode", "-", "radial motion mode: 0 free, 1 impact, 2 sliding, 3 sustained contact"),
     ("axial_contact", "-", "1 while a flange touches its bearing face, else 0"),
+    ("film_min", "m", "smallest film thickness c - max |e| at the rims (0 in contact)"),
+    ("film_fx", "N", "film force on the journal, global x"),
+    ("film_fy", "N", "film force on the journal, global y"),
+    ("film_fz", "N", "film force on the journal, global z"),
+    ("film_f", "N", "magnitude of the film force on the journal"),
+    ("peak_pressure", "Pa", "peak film pressure (gauge)"),
+    ("film_weight", "-", "share of the film force in the transition to contact"),
+    ("film_mode", "-", "0 hydrodynamic, 1 transition, 2 contact"),
 ];
+
+/// Channels of a dry joint: [`CHANNELS`] without the film's.
+const DRY_CHANNELS: usize = 31;
 
 
 
@@ -75,13 +88,17 @@ pub struct SpatialClearanceWork {
     pub axial_position: f64,
     /// Radial motion mode.
     pub mode: MotionMode,
+    /// The film's evaluation (zero for a dry joint).
+    pub film: SpatialFilmEvaluation,
+    /// The Reynolds solver of a `reynolds_exact` film.
+    pub solver: Option<ReynoldsSolver>,
 }
 
 impl SpatialClearanceWork {
     /// Whether the last evaluation's forces are finite.
     pub fn forces_finite(&self) -> bool {
         let w = &self.load.on_journal;
-        w.force.iter().chain(w.moment.iter()).all(|v| v.is_finite())
+        w.force.iter().chain(w.moment.iter()).chain(self.film.force_on_journal.iter()).all(|v| v.is_finite())
     }
 
     /// Values of all channels ([`CHANNELS`]).
@@ -103,6 +120,14 @@ impl SpatialClearanceWork {
             force.norm(),
             f64::from(self.mode as u8),
             f64::from(u8::from(c[2].penetration > 0.0 || c[3].penetration > 0.0)),
+            self.film.film_min,
+            self.film.force_on_journal.x,
+            self.film.force_on_journal.y,
+            self.film.force_on_journal.z,
+            self.film.force_on_journal.norm(),
+            self.film.peak_pressure,
+            self.film.weight,
+            f64::from(self.film.mode),
         ]
     }
 
@@ -167,7 +192,7 @@ impl SpatialClearanceRevolute {
 
 impl ElementModel for SpatialClearanceRevolute {
     fn channels(&self) -> &'static [OutputInfo] {
-        &CHANNELS
+        if self.lubrication.is_some() { &CHANNELS } else { &CHANNELS[..DRY_CHANNELS] }
     }
 
     fn markers(&self) -> Vec<Marker> {
@@ -194,7 +219,7 @@ impl ElementModel for SpatialClearanceRevolute {
     }
 
     fn new_work(&self) -> ElementWork {
-        ElementWork::SpatialClearance(Box::default())
+        ElementWork::SpatialClearance(Box::new(SpatialClearanceWork { solver: self.lubrication.as_ref().and_then(Lubrication::new_solver), ..Default::default() }))
     }
 
     /// Evaluates the candidates and adds the joint's wrench to both bodies.
@@ -206,6 +231,14 @@ impl ElementModel for SpatialClearanceRevolute {
         if work.candidates.iter().any(|c| c.penetration > 0.0) {
             forces.add_wrench(&self.journal, pose.journal.position, &load.on_journal);
             forces.add_wrench(&self.bearing, pose.bearing.position, &Wrench { force: -load.on_journal.force, moment: load.bearing_moment });
+        }
+        if let Some(lubrication) = &self.lubrication {
+            let length = self.geometry.dimensions().bearing_length;
+            work.film = spatial_film::evaluate(lubrication, &pose, length, work.solver.as_mut(), true).map_err(ElementFault::Film)?;
+            // the film's force and moment about the bore's centre, on the journal; their opposites on the bearing
+            let film = Wrench { force: work.film.force_on_journal, moment: work.film.moment_on_journal };
+            forces.add_wrench(&self.journal, pose.bearing.position, &film);
+            forces.add_wrench(&self.bearing, pose.bearing.position, &Wrench { force: -film.force, moment: -film.moment });
         }
         Ok(())
     }

@@ -77,6 +77,8 @@ pub struct SpatialClearanceRevolute {
     pub max_penetration: f64,
     /// Where the motion modes part.
     pub modes: ModeThresholds,
+    /// Lubricant film, if the joint is lubricated.
+    pub lubrication: Option<super::Lubrication>,
 }
 
 /// One candidate's evaluation.

@@ -30,6 +30,7 @@ fn joint(friction: FrictionLaw, restitution: f64) -> SpatialClearanceRevolute {
         onset_velocity_floor: 1e-4,
         max_penetration: 2.5e-4,
         modes: ModeThresholds { impact_speed: 1e-3, impact_duration: 1e-3, sliding_speed: 5e-5 },
+        lubrication: None,
     }
 }
 

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Deserializer, Serialize};
 
-use super::{ContactSpec, FrictionSpec, FunctionSpec, HydraulicCylinderSpec, MaterialSpec, SpringDamperSpec, StiffnessSpec};
+use super::{ContactSpec, FrictionSpec, FunctionSpec, HydraulicCylinderSpec, LubricationSpec, MaterialSpec, SpringDamperSpec, StiffnessSpec};
 
 /// A 3-vector given as 3 numbers, or as 2 (the third zero: planar descriptions).
 pub fn vector3<'de, D: Deserializer<'de>>(deserializer: D) -> Result<[f64; 3], D::Error> {
@@ -202,6 +202,9 @@ pub struct SpatialClearanceJointSpec {
     pub mode_impact_duration: f64,
     /// Sliding speed above which a radial contact is sliding, at or below it sustained [m/s].
     pub mode_sliding_speed: f64,
+    /// Lubricant film; a dry joint when absent.
+    #[serde(default)]
+    pub lubrication: Option<LubricationSpec>,
 }
 
 /// The kinds of joint with clearance between marker frames.

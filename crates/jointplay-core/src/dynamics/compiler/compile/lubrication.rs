@@ -18,20 +18,33 @@ pub(super) fn build_lubrication(
     loc: &str,
     errors: &mut ModelErrors,
 ) -> Option<Lubrication> {
+    build_film(spec, BearingSize { journal_radius, clearance: c.clearance, length: c.length }, loc, errors)
+}
+
+/// The size of a lubricated bearing: journal radius, radial clearance and length (if given) [m].
+pub(super) struct BearingSize {
+    pub journal_radius: f64,
+    pub clearance: f64,
+    pub length: Option<f64>,
+}
+
+/// The film `spec` of a bearing of `size`, its problems located under `loc.lubrication`.
+pub(super) fn build_film(spec: &LubricationSpec, size: BearingSize, loc: &str, errors: &mut ModelErrors) -> Option<Lubrication> {
+    let BearingSize { journal_radius, clearance, length } = size;
     let loc = format!("{loc}.lubrication");
     ranges::LUBRICATION_VISCOSITY.check_at(spec.viscosity, &loc, errors);
     let reynolds = [(ranges::LUBRICATION_AMBIENT_PRESSURE, Some(spec.reynolds.ambient_pressure)), (ranges::LUBRICATION_GROOVE_SUPPLY_PRESSURE, spec.reynolds.groove_supply_pressure)];
     if !Range::check_given(&reynolds, &format!("{loc}.reynolds"), errors) {
         return None;
     }
-    let length = match c.length {
+    let length = match length {
         Some(l) if l.is_finite() && l > 0.0 => l,
         _ => {
             errors.push(format!("{loc}"), "a lubricated joint needs the bearing length (joints.<name>.length)".to_string());
             return None;
         }
     };
-    let geometry = BearingGeometry { radius: journal_radius, length, clearance: c.clearance, viscosity: spec.viscosity };
+    let geometry = BearingGeometry { radius: journal_radius, length, clearance, viscosity: spec.viscosity };
     let transition = build_transition(&spec.transition, &geometry, &loc, errors)?;
     let model = match spec.model {
         FilmModelSpec::SqueezeFilmShort => FilmModel::SqueezeFilm(SqueezeFilm::new(geometry, SqueezeFilmTheory::ShortBearing)),

@@ -1,6 +1,7 @@
 //! Compiling a spatial revolute joint with radial and axial clearance: its
 //! markers, dimensions, laws and motion-mode thresholds.
 
+use super::lubrication::{build_film, BearingSize};
 use super::laws::{build_bore_stiffness, build_friction, build_normal_force_law, check_materials, effective_modulus, Bore};
 use super::Compiler;
 use crate::element::ElementKind;
@@ -48,7 +49,12 @@ impl<'s> Compiler<'s> {
             let bore = Bore { bore_radius: j.bore_radius, journal_radius: g.dimensions().journal_radius, length: Some(j.bearing_length), bearing: &j.bearing_material, journal: &j.journal_material };
             build_bore_stiffness(&j.stiffness, &bore, loc, &mut self.errors)
         });
-        let (Some(bearing), Some(journal), Some(geometry), Some(stiffness), Some(law), Some(friction)) = (bearing, journal, geometry, stiffness, law, friction) else {
+        let lubrication = match (&j.lubrication, &geometry) {
+            (Some(film), Some(g)) => build_film(film, BearingSize { journal_radius: g.dimensions().journal_radius, clearance: j.clearance, length: Some(j.bearing_length) }, loc, &mut self.errors).map(Some),
+            (Some(_), None) => None,
+            (None, _) => Some(None),
+        };
+        let (Some(bearing), Some(journal), Some(geometry), Some(stiffness), Some(law), Some(friction), Some(lubrication)) = (bearing, journal, geometry, stiffness, law, friction, lubrication) else {
             return;
         };
         if !self.distinct_bodies(loc, bearing.planar(), journal.planar()) {
@@ -69,6 +75,7 @@ impl<'s> Compiler<'s> {
             max_penetration: j.max_penetration.unwrap_or(MAX_PENETRATION_FRACTION_OF_CLEARANCE * geometry.radial_clearance()),
             modes: ModeThresholds { impact_speed: j.mode_impact_speed, impact_duration: j.mode_impact_duration, sliding_speed: j.mode_sliding_speed },
             geometry,
+            lubrication,
         };
         self.push_element(&j.name, ElementKind::SpatialClearanceRevolute(Box::new(joint)), Vec::new());
     }
