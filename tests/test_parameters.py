@@ -86,6 +86,7 @@ LAW_HELPERS = {("contact", name): getattr(laws, name) for name in p.CONTACT_LAWS
 LAW_HELPERS.update({("stiffness", "hertz_cylinder"): laws.hertz_cylinder,
                     ("stiffness", "johnson_line"): laws.johnson_line,
                     ("stiffness", "rogers_andrews"): laws.rogers_andrews,
+                    ("stiffness", "pereira_ramalho_ambrosio"): laws.pereira_ramalho_ambrosio,
                     ("friction", "none"): laws.frictionless, ("friction", "coulomb"): laws.coulomb,
                     ("friction", "ambrosio"): laws.ambrosio, ("friction", "threlfall"): laws.threlfall,
                     ("friction", "stiction"): laws.stiction, ("transition", "switch"): laws.switch_transition,

@@ -70,6 +70,8 @@ hu_guo = _helper(p.CONTACT_LAWS["hu_guo"], "hu_guo", "contact")
 hertz_cylinder = _helper(p.STIFFNESS_LAWS["hertz_cylinder"], "hertz_cylinder", "stiffness")
 johnson_line = _helper(p.STIFFNESS_LAWS["johnson_line"], "johnson_line", "stiffness")
 rogers_andrews = _helper(p.STIFFNESS_LAWS["rogers_andrews"], "rogers_andrews", "stiffness")
+pereira_ramalho_ambrosio = _helper(p.STIFFNESS_LAWS["pereira_ramalho_ambrosio"], "pereira_ramalho_ambrosio",
+                                   "stiffness")
 
 # friction laws -------------------------------------------------------------
 

@@ -319,7 +319,12 @@ STIFFNESS_LAWS = family(
     Table("johnson_line", "Johnson / ESDU line contact of a cylinder in a bore (needs the joint's `length`).",
           tag="law"),
     Table("rogers_andrews", "Rogers-Andrews logarithmic law (needs the joint's `length`).", tag="law"),
+    Table("pereira_ramalho_ambrosio", "Pereira-Ramalho-Ambrosio power law fitted to internal cylinder contact, "
+          "for a radial clearance of 0.005 mm to 10 mm (needs the joint's `length`).", tag="law"),
 )
+
+#: The stiffness laws that need the joint's `length` (the line-contact laws).
+LENGTH_LAWS = ("johnson_line", "rogers_andrews", "pereira_ramalho_ambrosio")
 
 COEFFICIENT = Param("coefficient", "dimensionless", "friction coefficient mu", ge=0,
                     example="a friction coefficient, e.g. 0.01")
@@ -508,8 +513,8 @@ CLEARANCE_REVOLUTE = Table("clearance_revolute", "A revolute joint with radial c
           "`clearance` and `journal_radius`", None, gt=0, default_text="from `journal_radius`"),
     Param("journal_radius", "length", "pin radius R_j, instead of `clearance`", None, gt=0,
           default_text="from `clearance`", in_spec=False),
-    Param("length", "length", "axial length of the bearing; needed by the `johnson_line` and `rogers_andrews` "
-          "stiffness laws and by lubrication", None, gt=0, default_text="none"),
+    Param("length", "length", "axial length of the bearing; needed by the `johnson_line`, `rogers_andrews` and "
+          "`pereira_ramalho_ambrosio` stiffness laws and by lubrication", None, gt=0, default_text="none"),
     Param("bearing_material", "table", "elastic material of the bearing", STEEL, of=MATERIAL,
           why="structural steel, the value the Flores papers use"),
     Param("journal_material", "table", "elastic material of the journal", STEEL, of=MATERIAL,

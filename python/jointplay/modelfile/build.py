@@ -310,7 +310,7 @@ class Builder:
         clearance = self.radial_clearance(where, t)
         contact, stiffness, friction = (self.law(raw, p.CLEARANCE_REVOLUTE[key], where)
                                         for key in ("contact", "stiffness", "friction"))
-        if stiffness is not None and stiffness["law"] in ("johnson_line", "rogers_andrews") and t.length is None:
+        if stiffness is not None and stiffness["law"] in p.LENGTH_LAWS and t.length is None:
             self.problem(join(where, "length"), f"missing required value: the {stiffness['law']} stiffness law "
                                                 "needs the bearing length, e.g. \"40 mm\"")
         if clearance is not None:

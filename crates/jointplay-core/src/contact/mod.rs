@@ -17,6 +17,7 @@ mod johnson_line;
 mod lankarani_nikravesh;
 mod logarithmic;
 mod material;
+mod pereira_ramalho_ambrosio;
 mod rogers_andrews;
 
 #[cfg(test)]
@@ -28,6 +29,7 @@ pub use hertz_cylinder::HertzCylinder;
 pub use johnson_line::JohnsonLine;
 pub use material::Material;
 pub(crate) use material::effective_modulus;
+pub use pereira_ramalho_ambrosio::PereiraRamalhoAmbrosio;
 pub use rogers_andrews::RogersAndrews;
 
 use crate::spec::{ranges, Range};
@@ -144,6 +146,8 @@ pub enum ContactStiffness {
     JohnsonLine(JohnsonLine),
     /// Logarithmic law of Rogers and Andrews (1977), after Dubowsky and Freudenstein.
     RogersAndrews(RogersAndrews),
+    /// Power law fitted by Pereira, Ramalho and Ambrósio (2011) to internal cylinder contact of length L.
+    PereiraRamalhoAmbrosio(PereiraRamalhoAmbrosio),
 }
 
 impl ContactStiffness {
@@ -153,16 +157,18 @@ impl ContactStiffness {
             Self::HertzCylinder(law) => law.elastic_force(penetration),
             Self::JohnsonLine(law) => law.elastic_force(penetration),
             Self::RogersAndrews(law) => law.elastic_force(penetration),
+            Self::PereiraRamalhoAmbrosio(law) => law.elastic_force(penetration),
         }
     }
 
     /// Elastic potential energy stored at penetration δ [J], `∫0^δ F_el dδ`
-    /// (closed form for all three laws). Does not allocate.
+    /// (closed form for every law). Does not allocate.
     pub fn elastic_energy(&self, penetration: f64) -> f64 {
         match self {
             Self::HertzCylinder(law) => law.elastic_energy(penetration),
             Self::JohnsonLine(law) => law.elastic_energy(penetration),
             Self::RogersAndrews(law) => law.elastic_energy(penetration),
+            Self::PereiraRamalhoAmbrosio(law) => law.elastic_energy(penetration),
         }
     }
 }

@@ -60,6 +60,8 @@ pub enum StiffnessSpec {
     JohnsonLine,
     /// Rogers-Andrews logarithmic law (needs the bearing length).
     RogersAndrews,
+    /// Pereira-Ramalho-Ambrósio fitted power law of internal cylinder contact (needs the bearing length).
+    PereiraRamalhoAmbrosio,
 }
 
 /// Friction law.

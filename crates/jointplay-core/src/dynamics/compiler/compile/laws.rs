@@ -1,6 +1,6 @@
 //! Building laws and time functions from their plain-data choices.
 
-use crate::contact::{ContactStiffness, HertzCylinder, JohnsonLine, Material, NormalForceLaw, RogersAndrews};
+use crate::contact::{ContactStiffness, HertzCylinder, JohnsonLine, Material, NormalForceLaw, PereiraRamalhoAmbrosio, RogersAndrews};
 use crate::error::ModelErrors;
 use crate::friction::{AmbrosioCoulomb, FrictionLaw, RegularisedCoulomb, StictionFriction, Threlfall};
 use crate::motion::{ConstantRate, CubicStep, Polynomial, Sine, SpeedRamp, SplineTable, TimeFunction};
@@ -18,7 +18,7 @@ pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: 
     if !(journal_radius > 0.0) {
         return None; // reported with the clearance
     }
-    let needs_length = matches!(c.stiffness, StiffnessSpec::JohnsonLine | StiffnessSpec::RogersAndrews);
+    let needs_length = matches!(c.stiffness, StiffnessSpec::JohnsonLine | StiffnessSpec::RogersAndrews | StiffnessSpec::PereiraRamalhoAmbrosio);
     let length = match c.length {
         Some(l) if ranges::JOINTS_CLEARANCE_REVOLUTE_LENGTH.check_at(l, loc, errors) => Some(l),
         Some(_) => None,
@@ -62,6 +62,7 @@ pub(super) fn build_bore_stiffness(stiffness: &StiffnessSpec, bore: &Bore, loc: 
         StiffnessSpec::HertzCylinderExponent { exponent } => HertzCylinder::new(rb, rj, b, j, exponent).map(ContactStiffness::HertzCylinder),
         StiffnessSpec::JohnsonLine => JohnsonLine::new(rb, rj, bore.length?, b, j).map(ContactStiffness::JohnsonLine),
         StiffnessSpec::RogersAndrews => RogersAndrews::new(rb, rj, bore.length?, b, j).map(ContactStiffness::RogersAndrews),
+        StiffnessSpec::PereiraRamalhoAmbrosio => PereiraRamalhoAmbrosio::new(rb, rj, bore.length?, b, j).map(ContactStiffness::PereiraRamalhoAmbrosio),
     };
     built.map_err(|message| errors.push(format!("{loc}.stiffness"), message)).ok()
 }
