@@ -6,13 +6,13 @@
 //! what the Flores papers use, not a line-contact result.
 //! Theory page: `docs/theory/stiffness-hertz-cylinder.md`.
 
+use super::power_law::PowerLaw;
 use super::material::{effective_modulus, radial_clearance, Material};
 
 /// Power-law contact stiffness `F = K δ^n`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HertzCylinder {
-    stiffness: f64,
-    exponent: f64,
+    law: PowerLaw,
 }
 
 impl HertzCylinder {
@@ -34,37 +34,29 @@ impl HertzCylinder {
         }
         let radius = bearing_radius * journal_radius / clearance;
         let stiffness = 4.0 / 3.0 * effective_modulus(&bearing, &journal) * radius.sqrt();
-        Ok(Self { stiffness, exponent })
+        Ok(Self { law: PowerLaw { stiffness, exponent } })
     }
 
     /// Generalised stiffness K [N/m^n].
     pub fn stiffness(&self) -> f64 {
-        self.stiffness
+        self.law.stiffness
     }
 
     /// Exponent n [-].
     pub fn exponent(&self) -> f64 {
-        self.exponent
+        self.law.exponent
     }
 
     /// Elastic force K δ^n [N] for penetration δ [m] (0 for δ <= 0).
+    #[inline]
     pub fn elastic_force(&self, penetration: f64) -> f64 {
-        if penetration > 0.0 {
-            // the metal-contact exponent 1.5 is by far the most common: sqrt is cheaper than powf
-            let power = if self.exponent == 1.5 { penetration * penetration.sqrt() } else { penetration.powf(self.exponent) };
-            self.stiffness * power
-        } else {
-            0.0
-        }
+        self.law.elastic_force(penetration)
     }
 
     /// Stored energy K δ^(n+1)/(n+1) [J] for penetration δ [m] (0 for δ <= 0).
+    #[inline]
     pub fn elastic_energy(&self, penetration: f64) -> f64 {
-        if penetration > 0.0 {
-            self.elastic_force(penetration) * penetration / (self.exponent + 1.0)
-        } else {
-            0.0
-        }
+        self.law.elastic_energy(penetration)
     }
 }
 

@@ -18,6 +18,7 @@ mod lankarani_nikravesh;
 mod logarithmic;
 mod material;
 mod pereira_ramalho_ambrosio;
+mod power_law;
 mod rogers_andrews;
 
 #[cfg(test)]

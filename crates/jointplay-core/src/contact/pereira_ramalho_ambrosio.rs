@@ -22,6 +22,7 @@
 //! in both (the test checks it), which fixes the units.
 //! Theory page: `docs/theory/stiffness-pereira-ramalho-ambrosio.md`.
 
+use super::power_law::PowerLaw;
 use super::material::{checked_length, effective_modulus, radial_clearance, Material};
 
 /// Millimetres per metre: the fit's length unit.
@@ -58,8 +59,7 @@ fn exponent(clearance_mm: f64) -> f64 {
 /// Pereira-Ramalho-Ambrósio (2011) internal cylinder contact: `F = K δ^n`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PereiraRamalhoAmbrosio {
-    stiffness: f64,
-    exponent: f64,
+    law: PowerLaw,
 }
 
 impl PereiraRamalhoAmbrosio {
@@ -87,35 +87,29 @@ impl PereiraRamalhoAmbrosio {
         let exponent = exponent(clearance_mm);
         // N/mm^n from the fit, then N/m^n: δ_mm^n = (1000 δ_m)^n
         let stiffness_mm = (SLOPE * clearance_mm + OFFSET_MM) / clearance_mm * length_mm * modulus_mpa;
-        Ok(Self { stiffness: stiffness_mm * MM_PER_M.powf(exponent), exponent })
+        Ok(Self { law: PowerLaw { stiffness: stiffness_mm * MM_PER_M.powf(exponent), exponent } })
     }
 
     /// Generalised stiffness K [N/m^n].
     pub fn stiffness(&self) -> f64 {
-        self.stiffness
+        self.law.stiffness
     }
 
     /// Exponent n [-], between 1.15 and 1.45 over the fit's range.
     pub fn exponent(&self) -> f64 {
-        self.exponent
+        self.law.exponent
     }
 
     /// Elastic force K δ^n [N] for penetration δ [m] (0 for δ <= 0).
+    #[inline]
     pub fn elastic_force(&self, penetration: f64) -> f64 {
-        if penetration > 0.0 {
-            self.stiffness * penetration.powf(self.exponent)
-        } else {
-            0.0
-        }
+        self.law.elastic_force(penetration)
     }
 
     /// Stored energy K δ^(n+1)/(n+1) [J] for penetration δ [m] (0 for δ <= 0).
+    #[inline]
     pub fn elastic_energy(&self, penetration: f64) -> f64 {
-        if penetration > 0.0 {
-            self.elastic_force(penetration) * penetration / (self.exponent + 1.0)
-        } else {
-            0.0
-        }
+        self.law.elastic_energy(penetration)
     }
 }
 

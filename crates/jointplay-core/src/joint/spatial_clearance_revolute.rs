@@ -23,7 +23,8 @@
 //! by `delta` (linear over the annulus when the axes are tilted) and carries
 //! the pressure `k_a delta / A`, `A` the annulus' area and `k_a` the axial
 //! stiffness: with aligned axes the flange's force is `k_a delta` through the
-//! axis, with a tilt the load moves to the deep side.
+//! axis, with a tilt the load moves to the deep side. The part that touches
+//! (a full ring, or an arc at each radius) is integrated.
 //!
 //! Every slice and area point carries its normal force from the joint's
 //! normal force law (its own penetration rate, the candidate's latched onset
@@ -35,6 +36,7 @@ use super::spatial_clearance_modes::ModeThresholds;
 use crate::contact::{ContactStiffness, NormalForceLaw};
 use crate::friction::FrictionLaw;
 use crate::kinematics::marker::SpatialMarker;
+use crate::kinematics::planar::Vec2;
 use crate::kinematics::spatial::Vec3;
 use crate::kinematics::wrench::Wrench;
 
@@ -42,9 +44,11 @@ use crate::kinematics::wrench::Wrench;
 const GAUSS_NODES: [f64; 4] = [0.069_431_844_202_973_71, 0.330_009_478_207_571_87, 0.669_990_521_792_428_1, 0.930_568_155_797_026_3];
 /// Gauss-Legendre weights on [0, 1] (4 points) [-].
 const GAUSS_WEIGHTS: [f64; 4] = [0.173_927_422_568_726_93, 0.326_072_577_431_273_07, 0.326_072_577_431_273_07, 0.173_927_422_568_726_93];
-/// Angular samples of a flange's annulus (the trapezoidal rule, exact for the
-/// uniform and the linear parts of an aligned or fully touching ring).
-const RING_ANGLES: usize = 24;
+/// Gauss-Legendre nodes on [-1, 1] (8 points, symmetric: the positive half) for the touching arc of a
+/// flange's annulus [-].
+const ARC_NODES: [f64; 4] = [0.183_434_642_495_649_8, 0.525_532_409_916_329, 0.796_666_477_413_626_7, 0.960_289_856_497_536_3];
+/// Their weights [-].
+const ARC_WEIGHTS: [f64; 4] = [0.362_683_783_378_362, 0.313_706_645_877_887_3, 0.222_381_034_453_374_5, 0.101_228_536_290_376_3];
 /// Largest number of regula falsi steps locating where a half's penetration vanishes.
 const ROOT_ITERATIONS: usize = 40;
 /// Tolerance of that location, as a fraction of the bearing length [-].
@@ -167,18 +171,26 @@ impl SpatialClearanceRevolute {
         pose.relative_motion(&self.deepest(pose, k)).approach_rate.max(self.onset_velocity_floor)
     }
 
+    /// A candidate whose deepest point is `deepest`: when it touches, its evaluation so far (penetration,
+    /// sliding speed there) and the laws its points are evaluated with, the onset velocity `onset` [m/s]
+    /// latched (`None`: the current approach rate); the evaluation of a free candidate otherwise.
+    fn touching<'a>(&'a self, pose: &'a JointPose, deepest: &ContactPoint, onset: Option<f64>) -> Result<(CandidateEvaluation, PointLoad<'a>), CandidateEvaluation> {
+        let out = CandidateEvaluation { penetration: deepest.penetration, ..Default::default() };
+        if deepest.penetration <= 0.0 {
+            return Err(out);
+        }
+        let motion = pose.relative_motion(deepest);
+        let onset_velocity = onset.unwrap_or(motion.approach_rate).max(self.onset_velocity_floor);
+        Ok((CandidateEvaluation { sliding_speed: motion.tangential_velocity.norm(), ..out }, PointLoad { joint: self, pose, onset_velocity }))
+    }
+
     /// Evaluates radial candidate `half` with the onset velocity `onset` [m/s]
     /// (`None`: the current approach rate), adding its forces to `load`.
     pub fn radial(&self, pose: &JointPose, half: usize, onset: Option<f64>, load: &mut JointLoad) -> CandidateEvaluation {
-        let deepest = self.radial_deepest(pose, half);
-        let mut out = CandidateEvaluation { penetration: deepest.penetration, ..Default::default() };
-        if deepest.penetration <= 0.0 {
-            return out;
-        }
-        let motion = pose.relative_motion(&deepest);
-        out.sliding_speed = motion.tangential_velocity.norm();
-        let onset_velocity = onset.unwrap_or(motion.approach_rate).max(self.onset_velocity_floor);
-        let point = PointLoad { joint: self, pose, onset_velocity };
+        let (mut out, point) = match self.touching(pose, &self.radial_deepest(pose, half), onset) {
+            Ok(touching) => touching,
+            Err(free) => return free,
+        };
         let Some((anchor, far)) = self.penetrated_part(pose, half) else { return out };
         let length = self.geometry.dimensions().bearing_length;
         let mut friction = Vec3::zeros();
@@ -250,30 +262,22 @@ impl SpatialClearanceRevolute {
     /// Evaluates flange candidate `side` with the onset velocity `onset` [m/s]
     /// (`None`: the current approach rate), adding its forces to `load`.
     pub fn flange(&self, pose: &JointPose, side: usize, onset: Option<f64>, load: &mut JointLoad) -> CandidateEvaluation {
-        let deepest = self.flange_deepest(pose, side);
-        let mut out = CandidateEvaluation { penetration: deepest.penetration, ..Default::default() };
-        if deepest.penetration <= 0.0 {
-            return out;
-        }
-        let motion = pose.relative_motion(&deepest);
-        out.sliding_speed = motion.tangential_velocity.norm();
-        let onset_velocity = onset.unwrap_or(motion.approach_rate).max(self.onset_velocity_floor);
-        let point = PointLoad { joint: self, pose, onset_velocity };
+        let (mut out, point) = match self.touching(pose, &self.flange_deepest(pose, side), onset) {
+            Ok(touching) => touching,
+            Err(free) => return free,
+        };
         let ring = FlangeRing::new(self, pose, side_sign(side));
         let pressure_per_depth = self.axial_stiffness / ring.area();
         let mut friction = Vec3::zeros();
-        for (r, radial_weight) in ring.radii() {
-            for j in 0..RING_ANGLES {
-                let contact = ring.contact(r, std::f64::consts::TAU * j as f64 / RING_ANGLES as f64);
-                if contact.penetration <= 0.0 {
-                    continue;
-                }
-                let area = radial_weight * r * std::f64::consts::TAU / RING_ANGLES as f64;
-                let (normal, point_friction) = point.apply(&contact, pressure_per_depth * contact.penetration * area, load);
-                out.normal_force += normal;
-                out.elastic_energy += 0.5 * pressure_per_depth * contact.penetration * contact.penetration * area;
-                friction += point_friction;
+        for (r, angle, area) in ring.touching_points() {
+            let contact = ring.contact(r, angle);
+            if contact.penetration <= 0.0 {
+                continue;
             }
+            let (normal, point_friction) = point.apply(&contact, pressure_per_depth * contact.penetration * area, load);
+            out.normal_force += normal;
+            out.elastic_energy += 0.5 * pressure_per_depth * contact.penetration * contact.penetration * area;
+            friction += point_friction;
         }
         out.friction_force = friction.norm();
         out
@@ -330,10 +334,35 @@ impl<'a> FlangeRing<'a> {
         std::f64::consts::PI * (self.outer * self.outer - self.inner * self.inner)
     }
 
-    /// Gauss-Legendre radii over the annulus and their weights [m].
-    fn radii(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
-        let width = self.outer - self.inner;
-        GAUSS_NODES.iter().zip(GAUSS_WEIGHTS).map(move |(u, w)| (self.inner + width * u, width * w))
+    /// The penetration at the annulus' centre [m] and its gradient over the annulus' plane along its
+    /// axes [-] (the penetration is affine there).
+    fn depth_and_slope(&self) -> (f64, Vec2) {
+        let (b, j, side) = (&self.pose.bearing, &self.pose.journal, self.side);
+        let (a, c) = self.axes;
+        let slope = if self.on_flange { -side * Vec2::new(a.dot(&b.axis(2)), c.dot(&b.axis(2))) } else { side * Vec2::new(a.dot(&j.axis(2)), c.dot(&j.axis(2))) };
+        (self.contact(0.0, 0.0).penetration, slope)
+    }
+
+    /// Quadrature points `(r [m], angle [rad], area [m^2])` over the part of the annulus that touches:
+    /// 4 Gauss-Legendre radii from the smallest radius that touches (after `r = r0 + (r1 - r0) u^2`),
+    /// and at each radius 8 Gauss-Legendre angles over its touching arc, `cos(angle - deepest) >=
+    /// -delta_c / (r |g|)` (the whole circle when the ring touches all round). Exact for an aligned ring.
+    fn touching_points(&self) -> impl Iterator<Item = (f64, f64, f64)> + '_ {
+        let (centre_depth, slope) = self.depth_and_slope();
+        let tilt = slope.norm();
+        let deepest = slope.y.atan2(slope.x);
+        // the smallest radius where some of the circle touches
+        let first = if centre_depth >= 0.0 { self.inner } else if tilt > 0.0 { (-centre_depth / tilt).max(self.inner) } else { self.outer };
+        let width = (self.outer - first).max(0.0);
+        GAUSS_NODES.iter().zip(GAUSS_WEIGHTS).flat_map(move |(u, w)| {
+            let r = first + width * u * u;
+            let radial = 2.0 * width * u * w;
+            let half_arc = if tilt > 0.0 { (-centre_depth / (r * tilt)).clamp(-1.0, 1.0).acos() } else { std::f64::consts::PI };
+            ARC_NODES.iter().zip(ARC_WEIGHTS).flat_map(move |(x, v)| {
+                let area = radial * r * half_arc * v;
+                [(r, deepest + half_arc * x, area), (r, deepest - half_arc * x, area)]
+            })
+        })
     }
 
     /// The contact at the annulus point of radius `r` [m] and angle `angle` [rad].

@@ -204,3 +204,43 @@ fn the_load_moves_continuously_from_line_to_rim_contact_as_the_journal_tilts() {
     let expected = static_force(&joint, rim_depth, 0.0) * zone / (2.5 * 2.0 * half_length);
     assert!((previous / expected - 1.0).abs() < 0.02, "at 2 mrad: {previous} N against {expected} N");
 }
+
+#[test]
+fn a_tilted_flange_touching_on_an_arc_carries_the_pressure_of_that_arc() {
+    // flange B (the flange's edge, R_f = 15 mm, against the face's plane) with the journal tilted so that
+    // only an arc near the edge touches: the force and moment equal a brute-force sum of the linear
+    // pressure k_a delta / A over the touching part of the annulus (2000 x 8000 midpoints), from the
+    // edge barely touching (a few micrometres) to a third of the ring
+    let mut joint = joint(FrictionLaw::None, 1.0);
+    joint.normal_force_law = NormalForceLaw::Hertz;
+    let (d, still) = (dimensions(), Vec3::zeros());
+    let flange_offset = 0.5 * (d.bearing_length + d.axial_clearance);
+    for (tilt, shift) in [(0.0128, -1e-5), (0.0128, -3e-5), (5e-3, -2.5e-4)] {
+        let frame = journal_frame(Vec3::new(0.0, 0.0, shift), tilt, still, still);
+        let pose = JointPose::new(&SpatialFrame::GROUND, &frame);
+        let mut load = JointLoad::default();
+        let flange = joint.flange(&pose, 1, Some(1.0), &mut load);
+        // brute force over the flange's annulus, in the journal's frame
+        let (inner, outer) = (d.bore_radius, d.flange_radius);
+        let pressure = joint.axial_stiffness / (std::f64::consts::PI * (outer * outer - inner * inner));
+        let (nr, nphi) = (2000, 8000);
+        let (mut force, mut moment) = (0.0, Vec3::zeros());
+        for i in 0..nr {
+            let r = inner + (outer - inner) * (i as f64 + 0.5) / nr as f64;
+            for k in 0..nphi {
+                let phi = std::f64::consts::TAU * (k as f64 + 0.5) / nphi as f64;
+                let x = frame.position + frame.rotate(Vec3::new(r * phi.cos(), r * phi.sin(), flange_offset));
+                let depth = 0.5 * d.bearing_length - x.z;
+                if depth > 0.0 {
+                    let f = pressure * depth * r * (outer - inner) / nr as f64 * std::f64::consts::TAU / nphi as f64;
+                    force += f;
+                    moment += (x - frame.position).cross(&Vec3::new(0.0, 0.0, f)); // the face pushes flange B out, along +z
+                }
+            }
+        }
+        assert!(force > 0.0);
+        assert!((flange.normal_force / force - 1.0).abs() < 2e-3, "tilt {tilt}, shift {shift}: {} N against {force} N", flange.normal_force);
+        let m = load.on_journal.moment;
+        assert!((m - moment).norm() < 3e-3 * moment.norm(), "tilt {tilt}, shift {shift}: moment {m:?} against {moment:?}");
+    }
+}
