@@ -159,6 +159,12 @@ def mode_fractions(results: Results, joint: str) -> dict[str, float]:
             results.summary()["clearance_joints"][joint]["mode_fractions"].items()}
 
 
+def mode_fraction(results: Results, joint: str, mode: str) -> float:
+    """One of :func:`mode_fractions` (``mode`` one of :data:`FRACTION_KEYS`): a study's response of a run,
+    ``functools.partial(mode_fraction, joint=..., mode=...)``."""
+    return mode_fractions(results, joint)[mode]
+
+
 def mode_fractions_figure(results: Results, joints: Sequence[str] | None = None, note: str = "") -> Figure:
     """Bars of the motion-mode time fractions of each joint in ``joints`` (default: every spatial clearance
     joint of the run), side by side per mode."""
