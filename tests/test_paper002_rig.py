@@ -97,3 +97,100 @@ def test_ideal_pins_share_the_weight_as_the_statics_says():
     assert results["base.fz"][-1] == pytest.approx(-a_z, rel=1e-6)
     assert results["rod_end.fz"][-1] == pytest.approx(-b_z, rel=1e-6)
     assert abs(results["base.fx"][-1]) < 1e-6 * a_z
+
+
+# --- with the clearance joints (the model file as it is) ---------------------------------------------------
+
+SETTLE_END = 0.4  # s: the journals' drop into contact under gravity has died out (restitution 0.9, friction)
+
+
+@pytest.fixture(scope="module")
+def settled():
+    """The rig under gravity alone, run until the journals rest on their bores."""
+    doc = rig.document()
+    doc["forces"]["input"]["force"][0] = "0 N"
+    return from_document(doc).simulate(SETTLE_END, method="dopri5", rtol=1e-7, atol=1e-10, output_step=1e-3)
+
+
+def test_resting_journals_carry_the_weight_shares_of_the_statics(settled):
+    assert settled.error is None
+    a_z, b_z = weight_shares()
+    # the total force on each journal (the ground's pin, the slider's pin), global z: the same shares as the
+    # ideal pins; the journals rest within c = 0.5 mm of the centre, which moves the lever arms by at most
+    # c / L = 5e-4 of the pin distance
+    assert settled["base.fz"][-1] == pytest.approx(-a_z, rel=1e-3)
+    assert settled["rod_end.fz"][-1] == pytest.approx(-b_z, rel=1e-3)
+    for joint in rig.JOINTS:
+        # the bore hangs on its pin: the pin touches the bore's top (bearing y is up, square to the axis)
+        e_x, e_y = settled[f"{joint}.e_m_x"][-1], settled[f"{joint}.e_m_y"][-1]
+        assert np.hypot(e_x, e_y) == pytest.approx(0.5e-3, rel=2e-2)
+        assert e_y > 0.99 * np.hypot(e_x, e_y)
+        assert settled[f"{joint}.mode"][-1] == 3  # sustained contact
+
+
+def test_mode_fractions_are_fractions_of_the_run(settled):
+    for joint in rig.JOINTS:
+        fractions = rig_fractions(settled, joint)
+        assert set(fractions) == {"free", "impact", "sliding", "sustained", "axial"}
+        assert sum(fractions[k] for k in ("free", "impact", "sliding", "sustained")) == pytest.approx(1.0, abs=1e-12)
+        assert 0.0 <= fractions["axial"] <= 1.0
+        # it starts free (centred), drops into contact and ends resting on the bore
+        assert fractions["free"] > 0 and fractions["sustained"] > 0
+
+
+def rig_fractions(results, joint: str) -> dict:
+    from jointplay.plots_spatial_clearance import mode_fractions
+
+    return mode_fractions(results, joint)
+
+
+def test_example_script_runs_short_and_writes_its_figures(tmp_path):
+    results = rig.main(["--t-end", "0.15", "--out", str(tmp_path)])
+    assert results.error is None
+    names = {p.name for p in tmp_path.iterdir()}
+    for joint in rig.JOINTS:
+        assert {f"paper002_rig_trajectories_{joint}.png", f"paper002_rig_point_cloud_{joint}.png"} <= names
+    assert {"paper002_rig_histories.png", "paper002_rig_mode_fractions.png", "paper002_cylinder_rig.nc"} <= names
+    assert all((tmp_path / name).stat().st_size > 10_000 for name in names if name.endswith(".png"))
+
+
+def test_plot_functions_draw_titled_figures_from_a_run(settled, tmp_path):
+    from jointplay import plots
+    from jointplay import plots_spatial_clearance as psc
+
+    assert psc.spatial_clearance_joints(settled) == list(rig.JOINTS)
+    assert psc.radial_clearance(settled, "base") == pytest.approx(0.5e-3)
+    figures = {"trajectories": psc.trajectories_figure(settled, "base", (0.1, SETTLE_END), "a note"),
+               "point_cloud": psc.point_cloud_figure(settled, "rod_end"),
+               "fractions": psc.mode_fractions_figure(settled)}
+    for what, fig in figures.items():
+        title = fig._suptitle.get_text().replace("\n", " ")
+        assert "paper002_cylinder_rig" in title, what
+    assert "journal axis in the bore of base" in figures["trajectories"]._suptitle.get_text().replace("\n", " ")
+    assert "a note" in figures["trajectories"]._suptitle.get_text().replace("\n", " ")
+    # the trajectory panels hold the three sections, the clearance circle in each
+    assert [ax.get_title() for ax in figures["trajectories"].axes] == [s[0] for s in psc.SECTIONS]
+    # the fraction bars: one bar per mode and joint, at the tracked fractions
+    heights = [p.get_height() for p in figures["fractions"].axes[0].patches]
+    expected = [rig_fractions(settled, j)[k] for j in rig.JOINTS for k in psc.FRACTION_KEYS]
+    assert heights == pytest.approx(expected)
+    # jointplay plot draws the trajectories and the point cloud of every spatial clearance joint
+    paths = {p.name for p in plots.standard_figures(settled, tmp_path)}
+    for joint in rig.JOINTS:
+        assert {f"trajectories_{joint}.png", f"point_cloud_{joint}.png"} <= paths
+
+
+def test_study_runs_on_a_two_by_two_table(tmp_path):
+    import paper002_cylinder_study as study
+
+    ds = study.run_study(0.1, forces=(1000.0, 3000.0), frequencies=(10.0, 20.0), clearances=(0.5e-3,))
+    assert ds.sizes["case"] == 4 and list(ds["status"].values) == ["done"] * 4
+    for joint in rig.JOINTS:
+        total = sum(ds[f"{joint}_{mode}"].values for mode in ("free", "impact", "sliding", "sustained"))
+        assert total == pytest.approx(np.ones(4), abs=1e-12)
+    # the paper's series through 3 kN, 10 Hz, 0.5 mm: two cases each for force and frequency, one for clearance
+    assert [len(study.series(ds, f)) for f in ("force", "frequency", "clearance")] == [2, 2, 1]
+    assert len(study.trends(ds)) == 3 * 6
+    paths = study.write_outputs(ds, tmp_path, 0.1)
+    assert all(p.exists() for p in paths)
+    assert "| force | 1 kN | series" in (tmp_path / "paper002_study_trends.md").read_text()
