@@ -1,13 +1,16 @@
 """Paper 002's hydraulic cylinder rig: a cylinder inclined 5 deg between a fixed support and a slider, held
 at both ends by spatial revolute joints with radial and axial clearance, driven by a sine force on the slider.
 
-Paper 002: Yan/Li et al., a hydraulic cylinder with 3D revolute clearance joints (its §2.2, §3, §4). The
+Paper 002: the dynamics of a hydraulic cylinder with 3D revolute clearance joints (its §2.2, §3, §4). The
 model is defined once, in examples/paper002_cylinder_rig.toml, whose header lists what comes from the paper
 and what is CHOSEN (its Tables 1-2 are lost: an XE60D-class middle-arm cylinder, masses from steel volumes,
 the pins' dimensions, the start pressures). Here the file's document is read and varied: the input force's
 amplitude and frequency, the radial and axial clearance of both joints, and the variant with ideal
-revolute joints in place of the clearance joints (``--ideal``), which paper 002 compares with. Nothing here
-is a reproduction of the paper's numbers.
+revolute joints in place of the clearance joints (``--ideal``), which paper 002 compares with, and the
+rod's eye turned about the cylinder's axis (``--eye-clocking DEG``, CHOSEN: a threaded rod eye screwed in a
+little off), which tilts the rod-end journal in its bore: the rig as the file has it is symmetric about its
+plane of motion, so its journals stay aligned and never move along their axes. Nothing here is a
+reproduction of the paper's numbers.
 
 What to look at, as the paper's figures: the journal axis in both bores (ends A, B and middle, on the
 bore's section, coloured by motion mode: Figs. 15-16, 18); the rod's displacement in the barrel z_rod, the
@@ -17,7 +20,7 @@ over the bore's length (Fig. 20); the time fractions of the motion modes (Figs. 
 study of the fractions against force, frequency and clearance: examples/paper002_cylinder_study.py.
 
 Run: python examples/paper002_cylinder_rig.py [--out DIR] [--t-end S] [--force N] [--frequency HZ]
-     [--clearance M] [--ideal]
+     [--clearance M] [--ideal | --eye-clocking DEG]
 (the full run: 10 s, as the paper; --out writes the figures, the NetCDF results and the mode fractions)
 """
 
@@ -46,11 +49,20 @@ CHOSEN_NOTE = "Dimensions CHOSEN (paper 002's tables are lost): not a reproducti
 
 
 def document(*, force: float | None = None, frequency: float | None = None, clearance: float | None = None,
-             axial_clearance: float | None = None, ideal: bool = False) -> dict:
+             axial_clearance: float | None = None, ideal: bool = False, eye_clocking: float = 0.0) -> dict:
     """The model file's document with the input's amplitude ``force`` [N] and ``frequency`` [Hz], the radial
     ``clearance`` and ``axial_clearance`` [m] of both joints changed where given; ``ideal``: both joints
-    ideal revolute joints between the same markers (bore first, pin second)."""
+    ideal revolute joints between the same markers (bore first, pin second); ``eye_clocking`` [deg]: the
+    rod's eye turned by that much about the cylinder's axis, its journal tilted so in the bore at the start
+    (the joints then start where the bodies are, not locked centred and aligned)."""
     doc = copy.deepcopy(read_document(MODEL_FILE))
+    if eye_clocking:
+        if ideal:
+            raise ValueError("an ideal pin cannot hold a clocked eye: its axis would cross the other pin's")
+        axes = doc["bodies"]["rod"]["points"]["pin"]["axes"]
+        axes["angle"] = f"{90.0 + eye_clocking!r} deg"
+        for name in JOINTS:
+            doc["joints"][name]["lock_at_assembly"] = False
     sine = doc["forces"]["input"]["force"][0]
     if force is not None:
         sine["amplitude"] = f"{force!r} N"
@@ -181,8 +193,11 @@ def main(argv: list[str] | None = None) -> jp.Results:
     parser.add_argument("--frequency", type=float, default=None, help="input frequency [Hz] (default 10)")
     parser.add_argument("--clearance", type=float, default=None, help="radial clearance of both joints [m]")
     parser.add_argument("--ideal", action="store_true", help="ideal revolute joints in place of the clearance")
+    parser.add_argument("--eye-clocking", type=float, default=0.0,
+                        help="turn of the rod's eye about the cylinder's axis [deg] (tilts the rod-end journal)")
     args = parser.parse_args(argv)
-    model = build_model(force=args.force, frequency=args.frequency, clearance=args.clearance, ideal=args.ideal)
+    model = build_model(force=args.force, frequency=args.frequency, clearance=args.clearance, ideal=args.ideal,
+                        eye_clocking=args.eye_clocking)
     results = simulate(model, args.t_end)
     print(report(results))
     if args.out is not None:

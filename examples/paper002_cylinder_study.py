@@ -112,9 +112,8 @@ def build_study(t_end: float = T_END, forces=FORCES, frequencies=FREQUENCIES, cl
     factors, rows = [], []
     for name, paths in PATHS.items():
         for path in paths:
-            low, high = min(levels[name]), max(levels[name])
             factors.append({"name": path.split(".")[1] + "_" + name if name == "clearance" else name,
-                            "path": path, "range": [f"{low!r} {UNITS[name]}", f"{high!r} {UNITS[name]}"]})
+                            "path": path, "levels": [f"{v!r} {UNITS[name]}" for v in levels[name]]})
     for force, frequency, clearance in itertools.product(forces, frequencies, clearances):
         rows.append([f"{force!r} N", f"{frequency!r} Hz"] + [f"{clearance!r} m"] * len(PATHS["clearance"]))
     return Study(rig.MODEL_FILE, factors, {"kind": "table", "rows": rows}, responses(), t_end=t_end,
