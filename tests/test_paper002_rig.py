@@ -160,6 +160,7 @@ def test_plot_functions_draw_titled_figures_from_a_run(settled, tmp_path):
 
     assert psc.spatial_clearance_joints(settled) == list(rig.JOINTS)
     assert psc.radial_clearance(settled, "base") == pytest.approx(0.5e-3)
+    assert psc.axial_limits(settled, "rod_end") == pytest.approx((-0.25, 0.25))  # mm, half of 0.5 mm
     figures = {"trajectories": psc.trajectories_figure(settled, "base", (0.1, SETTLE_END), "a note"),
                "point_cloud": psc.point_cloud_figure(settled, "rod_end"),
                "fractions": psc.mode_fractions_figure(settled)}

@@ -65,6 +65,16 @@ def radial_clearance(results: Results, joint: str) -> float | None:
     return None
 
 
+def axial_limits(results: Results, joint: str) -> tuple[float, float] | None:
+    """The axial positions [mm] where a flange touches its face, -+ half the axial clearance (the journal
+    centred between its flanges at 0), from the run's model; None when it does not say."""
+    spec = joint_spec(results, joint)
+    if spec.get("axial_clearance") is None:
+        return None
+    half = 0.5e3 * float(spec["axial_clearance"])
+    return -half, half
+
+
 def window_mask(results: Results, window: tuple[float, float] | None) -> np.ndarray:
     """The samples with time in the closed ``window`` (start, end) [s]; all of them for None."""
     t = results.time
@@ -137,17 +147,20 @@ def point_cloud_figure(results: Results, joint: str, window: tuple[float, float]
     z = results[f"{joint}.axial_position"][pick] * 1e3
     _mode_scatter(ax, z, x, results[f"{joint}.mode"][pick], size=2.0, zs=y)
     c = radial_clearance(results, joint)
-    if c is not None and z.size:
+    ends = axial_limits(results, joint)
+    if ends is not None:
+        ax.set_xlim(min(ends[0], float(z.min(initial=0.0))), max(ends[1], float(z.max(initial=0.0))))
+    if c is not None and ends is not None:
         theta = np.linspace(0.0, 2.0 * np.pi, 73)
-        for at in (float(z.min()), float(z.max())):
+        for at in ends:
             ax.plot(np.full_like(theta, at), c * 1e3 * np.cos(theta), c * 1e3 * np.sin(theta), "k--", lw=0.6)
     ax.set_xlabel(f"{joint}.axial_position [mm]")
     ax.set_ylabel(f"{joint}.e_m_x [mm]")
     ax.set_zlabel(f"{joint}.e_m_y [mm]")
     ax.legend(fontsize=7, loc="upper left", markerscale=3)
     title = (f"{_title(results)}: journal centre in the bore of {joint} over the bore's length, "
-             f"{pick.size} samples ({_window_note(window)}); dashed: clearance circle at the extreme axial "
-             "positions")
+             f"{pick.size} samples ({_window_note(window)}); dashed: clearance circle where a flange touches "
+             "(axial position -+ half the axial clearance)")
     set_titles(fig, f"{title}. {note}" if note else title, [stopped_note(results)])
     return fig
 
