@@ -33,7 +33,7 @@ EVERY_SPATIAL_KEY = ROOT / "tests" / "data" / "spatial" / "every_key.toml"
 
 #: Tables whose entries are named in a file by their table key (`[bodies.crank]`), the core's `name`.
 NAMED = ("bodies", "beams", "modal_bodies", "drivers", "joints.", "forces.", "sensors.", "spatial_bodies", "spatial_joints.",
-         "spatial_forces.")
+         "spatial_forces.", "spatial_clearance_joints")
 
 #: How the front end reshapes a registry table into the core's: a registry key (table id, key) goes to these
 #: (core table, key) pairs; None: the front end reads it and sends what follows from it (not a key of the core).
@@ -86,11 +86,13 @@ HOLDERS = {("model", key) for key in ("bodies", "beams", "modal_bodies", "joints
     ("lubrication", "reynolds"), ("beams", "mesh"), ("beams", "section"), ("structure.beam", "section"),
     # the core's points hold the axes of a spatial model's markers (read by modelfile/spatial.py), and its spatial
     # joints are one table whose kind is a key, where the registry has one table per kind
-    ("point", "axes"), ("spatial_joints", "type")}
+    ("point", "axes"), ("spatial_joints", "type"), ("spatial_clearance_joints", "type"),
+    ("model", "spatial_clearance_joints")}
 
 #: Core tables that are the registry's under another name (the tag of a beam section: ``shape`` in a file).
 RENAMED = {"seal_friction.lugre_seal": "seal_friction",
-           **{f"spatial_joints.{kind}": "spatial_joints" for kind in p.SPATIAL_JOINTS}}
+           **{f"spatial_joints.{kind}": "spatial_joints" for kind in p.SPATIAL_JOINTS
+              if kind not in p.SPATIAL_JOINT_SECTIONS}}
 
 
 def registry_keys() -> dict[str, set[str]]:
@@ -187,6 +189,9 @@ def _sites(node, table_id: str | None = None):
             for entry in value:
                 tag = entry.get("type")
                 yield from _sites(entry, key if tag is None else f"{key}.{tag}")
+        elif isinstance(value, list) and key == "spatial_clearance_joints":  # one kind: no tag in the table's id
+            for entry in value:
+                yield from _sites(entry, key)
         elif isinstance(value, dict):
             yield from _sites(value, _nested_id(key, value, table_id))
 

@@ -230,7 +230,7 @@ def _constant(value):
 EXPECTED = {
     "name": "spatial_every_key", "gravity": [0.0, 0.0, -9.81],
     "ground_points": [_point("O", (0, 0.1, 0.12), R_Y90), _point("S", (0.2, 0, 0), R_Y90),
-                      _point("C", (0, -0.2, 0)), _point("T", (0, -0.2, 0.3))],
+                      _point("C", (0, -0.2, 0)), _point("T", (0, -0.2, 0.3)), _point("P", (0, 0.3, 0))],
     "bodies": [], "beams": [], "joints": [], "forces": [], "sensors": [],
     "drivers": [{"name": "motor", "joint": "crank_pin",
                  "function": {"kind": "constant_rate", "initial": 0.0, "rate": 2 * math.pi}},
@@ -249,11 +249,23 @@ EXPECTED = {
         _body("collar", 0.2, np.diag([1e-5, 1e-5, 1.5e-5]).tolist(), (0, -0.2, 0),
               [_point("C", (0, 0, 0)), _point("T", (0, 0, 0.05))]),
         _body("drifter", 1.0, np.diag([0.01, 0.02, 0.025]).tolist(), (1, 1, 1), []),
+        _body("pin", 0.1, np.diag([2e-5, 2e-5, 1e-5]).tolist(), (0, 0.3, 0), [_point("J", (0, 0, 0))]),
     ],
     "spatial_joints": [{"type": kind, "name": name, "first": first, "second": second} for kind, name, first, second in (
         ("revolute", "crank_pin", "ground.O", "crank.O"), ("spherical", "ball", "crank.A", "rod.A"),
         ("universal", "cardan", "rod.B", "slider.B"), ("translational", "guide", "ground.S", "slider.S"),
         ("fixed", "weld", "slider.W", "weight.W"), ("cylindrical", "sleeve", "ground.C", "collar.C"))],
+    "spatial_clearance_joints": [{
+        "type": "spatial_clearance_revolute", "name": "play", "bearing": "ground.P", "journal": "pin.J",
+        "bore_radius": 0.01, "clearance": 5e-4, "bearing_length": 0.02, "axial_clearance": 4e-4, "flange_radius": 0.015,
+        "face_radius": 0.016, "bearing_material": {"youngs_modulus": 207e9, "poisson_ratio": 0.3},
+        "journal_material": {"youngs_modulus": 200e9, "poisson_ratio": 0.29},
+        "contact": {"law": "lankarani_nikravesh", "restitution": 0.9}, "stiffness": {"law": "johnson_line"},
+        "axial_stiffness": 2e9,
+        "friction": {"law": "stiction", "static_coefficient": 0.15, "kinetic_coefficient": 0.1,
+                     "stiction_velocity": 1e-5, "transition_velocity": 5e-5},
+        "lock_at_assembly": True, "onset_velocity_floor": 1e-4, "max_penetration": 2e-4, "mode_impact_speed": 1e-3,
+        "mode_impact_duration": 1e-3, "mode_sliding_speed": 5e-5}],
     "spatial_forces": [
         # free length left out: the described distance of ground.T (z = 0.3 m) and collar.T (z = 0.05 m)
         {"type": "spring_damper", "name": "spring", "first": "ground.T", "second": "collar.T", "stiffness": 1000.0,
@@ -535,7 +547,7 @@ JOINT = '[joints.j]\ntype = "spherical"\nfirst = "ground.O"\nsecond = "b.A"\n'
       'bodies.b.angle: unknown key; spatial body: allowed: mass, inertia, position, orientation, velocity, '
       "angular_velocity, points, euler_sequence, free"]),
     (HEAD + BODY + JOINT.replace("spherical", "spherica"),
-     ['joints.j.type: must be one of revolute, spherical, cylindrical, translational, universal, fixed, got '
+     ['joints.j.type: must be one of revolute, spherical, cylindrical, translational, universal, fixed, spatial_clearance_revolute, got '
       "'spherica' (did you mean \"spherical\"?)"]),
     (HEAD + BODY + JOINT + '[drivers.d]\njoint = "j"\nfunction = 0\n',
      ["drivers.d.joint: joint 'j' is a spherical joint; only revolute, cylindrical and translational joints can "

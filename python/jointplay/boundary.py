@@ -33,7 +33,8 @@ def spec_tables() -> dict[str, p.Table]:
                 **p.LAWS}
     for family, variants in families.items():
         for table in p.variants(variants):
-            tables[f"{family}.{table.name}"] = table
+            section = p.SPATIAL_JOINT_SECTIONS.get(table.name) if family == "spatial_joints" else None
+            tables[section or f"{family}.{table.name}"] = table
     return tables
 
 

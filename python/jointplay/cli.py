@@ -533,6 +533,12 @@ def print_summary(results) -> None:
                 cells += ["-", "-"]
             t.add_row(*cells)
         print_table(out, t)
+        modes = {name: c["mode_fractions"] for name, c in s["clearance_joints"].items() if c.get("mode_fractions")}
+        if modes:
+            t = table("motion modes (time fractions)", "free", "impact", "sliding", "sustained", "axial contact")
+            for name, f in modes.items():
+                t.add_row(name, *(f"{100 * f[k]:.1f} %" for k in ("free", "impact", "sliding", "sustained", "axial")))
+            print_table(out, t)
     st = s["statistics"]
     t = table("integrator", "value")
     for key in ("accepted_steps", "rejected_steps", "rhs_evaluations", "events", "restarts"):

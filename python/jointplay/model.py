@@ -228,6 +228,9 @@ class Model:
                                     "joints", "cylindrical")
     add_universal = spatial_only(_adds(p.SPATIAL_JOINTS["universal"], "joints", spec_section="spatial_joints"),
                                   "joints", "universal")
+    add_spatial_clearance_revolute = spatial_only(
+        _adds(p.SPATIAL_CLEARANCE_REVOLUTE, "joints", positional=2, spec_section="spatial_clearance_joints"), "joints",
+        "spatial_clearance_revolute")
 
     def add_clearance_revolute(
             self, name: str, bearing: str, journal: str, *, bearing_radius: Quantity, clearance: Quantity,
@@ -337,11 +340,15 @@ class Model:
             if j["type"] == "clearance_revolute" else j
             for j in spec["joints"]
         ]
+        if spec.get("spatial_clearance_joints"):
+            spec["spatial_joints"] = spec.get("spatial_joints", []) + [
+                {"type": "revolute", "name": j["name"], "first": j["bearing"], "second": j["journal"]}
+                for j in spec.pop("spatial_clearance_joints")]
         return Model.from_spec(spec)
 
     def joint(self, name: str) -> dict:
         """The description of a joint, for editing in place (e.g. ``m.joint("B")["clearance"] = 1e-4``)."""
-        joints = self._spec["joints"] + self._spec.get("spatial_joints", [])
+        joints = self._spec["joints"] + self._spec.get("spatial_joints", []) + self._spec.get("spatial_clearance_joints", [])
         for j in joints:
             if j["name"] == name:
                 self._changed()

@@ -880,6 +880,61 @@ SPATIAL_BODY = Table("bodies", "A spatial rigid body; its frame is at its centre
 
 _AXIS_NOTE = " The joint's axis is the common z axis of the two markers' frames (`axes` of the points)."
 
+#: Where the chosen motion-mode thresholds of the spatial clearance joint come from.
+_MODE_WHY = "chosen (docs/theory/spatial-clearance-revolute.md, \"Motion modes\")"
+
+SPATIAL_CLEARANCE_REVOLUTE = Table(
+    "spatial_clearance_revolute", "A revolute joint with radial and axial clearance: a bore of finite length on the "
+    "bearing's body, a journal with two flanges on the journal's body; contact along the bore (by slices) and at the "
+    "flanges, with friction (docs/theory/spatial-clearance-revolute.md). The bearing marker's origin is the bore's "
+    "centre and its z axis the bore axis; the journal marker's origin lies midway between the flanges, its z axis "
+    "along the journal.", (
+        _point("bearing", "bore's centre, z along the bore axis", POINT + " (the bore's centre)"),
+        _point("journal", "journal's centre between its flanges, z along its axis", POINT + " (the journal's centre)"),
+        Param("bore_radius", "length", "bore radius R_b", gt=0, example='the bore radius, a length, e.g. "10 mm"'),
+        Param("clearance", "length", "radial clearance c = R_b - R_j, smaller than `bore_radius`", gt=0,
+              example='the radial clearance, a length, e.g. "0.5 mm"'),
+        Param("bearing_length", "length", "length L of the bore", gt=0, example='the bore length, e.g. "20 mm"'),
+        Param("axial_clearance", "length", "flange spacing minus bearing length", ge=0,
+              example='the axial clearance, a length, e.g. "0.5 mm"'),
+        Param("flange_radius", "length", "outer radius of the journal's flanges, larger than `bore_radius`", gt=0,
+              example='the flanges\' outer radius, e.g. "15 mm"'),
+        Param("face_radius", "length", "outer radius of the bearing's end faces, larger than `bore_radius`", gt=0,
+              example='the end faces\' outer radius, e.g. "16 mm"'),
+        Param("bearing_material", "table", "elastic material of the bearing", STEEL, of=MATERIAL,
+              why="structural steel"),
+        Param("journal_material", "table", "elastic material of the journal", STEEL, of=MATERIAL,
+              why="structural steel"),
+        Param("contact", "law", "normal force law (dissipation) of every contact", of="contact",
+              example='a table such as { law = "lankarani_nikravesh", restitution = 0.9 }'),
+        Param("stiffness", "law", "radial stiffness law of the whole bearing length, applied per unit length along "
+              "the bore", "hertz_cylinder", of="stiffness", why="the law of the planar clearance joint"),
+        Param("axial_stiffness", "stiffness", "stiffness of a whole flange ring pressed on its face, applied per "
+              "unit area of the overlap", None, gt=0,
+              default_text="the flat annular punch's, 2 E* sqrt(A/pi) with A the overlap's area (set by the core)"),
+        Param("friction", "law", "friction law of every contact", "none", of="friction"),
+        Param("lock_at_assembly", "flag", "assembly holds the journal centred and aligned in its bore and gives the "
+              "bodies the velocities of the ideal mechanism; `false` keeps the journal where the bodies' approximate "
+              "positions put it, with their own velocities", True, why="a clearance joint starts as the ideal "
+              "mechanism"),
+        Param("onset_velocity_floor", "velocity", "smallest contact-onset velocity used in the damping term",
+              1e-4, gt=0, why="as the planar clearance joint"),
+        Param("max_penetration", "length", "penetration at which the run stops as unphysical", None, gt=0,
+              default_text="half the radial clearance (set by the core)"),
+        Param("mode_impact_speed", "velocity", "smallest onset approach speed of a radial contact that begins with "
+              "an impact (motion modes)", 1e-3, gt=0, why=_MODE_WHY + ": twenty times paper 002's stiction "
+              "transition speed, 0.05 mm/s"),
+        Param("mode_impact_duration", "time", "how long after such an onset the contact counts as impact and "
+              "rebound (motion modes)", 1e-3, gt=0, why=_MODE_WHY + ": several Hertz contact times of steel parts "
+              "of kilograms, short against an excitation period"),
+        Param("mode_sliding_speed", "velocity", "sliding speed above which a radial contact is sliding, at or below "
+              "it sustained (motion modes)", 5e-5, gt=0, why=_MODE_WHY + ": paper 002's stiction transition speed, "
+              "0.05 mm/s, above which friction is kinetic"),
+    ), tag="type", relations=(
+        Relation("clearance", "<", "bore_radius", "the journal's radius, bore_radius - clearance, is positive"),
+        Relation("flange_radius", ">", "bore_radius", "the flanges reach over the bearing's end faces"),
+        Relation("face_radius", ">", "bore_radius", "the end faces surround the bore"),))
+
 SPATIAL_JOINTS = family(
     Table("revolute", "Ideal hinge: the points coincide and only rotation about the common z axis is free." +
           _AXIS_NOTE, _ENDS, tag="type"),
@@ -892,7 +947,11 @@ SPATIAL_JOINTS = family(
           "marker's y axis are free.", _ENDS, tag="type"),
     Table("fixed", "Ideal weld: the points coincide and the markers' frames keep their relative orientation.", _ENDS,
           tag="type"),
+    SPATIAL_CLEARANCE_REVOLUTE,
 )
+
+#: The spatial joints the core holds in their own section (``spatial_clearance_joints``), not in ``spatial_joints``.
+SPATIAL_JOINT_SECTIONS = {"spatial_clearance_revolute": "spatial_clearance_joints"}
 
 #: Spatial joints a driver can prescribe, with the kind of the coordinate: the rotation about the z axis, or the
 #: displacement of the second marker's origin along the first marker's z axis.

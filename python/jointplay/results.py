@@ -348,7 +348,7 @@ PRESSURE_QUANTITIES = ("p_cap", "p_rod")
 #: What the summary reports per clearance joint from :attr:`Results.extrema`.
 JOINT_KEYS = ("impacts", "contact_time", "contact_fraction", "max_penetration", "max_penetration_time",
               "max_eccentricity_ratio",
-              "min_film", "min_film_time", "peak_film_pressure", "peak_film_pressure_time")
+              "min_film", "min_film_time", "peak_film_pressure", "peak_film_pressure_time", "mode_fractions")
 
 
 def contact_fraction(time: np.ndarray, flag: np.ndarray) -> float:

@@ -2,6 +2,7 @@
 
 use jointplay_core::dynamics::{choose_formulation, ChannelInfo, Formulation, ChannelPeak, Extrema, Model, SimulationOptions, SimulationOutcome, Stabilization};
 use jointplay_core::body::BodyKind;
+use jointplay_core::joint::MODE_NAMES;
 use jointplay_core::modal::FrameReference;
 use jointplay_core::integrate::{JacobianMethod, Method};
 use jointplay_core::SimulationError;
@@ -157,7 +158,8 @@ pub fn outcome(py: Python<'_>, out: &Bound<'_, PyDict>, mut o: SimulationOutcome
 /// "point_accelerations": {"<body>.<point>": {"peak", "time", "unit"}},
 /// "clearance_joints": {name: {"impacts", "contact_time", "contact_fraction",
 /// "max_penetration", "max_penetration_time", "max_eccentricity_ratio", and for lubricated joints "min_film",
-/// "min_film_time", "peak_film_pressure", "peak_film_pressure_time"}}}`.
+/// "min_film_time", "peak_film_pressure", "peak_film_pressure_time", for spatial clearance joints
+/// "mode_fractions": {"free", "impact", "sliding", "sustained", "axial"}}}}`.
 pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>> {
     let finite = |x: f64| if x.is_finite() { Some(x) } else { None };
     let d = PyDict::new(py);
@@ -184,6 +186,13 @@ pub fn extrema<'py>(py: Python<'py>, e: &Extrema) -> PyResult<Bound<'py, PyDict>
         if let Some((pressure, at)) = j.peak_film_pressure {
             entry.set_item("peak_film_pressure", pressure)?;
             entry.set_item("peak_film_pressure_time", finite(at))?;
+        }
+        if let Some(fractions) = j.mode_fractions {
+            let modes = PyDict::new(py);
+            for (mode, fraction) in MODE_NAMES.iter().zip(fractions) {
+                modes.set_item(mode, fraction)?;
+            }
+            entry.set_item("mode_fractions", modes)?;
         }
         joints.set_item(&j.name, entry)?;
     }

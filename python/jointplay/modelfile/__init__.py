@@ -190,9 +190,10 @@ def to_toml(model, header: str | None = None) -> str:
 
 
 _INDEXED = re.compile(r"^(ground_points|bodies|beams|modal_bodies|joints|drivers|forces|sensors|spatial_bodies"
-                      r"|spatial_joints|spatial_forces)\[(\d+)\](?:\.(points|interface)\[(\d+)\])?")
+                      r"|spatial_joints|spatial_forces|spatial_clearance_joints)\[(\d+)\](?:\.(points|interface)\[(\d+)\])?")
 #: The file's section of each section of a spatial model's spec.
-_FILE_SECTION = {"spatial_bodies": "bodies", "spatial_joints": "joints", "spatial_forces": "forces"}
+_FILE_SECTION = {"spatial_bodies": "bodies", "spatial_joints": "joints", "spatial_forces": "forces",
+                 "spatial_clearance_joints": "joints"}
 
 
 def core_location(location: str, spec: dict) -> str:

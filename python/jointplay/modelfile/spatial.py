@@ -22,7 +22,7 @@ from .fields import did_you_mean, join
 from .functions import function_spec
 
 #: The sections of a spatial model's spec, besides those a planar model has (which stay empty).
-SPATIAL_SECTIONS = ("spatial_bodies", "spatial_joints", "spatial_forces")
+SPATIAL_SECTIONS = ("spatial_bodies", "spatial_joints", "spatial_forces", "spatial_clearance_joints")
 
 
 def empty_spec(name: str) -> dict[str, Any]:
@@ -220,7 +220,7 @@ class SpatialSections:
             table = b.validate(schemas[kind], raw, where, hint=f"{kind}{word}: ")
             element = None if table is None else b.element_spec(tables[kind], name, where, table, raw)
             if element is not None:
-                b.spec[spec_key].append(element)
+                b.spec[p.SPATIAL_JOINT_SECTIONS.get(kind, spec_key)].append(element)
 
     def connectivity(self) -> None:
         """A model without bodies, or a body that nothing refers to (unless ``free = true``), is a mistake."""

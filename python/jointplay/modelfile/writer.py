@@ -241,7 +241,8 @@ def _referenced_bodies(spec: dict) -> set[str]:
     """The bodies that a joint or force element refers to (by a point or by name)."""
     out = set()
     for section, tables in (("joints", p.JOINTS), ("forces", p.FORCES), ("spatial_joints", p.SPATIAL_JOINTS),
-                            ("spatial_forces", p.SPATIAL_FORCES)):  # not sensors: they only observe
+                            ("spatial_forces", p.SPATIAL_FORCES),
+                            ("spatial_clearance_joints", p.SPATIAL_JOINTS)):  # not sensors: they only observe
         for entry in spec.get(section, []):
             for param in tables[entry["type"]].params:
                 value = entry.get(param.key)
@@ -265,6 +266,8 @@ def _spatial_blocks(spec: dict) -> list[str]:
     joint_types = {j["name"]: j["type"] for j in spec.get("spatial_joints", [])}
     for j in spec.get("spatial_joints", []):
         blocks.append(_table(f"joints.{_key(j['name'])}", _element(p.SPATIAL_JOINTS[j["type"]], j)))
+    for j in spec.get("spatial_clearance_joints", []):
+        blocks.append(_table(f"joints.{_key(j['name'])}", _element(p.SPATIAL_CLEARANCE_REVOLUTE, j)))
     for d in spec.get("drivers", []):
         kind = p.SPATIAL_DRIVEN.get(joint_types.get(d["joint"], "revolute"), "angle")
         blocks.append(_table(f"drivers.{_key(d['name'])}", {"joint": d["joint"], "function": function(d["function"], kind)}))

@@ -27,6 +27,7 @@ mod implicit_law_checks;
 pub use hertz_cylinder::HertzCylinder;
 pub use johnson_line::JohnsonLine;
 pub use material::Material;
+pub(crate) use material::effective_modulus;
 pub use rogers_andrews::RogersAndrews;
 
 use crate::spec::{ranges, Range};

@@ -132,12 +132,12 @@ fn the_clearance_joint_as_an_element_reports_its_event_memory_and_outputs() {
     let mut memory = [ElementMemory::None];
     element.start_memory(&mut memory);
     assert_eq!(memory, [ElementMemory::Contact(ContactMemory::default())]);
-    let first = element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap();
+    let first = element.accept(&Frames { planar: &frames, spatial: &[] }, 0.0, &mut memory).unwrap();
     assert!(first.memory_changed && first.penetration == g[0] && !first.deep_penetration);
     let [ElementMemory::Contact(latched)] = memory else { panic!("contact memory") };
     assert_eq!(latched.impacts, 1);
     assert_eq!(latched.onset_velocity, Some(joint.onset_velocity(&frames)));
-    assert!(!element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap().memory_changed);
+    assert!(!element.accept(&Frames { planar: &frames, spatial: &[] }, 0.0, &mut memory).unwrap().memory_changed);
     // the outputs read the latched memory through apply
     let mut work = element.new_work();
     let mut q = vec![0.0; model.n_velocities()];
@@ -156,11 +156,11 @@ fn the_clearance_joint_as_an_element_reports_its_event_memory_and_outputs() {
     assert!(matches!(&work, ElementWork::Clearance(w) if w.contact == direct));
     // free again: the onset velocity is cleared, the impacts stay counted
     frames[2] = frame(0.0, -0.3, 0.0, 0.0, 0.0, 0.0);
-    assert!(element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap().memory_changed);
+    assert!(element.accept(&Frames { planar: &frames, spatial: &[] }, 0.0, &mut memory).unwrap().memory_changed);
     assert_eq!(memory, [ElementMemory::Contact(ContactMemory { onset_velocity: None, impacts: 1 })]);
     // a penetration beyond the bound stops with the depth and the bound
     frames[2] = frame(1e-4 + 2.0 * joint.max_penetration, -0.3, 0.0, 0.0, 0.0, 0.0);
-    let fault = element.accept(&Frames { planar: &frames, spatial: &[] }, &mut memory).unwrap_err();
+    let fault = element.accept(&Frames { planar: &frames, spatial: &[] }, 0.0, &mut memory).unwrap_err();
     assert!(matches!(fault, ElementFault::ExcessivePenetration { penetration, bound } if bound == joint.max_penetration && penetration > bound));
 }
 
@@ -172,8 +172,8 @@ fn elements_without_events_or_memory_keep_none() {
     let frames = Frames { planar: &frames, spatial: &[] };
     assert_eq!((idle.n_events(), idle.n_memory_slots(), idle.constraints()), (0, 0, 0..0));
     let mut memory: [ElementMemory; 0] = [];
-    assert_eq!(idle.accept(&frames, &mut memory).unwrap(), Default::default());
-    idle.on_event(&frames, 0, &mut memory);
+    assert_eq!(idle.accept(&frames, 0.0, &mut memory).unwrap(), Default::default());
+    idle.on_event(&frames, 0.0, 0, &mut memory);
 }
 
 #[test]

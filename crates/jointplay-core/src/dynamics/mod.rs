@@ -66,3 +66,5 @@ mod modal_matrices_tests;
 mod spatial_tests;
 #[cfg(test)]
 mod spatial_clearance_tests;
+#[cfg(test)]
+mod spatial_clearance_joint_tests;

@@ -16,7 +16,7 @@ use std::ops::Range;
 
 use crate::dynamics::GeneralisedForces;
 use crate::error::SimulationError;
-use crate::joint::{ClearanceWork, ContactMemory};
+use crate::joint::{ClearanceWork, ContactMemory, ModeTally, SpatialClearanceWork};
 use crate::kinematics::frames::Frames;
 use crate::kinematics::marker::{BodyIndex, Marker};
 use crate::kinematics::planar::Frame;
@@ -53,6 +53,8 @@ pub enum ElementMemory {
     None,
     /// A contact's memory (its latched onset velocity and impact count).
     Contact(ContactMemory),
+    /// The time a joint spent in each motion mode, and its radial contact under way.
+    Modes(ModeTally),
 }
 
 impl ElementMemory {
@@ -60,7 +62,7 @@ impl ElementMemory {
     pub fn impacts(&self) -> usize {
         match self {
             Self::Contact(memory) => memory.impacts,
-            Self::None => 0,
+            Self::Modes(_) | Self::None => 0,
         }
     }
 }
@@ -72,6 +74,8 @@ pub enum ElementWork {
     Outputs(ForceOutput),
     /// A clearance joint's contact and film evaluations and film solver.
     Clearance(Box<ClearanceWork>),
+    /// A spatial clearance joint's candidates, load and measures.
+    SpatialClearance(Box<SpatialClearanceWork>),
 }
 
 impl ElementWork {
@@ -80,7 +84,7 @@ impl ElementWork {
     pub fn outputs_mut(&mut self) -> &mut ForceOutput {
         match self {
             Self::Outputs(output) => output,
-            Self::Clearance(_) => unreachable!("an element's work is made by its own kind"),
+            Self::Clearance(_) | Self::SpatialClearance(_) => unreachable!("an element's work is made by its own kind"),
         }
     }
 
@@ -88,6 +92,7 @@ impl ElementWork {
     pub fn is_finite(&self) -> bool {
         match self {
             Self::Clearance(work) => work.forces_finite(),
+            Self::SpatialClearance(work) => work.forces_finite(),
             Self::Outputs(output) => output.values.iter().all(|v| v.is_finite()),
         }
     }
@@ -220,7 +225,7 @@ pub trait ElementModel {
     fn outputs(&self, which: Range<usize>, _frames: &[Frame], work: &ElementWork, out: &mut [f64]) {
         match work {
             ElementWork::Outputs(output) => out.copy_from_slice(&output.values[which]),
-            ElementWork::Clearance(_) => out.fill(f64::NAN),
+            ElementWork::Clearance(_) | ElementWork::SpatialClearance(_) => out.fill(f64::NAN),
         }
     }
 
@@ -228,7 +233,7 @@ pub trait ElementModel {
     fn output(&self, which: usize, _frames: &[Frame], work: &ElementWork) -> f64 {
         match work {
             ElementWork::Outputs(output) => output.values[which],
-            ElementWork::Clearance(_) => f64::NAN,
+            ElementWork::Clearance(_) | ElementWork::SpatialClearance(_) => f64::NAN,
         }
     }
 
@@ -236,18 +241,18 @@ pub trait ElementModel {
     fn potential_energy(&self, work: &ElementWork) -> f64 {
         match work {
             ElementWork::Outputs(output) => output.potential_energy,
-            ElementWork::Clearance(_) => 0.0,
+            ElementWork::Clearance(_) | ElementWork::SpatialClearance(_) => 0.0,
         }
     }
 
     /// Event functions `g` at `frames` (`rates`: their time derivatives, when asked).
     fn event_functions(&self, _frames: &Frames<'_>, _g: &mut [f64], _rates: Option<&mut [f64]>) {}
 
-    /// Event `event` (of this element's) was located at `frames`: updates its memory slots.
-    fn on_event(&self, _frames: &Frames<'_>, _event: usize, _memory: &mut [ElementMemory]) {}
+    /// Event `event` (of this element's) was located at `frames`, time `t` [s]: updates its memory slots.
+    fn on_event(&self, _frames: &Frames<'_>, _t: f64, _event: usize, _memory: &mut [ElementMemory]) {}
 
-    /// A step ending at `frames` was accepted: updates its memory slots and checks its bounds.
-    fn accept(&self, _frames: &Frames<'_>, _memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault> {
+    /// A step ending at `frames`, time `t` [s], was accepted: updates its memory slots and checks its bounds.
+    fn accept(&self, _frames: &Frames<'_>, _t: f64, _memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault> {
         Ok(Acceptance::default())
     }
 

@@ -8,7 +8,7 @@ use std::ops::Range;
 use super::contract::{Acceptance, ElementFault, ElementMemory, ElementModel, ElementWork, OutputInfo};
 use crate::dynamics::GeneralisedForces;
 use crate::force::{AppliedTorque, Bushing, CylinderActuator, PointForce, PrescribedLoad, RotationalSpringDamper, SpatialSpringDamper, SpringDamper};
-use crate::joint::{ClearanceRevolute, IdealElement};
+use crate::joint::{ClearanceRevolute, IdealElement, SpatialClearanceRevolute};
 use crate::kinematics::frames::Frames;
 use crate::kinematics::marker::{BodyIndex, Marker};
 use crate::kinematics::planar::Frame;
@@ -43,8 +43,8 @@ macro_rules! elements {
                 fn output(&self, which: usize, frames: &[Frame], work: &ElementWork) -> f64;
                 fn potential_energy(&self, work: &ElementWork) -> f64;
                 #[inline] fn event_functions(&self, frames: &Frames<'_>, g: &mut [f64], rates: Option<&mut [f64]>);
-                fn on_event(&self, frames: &Frames<'_>, event: usize, memory: &mut [ElementMemory]);
-                #[inline] fn accept(&self, frames: &Frames<'_>, memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault>;
+                fn on_event(&self, frames: &Frames<'_>, t: f64, event: usize, memory: &mut [ElementMemory]);
+                #[inline] fn accept(&self, frames: &Frames<'_>, t: f64, memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault>;
                 fn check(&self, frames: &Frames<'_>, z: &[f64]) -> Result<(), ElementFault>;
                 fn tolerance_scales(&self, scales: &mut [f64]);
             }
@@ -74,4 +74,6 @@ elements! {
     Bushing(Box<Bushing>),
     /// Prescribed force or torque in space.
     PrescribedLoad(Box<PrescribedLoad>),
+    /// Revolute joint with radial and axial clearance in space, with its four contact candidates' onsets as events.
+    SpatialClearanceRevolute(Box<SpatialClearanceRevolute>),
 }

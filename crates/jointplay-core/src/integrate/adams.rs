@@ -13,7 +13,7 @@
 //! After a (re)start the order ramps from 1 up to [`MAX_ORDER`] as history
 //! accumulates; two rejections in a row drop the history back to order 1.
 
-use super::control::{error_norm, Tolerances, eval, eval_start, starting_step, StartScratch, StepController};
+use super::control::{error_norm, Tolerances, eval, eval_start, eval_trial, starting_step, StartScratch, StepController};
 use super::polynomial::{integral, lagrange_basis, node_product_integral, Poly, MAX_NODES};
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
@@ -169,7 +169,10 @@ impl Stepper for Adams {
         }
         // predict, evaluate, correct
         let cp = self.predict(y, h, k, &nodes);
-        eval(system, stats, t + h, &self.y_pred, &mut self.f_pred)?;
+        if let Some(error) = eval_trial(system, stats, t + h, &self.y_pred, &mut self.f_pred)? {
+            self.rejections_in_a_row += 1;
+            return Ok(Attempt { accepted: false, h_next: self.control.reject_non_finite(h, self.opts.min_step, error)? });
+        }
         let cc = self.correct(y, h, k, &nodes);
         // Milne's device: corrector error = C_C / (C_C - C_P) (y_C - y_P)
         for i in 0..y.len() {

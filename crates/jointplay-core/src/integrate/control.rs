@@ -37,6 +37,34 @@ pub(crate) fn eval_start<S: OdeSystem>(
     Ok(())
 }
 
+/// What a trial evaluation inside a step found: a finite derivative, or a
+/// non-finite one (a step too long for a stiff force: the step is rejected
+/// with the largest shrink, unless that falls below `min_step` [s], where the
+/// error stands).
+pub(crate) fn eval_trial<S: OdeSystem>(
+    system: &mut S,
+    stats: &mut Statistics,
+    t: f64,
+    y: &[f64],
+    dydt: &mut [f64],
+) -> Result<Option<SimulationError>, SimulationError> {
+    match eval(system, stats, t, y, dydt) {
+        Ok(()) if dydt.iter().all(|v| v.is_finite()) => Ok(None),
+        Ok(()) => Ok(Some(SimulationError::NonFinite { time: t, element: "state derivative".to_string() })),
+        Err(error @ SimulationError::NonFinite { .. }) => Ok(Some(error)),
+        Err(error) => Err(error),
+    }
+}
+
+impl StepController {
+    /// The rejection of a step `h` [s] whose trial evaluation was not finite (`error`), with the
+    /// largest shrink; the error itself when the smaller step would fall below `min_step` [s].
+    pub(crate) fn reject_non_finite(&mut self, h: f64, min_step: f64, error: SimulationError) -> Result<f64, SimulationError> {
+        let h_next = self.rejected(h, f64::NAN, 1.0);
+        if h_next < min_step { Err(error) } else { Ok(h_next) }
+    }
+}
+
 /// The tolerances of the error norm: one relative tolerance, an absolute
 /// tolerance per component (the option's atol times the component's scale,
 /// [`OdeSystem::absolute_tolerance_scales`]).

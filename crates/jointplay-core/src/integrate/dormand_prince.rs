@@ -7,7 +7,7 @@
 //! Hairer, Nørsett & Wanner, Solving ODEs I, 2nd ed., Table II.5.2 and
 //! Section II.6 (Shampine 1986), checked against the published `dopri5` code.
 
-use super::control::{error_norm, Tolerances, eval, eval_start, starting_step, StartScratch, StepController};
+use super::control::{error_norm, Tolerances, eval_start, eval_trial, starting_step, StartScratch, StepController};
 use super::{Attempt, IntegratorOptions, OdeSystem, Statistics, Stepper};
 use crate::error::SimulationError;
 
@@ -113,7 +113,7 @@ impl DormandPrince {
         h: f64,
         s: usize,
         a: &[f64],
-    ) -> Result<(), SimulationError> {
+    ) -> Result<Option<SimulationError>, SimulationError> {
         for i in 0..y.len() {
             let mut acc = 0.0;
             for (j, aj) in a.iter().enumerate() {
@@ -122,7 +122,12 @@ impl DormandPrince {
             self.y_stage[i] = y[i] + h * acc;
         }
         let (_, rest) = self.k.split_at_mut(s);
-        eval(system, stats, t, &self.y_stage, &mut rest[0])
+        eval_trial(system, stats, t, &self.y_stage, &mut rest[0])
+    }
+
+    /// A step `h` rejected for a non-finite trial evaluation (`error` stands below `min_step`).
+    fn rejected_non_finite(&mut self, h: f64, error: SimulationError) -> Result<Attempt, SimulationError> {
+        Ok(Attempt { accepted: false, h_next: self.control.reject_non_finite(h, self.opts.min_step, error)? })
     }
 
     /// Keeps the start (t, y) and the step h of an accepted step for its dense output.
@@ -167,11 +172,13 @@ impl Stepper for DormandPrince {
     ) -> Result<Attempt, SimulationError> {
         self.dense_formable = false;
         // stages 2..6, then the 5th-order solution and its derivative (FSAL)
-        self.stage(system, stats, t + C2 * h, y, h, 1, &[A21])?;
-        self.stage(system, stats, t + C3 * h, y, h, 2, &[A31, A32])?;
-        self.stage(system, stats, t + C4 * h, y, h, 3, &[A41, A42, A43])?;
-        self.stage(system, stats, t + C5 * h, y, h, 4, &[A51, A52, A53, A54])?;
-        self.stage(system, stats, t + h, y, h, 5, &[A61, A62, A63, A64, A65])?;
+        let stages: [(f64, &[f64]); 5] =
+            [(C2, &[A21]), (C3, &[A31, A32]), (C4, &[A41, A42, A43]), (C5, &[A51, A52, A53, A54]), (1.0, &[A61, A62, A63, A64, A65])];
+        for (s, (c, a)) in stages.into_iter().enumerate() {
+            if let Some(error) = self.stage(system, stats, t + c * h, y, h, s + 1, a)? {
+                return self.rejected_non_finite(h, error);
+            }
+        }
         let k = &self.k;
         for i in 0..y.len() {
             self.y_new[i] = y[i] + h * (B1 * k[0][i] + B3 * k[2][i] + B4 * k[3][i] + B5 * k[4][i] + B6 * k[5][i]);
@@ -180,7 +187,9 @@ impl Stepper for DormandPrince {
         // reused as the next first stage; a failed projection leaves y_new as it is
         let _ = system.project(t + h, &mut self.y_new);
         let (_, last) = self.k.split_at_mut(6);
-        eval(system, stats, t + h, &self.y_new, &mut last[0])?;
+        if let Some(error) = eval_trial(system, stats, t + h, &self.y_new, &mut last[0])? {
+            return self.rejected_non_finite(h, error);
+        }
         // embedded error estimate, kept in y_stage
         let k = &self.k;
         for i in 0..y.len() {

@@ -101,7 +101,7 @@ fn contact_mut(memory: &mut [ElementMemory]) -> &mut ContactMemory {
 fn clearance_work(work: &ElementWork) -> &ClearanceWork {
     match work {
         ElementWork::Clearance(work) => work,
-        ElementWork::Outputs(_) => unreachable!("a clearance joint's work is its own"),
+        _ => unreachable!("a clearance joint's work is its own"),
     }
 }
 
@@ -110,7 +110,7 @@ fn clearance_work(work: &ElementWork) -> &ClearanceWork {
 fn clearance_work_mut(work: &mut ElementWork) -> &mut ClearanceWork {
     match work {
         ElementWork::Clearance(work) => work,
-        ElementWork::Outputs(_) => unreachable!("a clearance joint's work is its own"),
+        _ => unreachable!("a clearance joint's work is its own"),
     }
 }
 
@@ -186,13 +186,13 @@ impl ElementModel for ClearanceRevolute {
         }
     }
 
-    fn on_event(&self, frames: &Frames<'_>, _event: usize, memory: &mut [ElementMemory]) {
+    fn on_event(&self, frames: &Frames<'_>, _t: f64, _event: usize, memory: &mut [ElementMemory]) {
         self.latch_onset(frames.planar, contact_mut(memory));
     }
 
     /// Latches or clears the onset velocity at an accepted state and checks the
     /// penetration bound.
-    fn accept(&self, frames: &Frames<'_>, memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault> {
+    fn accept(&self, frames: &Frames<'_>, _t: f64, memory: &mut [ElementMemory]) -> Result<Acceptance, ElementFault> {
         self.check_in_plane(frames)?;
         let memory = contact_mut(memory);
         let penetration = self.penetration(frames.planar);

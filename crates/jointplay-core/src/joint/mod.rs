@@ -17,7 +17,10 @@ mod lubricated_film;
 mod perpendicular_axes;
 mod point_coincidence;
 mod relative_angle;
+mod spatial_clearance_element;
 mod spatial_clearance_geometry;
+mod spatial_clearance_modes;
+mod spatial_clearance_revolute;
 mod spatial_point_coincidence;
 
 pub use axial_projection::AxialProjection;
@@ -31,6 +34,9 @@ pub use perpendicular_axes::PerpendicularAxes;
 pub use point_coincidence::PointCoincidence;
 pub use relative_angle::RelativeAngle;
 pub use spatial_clearance_geometry::{AxialContact, ContactPoint, JointDimensions, JointGeometry, JointMeasures, JointPose, RadialContact, RelativeMotion};
+pub use spatial_clearance_element::{SpatialClearanceWork, CHANNELS as SPATIAL_CLEARANCE_CHANNELS};
+pub use spatial_clearance_modes::{ModeTally, ModeThresholds, MotionMode, AXIAL_BIN, MODE_BINS, MODE_NAMES};
+pub use spatial_clearance_revolute::{CandidateEvaluation, JointLoad, SpatialClearanceRevolute};
 pub use spatial_point_coincidence::SpatialPointCoincidence;
 
 use crate::body::BodyModel;

@@ -112,7 +112,7 @@ pub struct JointPose {
     /// Journal marker frame.
     pub journal: SpatialFrame,
     /// `O_J - O_B` in bearing coordinates [m].
-    journal_origin: Vec3,
+    pub(crate) journal_origin: Vec3,
     /// `z_J` in bearing coordinates [-].
     journal_axis: Vec3,
 }
@@ -138,7 +138,7 @@ impl JointPose {
 
     /// The journal-axis point nearest the bore-axis point at `s`, in bearing coordinates [m].
     #[inline]
-    fn axis_foot(&self, s: f64) -> Vec3 {
+    pub(crate) fn axis_foot(&self, s: f64) -> Vec3 {
         let (p, u) = (self.journal_origin, self.journal_axis);
         p + u * (Vec3::new(0.0, 0.0, s) - p).dot(&u)
     }

@@ -15,7 +15,7 @@ use serde_json::{json, Map, Value};
 use super::{
     BeamMaterialSpec, BeamMeshSpec, BeamPointSpec, BeamSectionSpec, BeamSpec, BodySpec, ContactSpec, DriverSpec, ForceSpec, FrictionSpec, FunctionSpec,
     JointSpec, LubricationSpec, MaterialSpec, ModalBodySpec, ModalPointSpec, ModalStructureSpec, ModelSpec, PointSpec, ReynoldsSpec, SealFrictionSpec,
-    SensorSpec, SparseMatrixSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointSpec, SpatialPointSpec, StiffnessSpec, TransitionSpec,
+    SensorSpec, SparseMatrixSpec, SpatialBodySpec, SpatialForceSpec, SpatialClearanceJointSpec, SpatialJointSpec, SpatialPointSpec, StiffnessSpec, TransitionSpec,
 };
 
 /// A key no table has, to make a table list the keys it expects.
@@ -68,6 +68,7 @@ pub fn table_keys() -> Result<Vec<TableKeys>, String> {
     plain::<SpatialPointSpec>("spatial_point", &mut out)?;
     plain::<SpatialJointSpec>("spatial_joints", &mut out)?;
     tagged::<SpatialForceSpec>("spatial_forces", "type", &mut out)?;
+    plain::<SpatialClearanceJointSpec>("spatial_clearance_joints", &mut out)?;
     Ok(out)
 }
 

@@ -26,7 +26,7 @@ pub use laws::{ContactSpec, FrictionSpec, FunctionSpec, MaterialSpec, StiffnessS
 pub use lubrication::{CavitationSpec, FilmModelSpec, LubricationSpec, ReynoldsSpec, TransitionSpec};
 pub use keys::{table_keys, TableKey, TableKeys};
 pub use range::Range;
-pub use spatial::{vector3, LoadFrameSpec, SpatialBodySpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec, SpatialPointSpec};
+pub use spatial::{vector3, LoadFrameSpec, SpatialBodySpec, SpatialClearanceJointSpec, SpatialForceSpec, SpatialJointKind, SpatialJointSpec, SpatialPointSpec};
 pub use modal::{ModalBodySpec, ModalPointSpec, ModalStructureSpec, SparseMatrixSpec, StructureMatricesSpec};
 use serde::{Deserialize, Serialize};
 
@@ -69,6 +69,9 @@ pub struct ModelSpec {
     /// Force elements in space.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub spatial_forces: Option<Vec<SpatialForceSpec>>,
+    /// Revolute joints with radial and axial clearance between marker frames.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spatial_clearance_joints: Option<Vec<SpatialClearanceJointSpec>>,
 }
 
 /// A named point: coordinates in the frame of its body [m], and a frame there.

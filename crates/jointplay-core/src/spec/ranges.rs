@@ -164,6 +164,46 @@ pub const SECTION_RESULTANTS_MASS_PER_LENGTH: Range = Range::new("mass_per_lengt
 /// `section.resultants.rotary_inertia_per_length`: rho I [kg m].
 pub const SECTION_RESULTANTS_ROTARY_INERTIA_PER_LENGTH: Range = Range::new("rotary_inertia_per_length", "be > 0", "kg m").gt(0.0);
 
+/// `spatial_clearance_joints.bore_radius`: bore radius R_b [m].
+pub const SPATIAL_CLEARANCE_JOINTS_BORE_RADIUS: Range = Range::new("bore_radius", "be > 0", "m").gt(0.0);
+
+/// `spatial_clearance_joints.clearance`: radial clearance c = R_b - R_j, smaller than bore_radius [m].
+pub const SPATIAL_CLEARANCE_JOINTS_CLEARANCE: Range = Range::new("clearance", "be > 0", "m").gt(0.0);
+
+/// `spatial_clearance_joints.bearing_length`: length L of the bore [m].
+pub const SPATIAL_CLEARANCE_JOINTS_BEARING_LENGTH: Range = Range::new("bearing_length", "be > 0", "m").gt(0.0);
+
+/// `spatial_clearance_joints.axial_clearance`: flange spacing minus bearing length [m].
+pub const SPATIAL_CLEARANCE_JOINTS_AXIAL_CLEARANCE: Range = Range::new("axial_clearance", "be >= 0", "m").ge(0.0);
+
+/// `spatial_clearance_joints.flange_radius`: outer radius of the journal's flanges, larger than bore_radius [m].
+pub const SPATIAL_CLEARANCE_JOINTS_FLANGE_RADIUS: Range = Range::new("flange_radius", "be > 0", "m").gt(0.0);
+
+/// `spatial_clearance_joints.face_radius`: outer radius of the bearing's end faces, larger than bore_radius [m].
+pub const SPATIAL_CLEARANCE_JOINTS_FACE_RADIUS: Range = Range::new("face_radius", "be > 0", "m").gt(0.0);
+
+/// `spatial_clearance_joints.axial_stiffness`: stiffness of a whole flange ring pressed on its face, applied per
+/// unit area of the overlap [N/m].
+pub const SPATIAL_CLEARANCE_JOINTS_AXIAL_STIFFNESS: Range = Range::new("axial_stiffness", "be > 0", "N/m").gt(0.0);
+
+/// `spatial_clearance_joints.onset_velocity_floor`: smallest contact-onset velocity used in the damping term [m/s].
+pub const SPATIAL_CLEARANCE_JOINTS_ONSET_VELOCITY_FLOOR: Range = Range::new("onset_velocity_floor", "be > 0", "m/s").gt(0.0);
+
+/// `spatial_clearance_joints.max_penetration`: penetration at which the run stops as unphysical [m].
+pub const SPATIAL_CLEARANCE_JOINTS_MAX_PENETRATION: Range = Range::new("max_penetration", "be > 0", "m").gt(0.0);
+
+/// `spatial_clearance_joints.mode_impact_speed`: smallest onset approach speed of a radial contact that begins with
+/// an impact (motion modes) [m/s].
+pub const SPATIAL_CLEARANCE_JOINTS_MODE_IMPACT_SPEED: Range = Range::new("mode_impact_speed", "be > 0", "m/s").gt(0.0);
+
+/// `spatial_clearance_joints.mode_impact_duration`: how long after such an onset the contact counts as impact and
+/// rebound (motion modes) [s].
+pub const SPATIAL_CLEARANCE_JOINTS_MODE_IMPACT_DURATION: Range = Range::new("mode_impact_duration", "be > 0", "s").gt(0.0);
+
+/// `spatial_clearance_joints.mode_sliding_speed`: sliding speed above which a radial contact is sliding, at or
+/// below it sustained (motion modes) [m/s].
+pub const SPATIAL_CLEARANCE_JOINTS_MODE_SLIDING_SPEED: Range = Range::new("mode_sliding_speed", "be > 0", "m/s").gt(0.0);
+
 /// `spatial_forces.spring_damper.stiffness`: spring stiffness [N/m].
 pub const SPATIAL_FORCES_SPRING_DAMPER_STIFFNESS: Range = Range::new("stiffness", "be >= 0", "N/m").ge(0.0);
 

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Deserializer, Serialize};
 
-use super::{FunctionSpec, HydraulicCylinderSpec, SpringDamperSpec};
+use super::{ContactSpec, FrictionSpec, FunctionSpec, HydraulicCylinderSpec, MaterialSpec, SpringDamperSpec, StiffnessSpec};
 
 /// A 3-vector given as 3 numbers, or as 2 (the third zero: planar descriptions).
 pub fn vector3<'de, D: Deserializer<'de>>(deserializer: D) -> Result<[f64; 3], D::Error> {
@@ -146,4 +146,68 @@ pub enum SpatialForceSpec {
     },
     /// Double-acting hydraulic cylinder between two points, along their line.
     HydraulicCylinder(HydraulicCylinderSpec),
+}
+
+/// A revolute joint with radial and axial clearance between two marker
+/// frames: a bore of finite length on the bearing's body, a journal with two
+/// flanges on the journal's body (`docs/theory/spatial-clearance-revolute.md`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SpatialClearanceJointSpec {
+    /// Its kind (the one there is), as a model file names it.
+    #[serde(rename = "type")]
+    pub kind: SpatialClearanceKind,
+    /// Name of the joint.
+    pub name: String,
+    /// Bearing marker `"body.point"`: origin at the bore's centre, z along the bore axis.
+    pub bearing: String,
+    /// Journal marker `"body.point"`: origin midway between the flanges, z along the journal axis.
+    pub journal: String,
+    /// Bore radius R_b [m].
+    pub bore_radius: f64,
+    /// Radial clearance c = R_b - R_j [m].
+    pub clearance: f64,
+    /// Bearing length L [m].
+    pub bearing_length: f64,
+    /// Axial clearance: flange spacing minus bearing length [m].
+    pub axial_clearance: f64,
+    /// Outer radius of the journal's flanges [m].
+    pub flange_radius: f64,
+    /// Outer radius of the bearing's end faces [m].
+    pub face_radius: f64,
+    /// Bearing material.
+    pub bearing_material: MaterialSpec,
+    /// Journal material.
+    pub journal_material: MaterialSpec,
+    /// Normal force law (dissipation) of every contact.
+    pub contact: ContactSpec,
+    /// Radial stiffness law of the whole bearing length.
+    pub stiffness: StiffnessSpec,
+    /// Stiffness of a whole flange ring against its face [N/m]; none: the flat annular punch's.
+    #[serde(default)]
+    pub axial_stiffness: Option<f64>,
+    /// Friction law of every contact.
+    pub friction: FrictionSpec,
+    /// Whether assembly holds the journal centred and aligned in its bore (the state of the ideal
+    /// mechanism); `false` keeps it where the bodies' approximate positions put it, with their own velocities.
+    pub lock_at_assembly: bool,
+    /// Smallest contact-onset velocity used in the damping term [m/s].
+    pub onset_velocity_floor: f64,
+    /// Penetration at which the simulation stops as unphysical [m]; none: half the radial clearance.
+    #[serde(default)]
+    pub max_penetration: Option<f64>,
+    /// Smallest onset approach speed of a radial contact that begins with an impact [m/s].
+    pub mode_impact_speed: f64,
+    /// How long after such an onset the contact counts as impact and rebound [s].
+    pub mode_impact_duration: f64,
+    /// Sliding speed above which a radial contact is sliding, at or below it sustained [m/s].
+    pub mode_sliding_speed: f64,
+}
+
+/// The kinds of joint with clearance between marker frames.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpatialClearanceKind {
+    /// A revolute joint with radial and axial clearance.
+    SpatialClearanceRevolute,
 }

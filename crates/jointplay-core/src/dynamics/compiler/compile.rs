@@ -30,6 +30,8 @@ mod lubrication;
 mod modal;
 #[path = "compile/spatial.rs"]
 mod spatial;
+#[path = "compile/spatial_clearance.rs"]
+mod spatial_clearance;
 
 use laws::{build_friction, build_function, build_normal_force_law, build_stiffness};
 use beams::build_beam;
@@ -55,6 +57,7 @@ fn given_rigid_motion(velocity: Option<[f64; 2]>, angular_velocity: Option<f64>)
 fn is_spatial(spec: &ModelSpec) -> bool {
     let some = |n: Option<usize>| n.is_some_and(|n| n > 0);
     some(spec.spatial_bodies.as_ref().map(Vec::len)) || some(spec.spatial_joints.as_ref().map(Vec::len)) || some(spec.spatial_forces.as_ref().map(Vec::len))
+        || some(spec.spatial_clearance_joints.as_ref().map(Vec::len))
 }
 
 /// Compiles a model description; returns every problem found.
@@ -63,6 +66,7 @@ pub fn compile(spec: &ModelSpec) -> Result<Model, ModelErrors> {
     c.bodies();
     c.joints();
     c.spatial_joints();
+    c.spatial_clearance_joints();
     c.drivers();
     c.forces();
     c.spatial_forces();
@@ -92,6 +96,8 @@ struct Compiler<'s> {
     joint_index: HashMap<&'s str, (IdealKind, usize)>,
     /// Clearance joints to lock at assembly: bearing, journal, initial eccentricity [m], name.
     assembly_locks: Vec<(Marker, Marker, Vec2, String)>,
+    /// Spatial clearance joints held centred and aligned at assembly: bearing, journal, name.
+    spatial_assembly_locks: Vec<(SpatialMarker, SpatialMarker, String)>,
     names: HashMap<String, String>,
 }
 
@@ -136,6 +142,7 @@ impl<'s> Compiler<'s> {
             model,
             joint_index: HashMap::new(),
             assembly_locks: Vec::new(),
+            spatial_assembly_locks: Vec::new(),
             names: HashMap::new(),
         }
     }
@@ -621,6 +628,12 @@ impl<'s> Compiler<'s> {
         for (bearing, journal, eccentricity, name) in std::mem::take(&mut self.assembly_locks) {
             let kind = ConstraintKind::PointCoincidence(PointCoincidence { first: bearing, second: journal, offset: eccentricity });
             self.add_element(&format!("{name} (assembly lock)"), IdealKind::AssemblyLock, bearing, journal, Vec2::zeros(), vec![kind]);
+        }
+        for (bearing, journal, name) in std::mem::take(&mut self.spatial_assembly_locks) {
+            // the journal centred and aligned in its bore: an ideal revolute joint's equations
+            let kinds = spatial::joint_equations(crate::spec::SpatialJointKind::Revolute, bearing, journal);
+            let element = self.add_element(&format!("{name} (assembly lock)"), IdealKind::AssemblyLock, bearing.planar(), journal.planar(), Vec2::zeros(), kinds);
+            self.ideal_mut(element).spatial_markers = Some(Box::new([bearing, journal]));
         }
     }
 

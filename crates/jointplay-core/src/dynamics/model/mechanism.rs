@@ -9,7 +9,7 @@ use super::constraint_jacobian::JacobianPattern;
 use super::layout::StateLayout;
 use crate::body::{BodyKind, BodyModel};
 use crate::element::{Element, ElementKind, ElementMemory, ElementModel, OutputInfo};
-use crate::joint::{ClearanceRevolute, Constraint, IdealElement};
+use crate::joint::{ClearanceRevolute, Constraint, IdealElement, SpatialClearanceRevolute};
 use crate::linalg::PatternLdl;
 
 /// A body: its name and its kind (which holds its mass properties).
@@ -290,6 +290,14 @@ impl Model {
     /// The ideal joints, drivers and assembly locks: index in [`Self::elements`] and element.
     pub fn ideal_elements(&self) -> impl Iterator<Item = (usize, &IdealElement)> + Clone {
         self.elements.iter().enumerate().filter_map(|(k, element)| element.ideal().map(|ideal| (k, ideal)))
+    }
+
+    /// The spatial clearance joints: index in [`Self::elements`], name and joint.
+    pub fn spatial_clearance_joints(&self) -> impl Iterator<Item = (usize, &str, &SpatialClearanceRevolute)> + Clone {
+        self.elements.iter().enumerate().filter_map(|(k, element)| match &element.kind {
+            ElementKind::SpatialClearanceRevolute(joint) => Some((k, element.name.as_str(), &**joint)),
+            _ => None,
+        })
     }
 
     /// The clearance joints: index in [`Self::elements`], name and joint.

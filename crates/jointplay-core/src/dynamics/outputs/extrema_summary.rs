@@ -4,6 +4,7 @@
 //! [`super::extrema::ExtremaTracker`].
 
 use super::extrema::ExtremaTracker;
+use crate::joint::{ModeTally, AXIAL_BIN, MODE_BINS};
 
 /// Units of the channels whose peak is tracked: forces, moments and
 /// torques, linear and angular accelerations, pressures.
@@ -52,6 +53,9 @@ pub struct JointExtrema {
     pub min_film_time: Option<f64>,
     /// Largest film pressure (gauge) [Pa] and when it occurred [s]; lubricated joints only.
     pub peak_film_pressure: Option<(f64, f64)>,
+    /// Fractions of the time in free flight, impact, sliding and sustained contact (summing to 1), and in
+    /// axial contact apart [-]; joints that tally their motion modes only.
+    pub mode_fractions: Option<[f64; MODE_BINS]>,
 }
 
 /// Summary quantities of a run, from every accepted step and refined inside
@@ -85,14 +89,17 @@ pub struct Extrema {
 pub(crate) struct JointToSummarize {
     /// Name.
     pub name: String,
-    /// Index of its event function (its gap `|e| - c`) among the tracked ones.
-    pub event: usize,
+    /// Indices of its radial event functions (each a gap, `|e| - c` or a bore half's deepest penetration)
+    /// among the tracked ones.
+    pub events: std::ops::Range<usize>,
     /// Contact onsets counted.
     pub impacts: usize,
     /// Whether it carries a film.
     pub lubricated: bool,
     /// Radial clearance [m].
     pub clearance: f64,
+    /// Its motion modes' tally, for a joint that keeps one (its contact time is then the tally's).
+    pub modes: Option<ModeTally>,
 }
 
 impl ExtremaTracker {
@@ -112,8 +119,15 @@ impl ExtremaTracker {
         let point_accelerations = peaks(n_channels..names.len());
         let clearance_joints = joints
             .iter()
-            .map(|&JointToSummarize { ref name, event, impacts, lubricated, clearance }| {
-                let (gap, contact_time) = (&self.gaps.peaks[event], self.contact_time[event]);
+            .map(|JointToSummarize { name, events, impacts, lubricated, clearance, modes }| {
+                let (impacts, lubricated, clearance) = (*impacts, *lubricated, *clearance);
+                let deepest = events.clone().max_by(|&a, &b| self.gaps.peaks[a].score.total_cmp(&self.gaps.peaks[b].score)).expect("a joint has a radial event");
+                let gap = &self.gaps.peaks[deepest];
+                let contact_time = match modes {
+                    Some(tally) => tally.times[1..AXIAL_BIN].iter().sum(),
+                    None => self.contact_time[events.start],
+                };
+                let mode_fractions = modes.map(|tally| tally.fractions());
                 // (a joint observed at no step at all has no extrema: NaN)
                 let observed = !gap.time.is_nan();
                 let touched = gap.score > 0.0;
@@ -121,13 +135,18 @@ impl ExtremaTracker {
                     name: name.clone(),
                     impacts,
                     contact_time,
-                    contact_fraction: if duration > 0.0 { contact_time / duration } else { 0.0 },
+                    contact_fraction: match mode_fractions {
+                        Some(fractions) => fractions[1..AXIAL_BIN].iter().sum(),
+                        None if duration > 0.0 => contact_time / duration,
+                        None => 0.0,
+                    },
                     max_penetration: if touched { gap.score } else { 0.0 },
                     max_penetration_time: if touched { gap.time } else { f64::NAN },
                     max_eccentricity_ratio: if observed { 1.0 + gap.score / clearance } else { f64::NAN },
                     min_film: lubricated.then_some(if observed { (-gap.score).max(0.0) } else { f64::NAN }),
                     min_film_time: lubricated.then_some(gap.time),
                     peak_film_pressure: None,
+                    mode_fractions,
                 }
             })
             .collect();

@@ -89,7 +89,7 @@ fn test_contact_time_and_deepest_gap_of_a_sine_match_the_closed_form() {
     let deepest = tracker.gaps.peaks[0];
     assert!((deepest.score - 0.5).abs() < 1e-10, "{deepest:?}");
     assert!((deepest.time - 0.25).abs() < 1e-4, "{deepest:?}");
-    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[JointToSummarize { name: "B".to_string(), event: 0, impacts: 3, lubricated: true, clearance: 2.0 }]);
+    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[JointToSummarize { name: "B".to_string(), events: 0..1, impacts: 3, lubricated: true, clearance: 2.0, modes: None }]);
     let joint = &summary.clearance_joints[0];
     assert_eq!(joint.impacts, 3);
     assert!((joint.contact_fraction - expected / 1.05).abs() < 1e-7);
@@ -104,7 +104,7 @@ fn test_minimum_film_of_a_joint_never_in_contact_is_the_smallest_clearance_left(
     let gap = |t: f64| -1e-5 + 4e-6 * (t - 0.42).cos();
     let mut probe = Known { channel: |_| 0.0, gap, evaluations: 0 };
     let tracker = track(&mut probe, 0.1, 1.0);
-    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[JointToSummarize { name: "B".to_string(), event: 0, impacts: 0, lubricated: true, clearance: 2e-5 }]);
+    let summary = tracker.summary(&[("a.f".to_string(), "N")], 1, &[JointToSummarize { name: "B".to_string(), events: 0..1, impacts: 0, lubricated: true, clearance: 2e-5, modes: None }]);
     let joint = &summary.clearance_joints[0];
     assert!((joint.min_film.unwrap() - 6e-6).abs() < 6e-6 * 1e-8, "{joint:?}");
     assert!((joint.min_film_time.unwrap() - 0.42).abs() < 1e-3, "{joint:?}");

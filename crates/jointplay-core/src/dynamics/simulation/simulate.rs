@@ -7,6 +7,7 @@ use crate::dynamics::formulations::absolute::equations::{update_frames, Stabiliz
 use crate::dynamics::formulations::formulation_choice::{choose_formulation, FormulationChoice};
 use crate::dynamics::formulations::joint_coordinates::{self, Formulation, JointTree};
 use crate::dynamics::outputs::extrema::ExtremaTracker;
+use crate::joint::SpatialClearanceRevolute;
 use crate::kinematics::marker::Marker;
 use crate::dynamics::outputs::extrema_summary::{is_peak_unit, Extrema, JointToSummarize};
 use super::system::{MechanismSystem, StepEndCache, Tracking};
@@ -295,17 +296,24 @@ fn summarize(model: &Model, tracker: &ExtremaTracker, channels: &[usize], memory
     let points = model.points.iter().filter(|p| !p.1.body.is_ground()).map(|p| (p.0.clone(), "m/s^2"));
     let names: Vec<(String, &'static str)> =
         channels.iter().map(|&c| (model.channels[c].info.name.clone(), model.channels[c].info.unit)).chain(points).collect();
-    // (a clearance joint's one event function is its gap)
-    let joints: Vec<JointToSummarize> = model
-        .clearance_joints()
-        .map(|(k, name, joint)| JointToSummarize {
-            name: name.to_string(),
-            event: model.event_offsets[k],
-            impacts: model.impacts(k, memory),
-            lubricated: joint.lubrication.is_some(),
-            clearance: joint.clearance,
-        })
-        .collect();
+    // (a clearance joint's one event function is its gap; a spatial one's first two are its bore halves')
+    let planar = model.clearance_joints().map(|(k, name, joint)| JointToSummarize {
+        name: name.to_string(),
+        events: model.event_offsets[k]..model.event_offsets[k] + 1,
+        impacts: model.impacts(k, memory),
+        lubricated: joint.lubrication.is_some(),
+        clearance: joint.clearance,
+        modes: None,
+    });
+    let spatial = model.spatial_clearance_joints().map(|(k, name, joint)| JointToSummarize {
+        name: name.to_string(),
+        events: model.event_offsets[k]..model.event_offsets[k] + 2,
+        impacts: model.impacts(k, memory),
+        lubricated: false,
+        clearance: joint.geometry.radial_clearance(),
+        modes: SpatialClearanceRevolute::mode_times(&memory[model.memory_of(k)]),
+    });
+    let joints: Vec<JointToSummarize> = planar.chain(spatial).collect();
     let mut extrema = tracker.summary(&names, channels.len(), &joints);
     for joint in extrema.clearance_joints.iter_mut().filter(|j| j.min_film.is_some()) {
         let pressure = format!("{}.peak_pressure", joint.name);

@@ -123,7 +123,7 @@ impl MechanismSystem<'_> {
         for &k in &self.model.acting {
             let element = &self.model.elements[k];
             let frames = Frames { planar: &self.ws.frames, spatial: &self.ws.spatial_frames };
-            let acceptance = match element.kind.accept(&frames, &mut self.memory[self.model.memory_of(k)]) {
+            let acceptance = match element.kind.accept(&frames, t, &mut self.memory[self.model.memory_of(k)]) {
                 Ok(acceptance) => acceptance,
                 Err(fault) => {
                     if let ElementFault::ExcessivePenetration { penetration, .. } = fault {
@@ -436,7 +436,7 @@ impl OdeSystem for MechanismSystem<'_> {
         self.place_frames(t, y);
         let (k, own) = self.model.event_owner(event);
         let frames = Frames { planar: &self.ws.frames, spatial: &self.ws.spatial_frames };
-        self.model.elements[k].kind.on_event(&frames, own, &mut self.memory[self.model.memory_of(k)]);
+        self.model.elements[k].kind.on_event(&frames, t, own, &mut self.memory[self.model.memory_of(k)]);
         Ok(())
     }
 

@@ -14,13 +14,10 @@ fn material(m: &MaterialSpec) -> Material {
 const HERTZ_EXPONENT: f64 = 1.5;
 
 pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: &str, errors: &mut ModelErrors) -> Option<ContactStiffness> {
-    for (m, what) in [(&c.bearing_material, "bearing_material"), (&c.journal_material, "journal_material")] {
-        Range::check_all(&[(ranges::MATERIAL_YOUNGS_MODULUS, m.youngs_modulus), (ranges::MATERIAL_POISSON_RATIO, m.poisson_ratio)], &format!("{loc}.{what}"), errors);
-    }
+    check_materials(&c.bearing_material, &c.journal_material, loc, errors);
     if !(journal_radius > 0.0) {
         return None; // reported with the clearance
     }
-    let (rb, b, j) = (c.bearing_radius, material(&c.bearing_material), material(&c.journal_material));
     let needs_length = matches!(c.stiffness, StiffnessSpec::JohnsonLine | StiffnessSpec::RogersAndrews);
     let length = match c.length {
         Some(l) if ranges::JOINTS_CLEARANCE_REVOLUTE_LENGTH.check_at(l, loc, errors) => Some(l),
@@ -31,14 +28,47 @@ pub(super) fn build_stiffness(c: &ClearanceJointSpec, journal_radius: f64, loc: 
         }
         None => None,
     };
-    let built = match c.stiffness {
-        StiffnessSpec::HertzCylinder => HertzCylinder::new(rb, journal_radius, b, j, HERTZ_EXPONENT).map(ContactStiffness::HertzCylinder),
+    let bore = Bore { bore_radius: c.bearing_radius, journal_radius, length, bearing: &c.bearing_material, journal: &c.journal_material };
+    build_bore_stiffness(&c.stiffness, &bore, loc, errors)
+}
+
+/// A journal in a bore, as its stiffness law needs it.
+pub(super) struct Bore<'a> {
+    /// Bore radius [m].
+    pub bore_radius: f64,
+    /// Journal radius [m].
+    pub journal_radius: f64,
+    /// Bearing length [m], when known (the line-contact laws need it).
+    pub length: Option<f64>,
+    /// Bearing material.
+    pub bearing: &'a MaterialSpec,
+    /// Journal material.
+    pub journal: &'a MaterialSpec,
+}
+
+/// Checks the two materials of a contact, each key located at `loc.bearing_material` / `loc.journal_material`.
+pub(super) fn check_materials(bearing: &MaterialSpec, journal: &MaterialSpec, loc: &str, errors: &mut ModelErrors) {
+    for (m, what) in [(bearing, "bearing_material"), (journal, "journal_material")] {
+        Range::check_all(&[(ranges::MATERIAL_YOUNGS_MODULUS, m.youngs_modulus), (ranges::MATERIAL_POISSON_RATIO, m.poisson_ratio)], &format!("{loc}.{what}"), errors);
+    }
+}
+
+/// The stiffness law `stiffness` of the journal in `bore` (a line-contact law without a length gives `None`, reported by the caller).
+pub(super) fn build_bore_stiffness(stiffness: &StiffnessSpec, bore: &Bore, loc: &str, errors: &mut ModelErrors) -> Option<ContactStiffness> {
+    let (rb, rj, b, j) = (bore.bore_radius, bore.journal_radius, material(bore.bearing), material(bore.journal));
+    let built = match *stiffness {
+        StiffnessSpec::HertzCylinder => HertzCylinder::new(rb, rj, b, j, HERTZ_EXPONENT).map(ContactStiffness::HertzCylinder),
         StiffnessSpec::HertzCylinderExponent { exponent } if !ranges::STIFFNESS_HERTZ_CYLINDER_EXPONENT.check_at(exponent, &format!("{loc}.stiffness"), errors) => return None,
-        StiffnessSpec::HertzCylinderExponent { exponent } => HertzCylinder::new(rb, journal_radius, b, j, exponent).map(ContactStiffness::HertzCylinder),
-        StiffnessSpec::JohnsonLine => JohnsonLine::new(rb, journal_radius, length?, b, j).map(ContactStiffness::JohnsonLine),
-        StiffnessSpec::RogersAndrews => RogersAndrews::new(rb, journal_radius, length?, b, j).map(ContactStiffness::RogersAndrews),
+        StiffnessSpec::HertzCylinderExponent { exponent } => HertzCylinder::new(rb, rj, b, j, exponent).map(ContactStiffness::HertzCylinder),
+        StiffnessSpec::JohnsonLine => JohnsonLine::new(rb, rj, bore.length?, b, j).map(ContactStiffness::JohnsonLine),
+        StiffnessSpec::RogersAndrews => RogersAndrews::new(rb, rj, bore.length?, b, j).map(ContactStiffness::RogersAndrews),
     };
     built.map_err(|message| errors.push(format!("{loc}.stiffness"), message)).ok()
+}
+
+/// The effective modulus of two materials, `1/E* = (1-nu_b^2)/E_b + (1-nu_j^2)/E_j` [Pa].
+pub(super) fn effective_modulus(bearing: &MaterialSpec, journal: &MaterialSpec) -> f64 {
+    crate::contact::effective_modulus(&material(bearing), &material(journal))
 }
 
 pub(super) fn build_normal_force_law(c: &ContactSpec, loc: &str, errors: &mut ModelErrors) -> Option<NormalForceLaw> {

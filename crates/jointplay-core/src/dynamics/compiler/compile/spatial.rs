@@ -91,7 +91,7 @@ impl<'s> Compiler<'s> {
     }
 
     /// The marker named `reference`, with a located error when there is none.
-    fn spatial_point(&mut self, reference: &str, location: String) -> Option<SpatialMarker> {
+    pub(super) fn spatial_point(&mut self, reference: &str, location: String) -> Option<SpatialMarker> {
         let found = self.spatial_points.get(reference).copied();
         if found.is_none() {
             // (the planar lookup words the error)
@@ -237,7 +237,7 @@ impl<'s> Compiler<'s> {
 }
 
 /// The primitives of a joint between the marker frames `a` and `b`.
-fn joint_equations(kind: SpatialJointKind, a: SpatialMarker, b: SpatialMarker) -> Vec<ConstraintKind> {
+pub(super) fn joint_equations(kind: SpatialJointKind, a: SpatialMarker, b: SpatialMarker) -> Vec<ConstraintKind> {
     let point = || ConstraintKind::SpatialPointCoincidence(Box::new(SpatialPointCoincidence { first: a, second: b }));
     let perpendicular = |first_axis, second_axis| ConstraintKind::PerpendicularAxes(Box::new(PerpendicularAxes { first: a, second: b, first_axis, second_axis }));
     let on_axis = |axis| ConstraintKind::AxisDistance(Box::new(AxisDistance { first: a, second: b, axis, target: Target::Fixed(0.0) }));
