@@ -103,9 +103,11 @@ def responses() -> list:
     return out
 
 
-def build_study(t_end: float = T_END, forces=FORCES, frequencies=FREQUENCIES, clearances=CLEARANCES):
+def build_study(t_end: float = T_END, forces=FORCES, frequencies=FREQUENCIES, clearances=CLEARANCES,
+                max_steps: int | None = None):
     """The full factorial of the levels as a study around the model file: an explicit table of the cases
-    (the clearance is one value for two paths, the joints' two factors equal in every row)."""
+    (the clearance is one value for two paths, the joints' two factors equal in every row). ``max_steps``
+    stops a case whose steps become too small (it is then marked failed, its responses missing)."""
     from jointplay.study import Study
 
     levels = {"force": forces, "frequency": frequencies, "clearance": clearances}
@@ -116,13 +118,16 @@ def build_study(t_end: float = T_END, forces=FORCES, frequencies=FREQUENCIES, cl
                             "path": path, "levels": [f"{v!r} {UNITS[name]}" for v in levels[name]]})
     for force, frequency, clearance in itertools.product(forces, frequencies, clearances):
         rows.append([f"{force!r} N", f"{frequency!r} Hz"] + [f"{clearance!r} m"] * len(PATHS["clearance"]))
+    options = {} if max_steps is None else {"max_steps": max_steps}
     return Study(rig.MODEL_FILE, factors, {"kind": "table", "rows": rows}, responses(), t_end=t_end,
-                 name="paper002_cylinder_study")
+                 options=options, name="paper002_cylinder_study")
 
 
-def run_study(t_end: float = T_END, workers: int = 1, folder: Path | None = None, **levels):
+def run_study(t_end: float = T_END, workers: int = 1, folder: Path | None = None, max_steps: int | None = None,
+              **levels):
     """The study's Dataset (``folder`` keeps the cases, resumable)."""
-    return build_study(t_end, **levels).run(folder, workers=workers, resume=folder is not None)
+    return build_study(t_end, max_steps=max_steps, **levels).run(folder, workers=workers,
+                                                                 resume=folder is not None)
 
 
 def case_levels(ds) -> dict[str, np.ndarray]:
@@ -291,8 +296,9 @@ def main(argv: list[str] | None = None):
     parser.add_argument("--out", type=Path, default=Path("out/paper002_study"))
     parser.add_argument("--t-end", type=float, default=T_END, help="end time of each case [s] (default 10)")
     parser.add_argument("--workers", type=int, default=1, help="local worker processes running the cases")
+    parser.add_argument("--max-steps", type=int, default=None, help="attempted steps at most per case")
     args = parser.parse_args(argv)
-    ds = run_study(args.t_end, args.workers, args.out / "cases")
+    ds = run_study(args.t_end, args.workers, args.out / "cases", args.max_steps)
     print(markdown_table(ds))
     print("\n".join(trends(ds)))
     for path in write_outputs(ds, args.out, args.t_end):
