@@ -25,7 +25,11 @@ The values of the rig are CHOSEN (paper 002's tables are lost): the trends are w
 reproduction of the paper's numbers. Writes the fractions against each factor (PNG), the tables (Markdown
 and CSV) and the study's Dataset.
 
-Run: python examples/paper002_cylinder_study.py [--out DIR] [--t-end S] [--workers N]
+Cost: a 10 s case takes about a minute of one core; the 48 cases of 2 s each took 21 minutes with
+``--workers 2`` on two cores shared with other jobs (load 5-9). The fractions then include the first
+drop of the journals from the centre into contact.
+
+Run: python examples/paper002_cylinder_study.py [--out DIR] [--t-end S] [--workers N] [--max-steps N]
 """
 
 from __future__ import annotations
