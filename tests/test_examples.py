@@ -19,7 +19,8 @@ def test_every_python_example_is_covered_here():
                "spin_up_beam", "flores_flexible_rod",  # tests/test_beams.py
                "four_bar_flexible_coupler",
                "paper003_breaker",  # tests/test_paper003_breaker.py
-               "spatial_slider_crank"}
+               "spatial_slider_crank",
+               "paper002_cylinder_rig", "paper002_cylinder_study"}  # tests/test_paper002_rig.py
     assert {p.stem for p in EXAMPLES.glob("*.py")} == covered
 
 

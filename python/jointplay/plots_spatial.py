@@ -4,7 +4,9 @@
 - per body, its orientation as the Euler angles of its sequence (``<body>.euler_<seq>_1..3``, as recorded,
   in degrees) and its angular velocity about the global axes (``<body>.wx_global..wz_global``);
 - per ideal joint, its reaction on the second body: the force (``fx, fy, fz`` and the magnitude ``f``) and the
-  moment about the second marker's point (``mx, my, mz``), in global components.
+  moment about the second marker's point (``mx, my, mz``), in global components;
+- per spatial clearance joint, the journal's trajectories in the bore and its point cloud over the bore's
+  length (:mod:`jointplay.plots_spatial_clearance`).
 
 Each figure is built by a ``*_figure`` function (a matplotlib Figure, which the tests read back) and written
 by :func:`spatial_figures`.
@@ -113,7 +115,8 @@ def reactions_figure(results: Results, joint: str) -> Figure:
 
 def spatial_figures(results: Results, out: Path, fmt: str) -> list[Path]:
     """Writes the figures of the spatial bodies and joints of ``results`` into the folder ``out``: ``paths``,
-    ``orientation_<body>`` and ``reactions_<joint>``; returns their paths (none for a planar run)."""
+    ``orientation_<body>``, ``reactions_<joint>`` and, per spatial clearance joint, ``trajectories_<joint>`` and
+    ``point_cloud_<joint>``; returns their paths (none for a planar run)."""
     bodies = spatial_bodies(results)
     if not bodies:
         return []
@@ -122,4 +125,6 @@ def spatial_figures(results: Results, out: Path, fmt: str) -> list[Path]:
         paths.append(_save(orientation_figure(results, body), out / f"orientation_{body}.{fmt}"))
     for joint in spatial_joints(results):
         paths.append(_save(reactions_figure(results, joint), out / f"reactions_{joint}.{fmt}"))
-    return paths
+    from .plots_spatial_clearance import spatial_clearance_figures
+
+    return paths + spatial_clearance_figures(results, out, fmt)
