@@ -265,7 +265,10 @@ EXPECTED = {
         "friction": {"law": "stiction", "static_coefficient": 0.15, "kinetic_coefficient": 0.1,
                      "stiction_velocity": 1e-5, "transition_velocity": 5e-5},
         "lock_at_assembly": True, "onset_velocity_floor": 1e-4, "max_penetration": 2e-4, "mode_impact_speed": 1e-3,
-        "mode_impact_duration": 1e-3, "mode_sliding_speed": 5e-5}],
+        "mode_impact_duration": 1e-3, "mode_sliding_speed": 5e-5,
+        "lubrication": {"model": "hamrock_short", "viscosity": 0.4, "transition": {"law": "wang_improved", "safe_film_thickness": None},
+                        "reynolds": {"cavitation": "swift_stieber", "n_circumferential": None, "n_axial": None,
+                                     "ambient_pressure": 0.0, "groove_supply_pressure": None}}}],
     "spatial_forces": [
         # free length left out: the described distance of ground.T (z = 0.3 m) and collar.T (z = 0.05 m)
         {"type": "spring_damper", "name": "spring", "first": "ground.T", "second": "collar.T", "stiffness": 1000.0,
