@@ -142,3 +142,11 @@ def test_a_lubricated_joint_needs_a_known_film_model():
     with pytest.raises(ModelError) as caught:
         journal_in_bore(lubrication={"model": "honey", "viscosity": "400 cP"}).check()
     assert any(p.location == "joints.play.lubrication.model" for p in caught.value.problems), caught.value.problems
+
+
+def test_a_study_response_reads_a_mode_fraction(run):
+    from jointplay.study.metrics import Response
+
+    for mode in MODES:
+        response = Response(name=f"{mode}_share", kind=f"{mode}_fraction", joint="play")
+        assert response.evaluate(run) == run.summary()["clearance_joints"]["play"]["mode_fractions"][mode]

@@ -31,7 +31,10 @@ CHANNEL_KINDS = ("peak", "max", "min", "mean", "rms", "peak_to_peak", "final", "
 #: Kinds read from a clearance joint's tracked statistics (``joint``), over the whole run: the key in
 #: ``Results.summary()["clearance_joints"][joint]`` and the unit.
 JOINT_KINDS = {"contact_fraction": ("contact_fraction", ""), "max_penetration": ("max_penetration", "m"),
-               "min_film": ("min_film", "m")}
+               "min_film": ("min_film", "m"),
+               # the motion modes of a spatial clearance joint (docs/theory/spatial-clearance-revolute.md)
+               **{f"{mode}_fraction": (f"mode_fractions.{mode}", "") for mode in
+                  ("free", "impact", "sliding", "sustained", "axial")}}
 KINDS = CHANNEL_KINDS + tuple(JOINT_KINDS)
 #: Statistics of the oscillation about the trend.
 STATISTICS = ("rms", "peak", "peak_to_peak")
@@ -138,12 +141,15 @@ class Response:
         return float(_REDUCTIONS[self.kind](time, x))
 
     def _joint_value(self, results) -> float:
-        value = results.summary()["clearance_joints"][self.joint].get(JOINT_KINDS[self.kind][0])
+        value = results.summary()["clearance_joints"][self.joint]
+        for key in JOINT_KINDS[self.kind][0].split("."):
+            value = value.get(key) if isinstance(value, dict) else None
         if value is None:
             if self.kind == "max_penetration":
                 return 0.0  # never in contact
             raise ModelError([Problem(f"responses.{self.name}", f"joint {self.joint} has no {self.kind} "
-                                      "(min_film needs a lubricated joint)")])
+                                      "(min_film needs a lubricated joint, the mode fractions a spatial clearance "
+                                      "joint)")])
         return float(value)
 
 
