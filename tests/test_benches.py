@@ -184,3 +184,23 @@ def test_study_benchmark_quick_mode_runs_three_ways_with_identical_results(capsy
     memory = report["Worker memory"]
     assert sum(line.startswith("| ") and line[2].isdigit() for line in memory) == 2  # two workers
     assert "40 cases of 0.5 ms, 0 failed" in "\n".join(memory)
+
+
+def test_spatial_clearance_joint_benchmark_times_the_three_builds_on_the_same_impacts(capsys, tmp_path):
+    bench = load("spatial_clearance_joint")
+    specs = bench.builds()
+    (joint,) = specs["c"]["spatial_clearance_joints"]
+    planar = specs["b"]["joints"][0]
+    assert (joint["bore_radius"], joint["clearance"], joint["bearing_length"]) == (
+        planar["bearing_radius"], planar["clearance"], planar["length"])
+    report = bench.main(["--rounds", "1", "--t-end", "5e-4", "--where", "--output", str(tmp_path / "r.json")])
+    assert [w["t_end"] for w in report["windows"]] == [5e-4, bench.FREE_T_END, 5e-4, bench.FIXED_T_END]
+    first, free = report["windows"][0], report["windows"][1]
+    assert [r["case"] for r in first["rows"]] == [label for label, *_ in bench.CASES]
+    # the first impact (0.23 ms) is in the window of every build, none in the free window
+    assert all(r["peak_force"] > 1e3 and r["evaluations"] > r["steps"] for r in first["rows"])
+    assert all(r["peak_force"] == 0.0 for r in free["rows"])
+    assert all(s.n == 1 for s in first["ratios"].values())
+    out = capsys.readouterr().out
+    assert "goal: at most 3x per evaluation, (c)/(b), CPU:" in out
+    assert (tmp_path / "r.json").exists() and "| (c)/(b) |" in (tmp_path / "r.md").read_text()
