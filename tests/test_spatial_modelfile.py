@@ -19,7 +19,7 @@ import pytest
 import jointplay as jp
 from jointplay import orientation as o
 from jointplay import parameters as p
-from jointplay.modelfile import read_spec, reference, to_toml
+from jointplay.modelfile import loads, read_spec, reference, to_toml
 from jointplay.modelfile.build import Builder
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -647,3 +647,12 @@ def test_the_builder_takes_a_scipy_rotation_as_an_orientation():
     m = jp.Model(kinematics="spatial")
     m.add_body("b", mass=1, inertia={"principal": [1, 1, 1], "axes": rotation}, orientation=rotation)
     assert m.to_spec()["spatial_bodies"][0]["orientation"] == q
+
+
+def test_an_integer_beyond_the_floats_range_in_an_orientation_is_a_located_problem():
+    # (found by tests/test_model_file_fuzz.py: it raised OverflowError from math.isfinite)
+    text = EVERY_KEY.read_text(encoding="utf-8").replace('quaternion = [2, 0, 0, 0]', f'quaternion = [{10 ** 400}, 0, 0, 0]', 1)
+    with pytest.raises(jp.ModelError) as caught:
+        loads(text)
+    assert any("orientation" in p.location and "finite plain number" in p.message for p in caught.value.problems), \
+        caught.value.problems

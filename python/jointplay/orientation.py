@@ -107,9 +107,18 @@ def vector3(raw: Any, kind: str, **bounds: Any) -> list[float]:
 
 
 def _plain(raw: Any, what: str) -> float:
-    if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not math.isfinite(raw):
+    # (an integer beyond the floats' range is not finite either)
+    if isinstance(raw, bool) or not isinstance(raw, (int, float)) or not math.isfinite(_as_float(raw)):
         raise OrientationError(f"{what} must be a finite plain number, got {_show(raw)}")
     return float(raw)
+
+
+def _as_float(raw: int | float) -> float:
+    """``raw`` as a float, infinity for an integer too large for one."""
+    try:
+        return float(raw)
+    except OverflowError:
+        return math.inf
 
 
 def _plain_vector(raw: Any, n: int, what: str, example: str) -> np.ndarray:
