@@ -3,7 +3,7 @@ modal body from its Matrix Market and CSV files, beside the same coupler rigid.
 
 The coupler's files (examples/data/coupler.*) hold the mass and stiffness matrices of a triangle of
 aluminium strips in millimetres, tonnes and seconds: a base of 240 mm from pin A (node 0) to pin B (node
-6) and an apex C (node 8) 80 mm above its middle, 14 frame elements. Here they were written by the
+6) and an apex C (node 8) 80 mm above its middle, 10 frame elements. Here they were written by the
 Euler-Bernoulli frame elements of tests/physics/reference_frame_elements.py, standing in for the other
 code. The rigid coupler has the mass, centre of mass and inertia of the same mass matrix (its rigid
 motions), so the two runs differ only by the coupler's elasticity.

@@ -540,6 +540,7 @@ class Model:
             raise ModelError([("simulation.formulation", "joint_coordinates needs a tree of ideal joints, but "
                                                          f"{channels.get('absolute_because')}; use \"auto\" or "
                                                          "\"absolute\"")])
+        geometry = core.drawing_geometry()
         started = _time.perf_counter()
 
         def make_results(raw: dict) -> Results:
@@ -547,6 +548,7 @@ class Model:
                                         wall_time=_time.perf_counter() - started)
             results.description = getattr(self, "description", "")
             results.model_file = getattr(self, "source_file", "")
+            results.geometry = geometry
             return results
 
         if kind == "netcdf":

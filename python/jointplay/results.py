@@ -75,6 +75,11 @@ class Results:
         self.history = ""
         #: The results file the channels are read from, or None when they are in memory.
         self.path: Path | None = None
+        #: What a drawing of the mechanism needs beyond the model and the channels (saved as ``geometry_json``):
+        #: ``{"modal_bodies": {name: {"nodes", "shapes", "edges"}}}``, each modal body's reference nodes in its
+        #: frame [m], their translations per unit amplitude of each mode in the frame [m per unit] and the
+        #: mesh's lines (node pairs). A node is drawn at ``r + A(angle) (node + shapes @ eta)``.
+        self.geometry: dict = {"modal_bodies": {}}
 
     @classmethod
     def from_core(cls, raw: dict, spec: dict | None, options: dict | None, wall_time: float) -> Results:
@@ -178,6 +183,7 @@ class Results:
             "description": self.description,
             "model_json": json.dumps(self.spec) if self.spec is not None else "",
             "model_toml": self.model_toml(),
+            "geometry_json": json.dumps(self.geometry),
             "options_json": json.dumps(self.options),
             "wall_time_s": float(self.wall_time),
             "completed": int(self.error is None),
@@ -442,4 +448,6 @@ def _from_attributes(time, names, units, descriptions, values, attrs: dict) -> R
     results.description = str(attrs.get("description", ""))
     results.model_file = str(attrs.get("model_file", ""))
     results.history = str(attrs.get("history", ""))
+    if attrs.get("geometry_json"):
+        results.geometry = json.loads(attrs["geometry_json"])
     return results

@@ -174,6 +174,29 @@ impl CoreModel {
         Ok(out)
     }
 
+    /// What a drawing of the mechanism needs beyond the model and the channels:
+    /// `{"modal_bodies": {name: {"nodes": [[x, y], ...], "shapes": [[[dx per mode], [dy per mode]], ...],
+    /// "edges": [[a, b], ...]}}}`: each modal body's reference nodes in its frame [m], their translations per
+    /// unit amplitude of each mode in the frame [m per unit], and the mesh's lines.
+    fn drawing_geometry<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let modal = PyDict::new(py);
+        for body in &self.model.bodies {
+            if let jointplay_core::body::BodyKind::Modal(modal_body) = &body.kind {
+                let n = modal_body.n_nodes();
+                let nodes: Vec<[f64; 2]> = (0..n).map(|a| modal_body.node_position(a)).map(|p| [p.x, p.y]).collect();
+                let shapes: Vec<[Vec<f64>; 2]> = (0..n).map(|a| modal_body.node_mode_translations(a)).map(|(x, y)| [x.to_vec(), y.to_vec()]).collect();
+                let entry = PyDict::new(py);
+                entry.set_item("nodes", nodes)?;
+                entry.set_item("shapes", shapes)?;
+                entry.set_item("edges", modal_body.edges().to_vec())?;
+                modal.set_item(&body.name, entry)?;
+            }
+        }
+        let out = PyDict::new(py);
+        out.set_item("modal_bodies", modal)?;
+        Ok(out)
+    }
+
     /// Consistent initial coordinates and velocities at `t0`, or an error record.
     fn assemble<'py>(&self, py: Python<'py>, t0: f64) -> PyResult<Bound<'py, PyDict>> {
         let model = Arc::clone(&self.model);

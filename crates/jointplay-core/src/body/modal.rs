@@ -97,6 +97,9 @@ pub struct ModalBody {
     nodes: Vec<Vec2>,
     /// Mode rows of every node: `3 m` values, `Phi_a` x row, y row, then `Psi_a`.
     node_rows: Vec<f64>,
+    /// Lines of the mesh between nodes, for drawing: node pairs the stiffness
+    /// couples (a structure given by matrices) or neighbours along a beam.
+    edges: Vec<[usize; 2]>,
     /// Interface nodes; the first carries the frame.
     interface: Vec<usize>,
     /// Number of constraint modes (the first modes).
@@ -169,6 +172,7 @@ impl ModalBody {
             reference,
             nodes,
             node_rows,
+            edges: coupled_nodes(stiffness, d),
             interface: interface.to_vec(),
             n_constraint: modes.n_constraint,
             rotational,
@@ -192,6 +196,7 @@ impl ModalBody {
         let structure = Structure { mass: &mass, stiffness: &stiffness, positions: &positions, angles: &angles };
         let (mut body, pose) = Self::from_structure(&structure, interface, frame, n_normal, damping_ratio)?;
         body.source = Some(Box::new(SourceBeam { beam: beam.clone(), pose }));
+        body.edges = (1..body.nodes.len()).map(|a| [a - 1, a]).collect();
         Ok((body, pose))
     }
 
@@ -305,6 +310,19 @@ impl ModalBody {
     /// Reference position of node `a` in the body frame [m].
     pub fn node_position(&self, a: usize) -> Vec2 {
         self.nodes[a]
+    }
+
+    /// Translation of node `a` per unit amplitude of each mode, in the body
+    /// frame: `(Phi_a x row, Phi_a y row)`, `m` values each [m per unit].
+    pub fn node_mode_translations(&self, a: usize) -> (&[f64], &[f64]) {
+        let m = self.n_modes();
+        let rows = &self.node_rows[3 * m * a..3 * m * (a + 1)];
+        (&rows[..m], &rows[m..2 * m])
+    }
+
+    /// The mesh's lines, as pairs of node indices (for drawing the body).
+    pub fn edges(&self) -> &[[usize; 2]] {
+        &self.edges
     }
 
     /// The lowest bending frequency [Hz] of the body held at its frame's
@@ -796,4 +814,13 @@ fn held_modes(mass: &DMatrix<f64>, stiffness: &DMatrix<f64>, zeta: f64) -> Resul
     let rates = DMatrix::from_diagonal(&nalgebra::DVector::from_iterator(m, modes.angular_frequencies.iter().map(|w| 2.0 * zeta * w)));
     let mv = mass * &modes.shapes;
     Ok((modes.angular_frequencies, &mv * rates * mv.transpose()))
+}
+
+/// The node pairs `(a, b)`, `a < b`, whose coupling block in `stiffness` (`d`
+/// coordinates per node) is not zero: the lines of a finite-element mesh.
+fn coupled_nodes(stiffness: &DMatrix<f64>, d: usize) -> Vec<[usize; 2]> {
+    let n = stiffness.nrows() / d;
+    let scale = stiffness.amax();
+    let coupled = |a: usize, b: usize| (0..d).any(|i| (0..d).any(|j| stiffness[(d * a + i, d * b + j)].abs() > 1e-12 * scale));
+    (0..n).flat_map(|a| (a + 1..n).map(move |b| [a, b])).filter(|&[a, b]| coupled(a, b)).collect()
 }
