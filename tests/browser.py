@@ -82,10 +82,11 @@ def chromium_or_skip() -> str:
 class OpenedReport:
     """A report loaded in the browser: the page, its console errors and uncaught errors, and what each
     ``<video>`` reported (readyState, videoWidth, videoHeight, currentTime before and after playing [s],
-    error code)."""
+    error code), the number of plotly figures, and the non-local requests it tried (all aborted)."""
 
     page: object
     errors: list[str]
+    requests: list[str] = field(default_factory=list)
     videos: list[dict] = field(default_factory=list)
     plots: int = 0
 
@@ -117,13 +118,15 @@ class ReportBrowser:
         """Loads the HTML file at ``path`` and waits until its figures are drawn and its videos play."""
         page = self.context.new_page()
         errors: list[str] = []
+        before = len(self.requests)
         page.on("console", lambda message: errors.append(message.text) if message.type == "error" else None)
         page.on("pageerror", lambda error: errors.append(str(error)))
         page.goto(Path(path).resolve().as_uri(), wait_until="load")
         plots = page.evaluate("document.querySelectorAll('.plotly-graph-div').length")
         page.wait_for_function("""() => [...document.querySelectorAll('.plotly-graph-div')]
                                      .every(div => div.querySelector('svg.main-svg'))""", timeout=RENDER_TIMEOUT_MS)
-        return OpenedReport(page, errors, self._play_videos(page), plots)
+        videos = self._play_videos(page)
+        return OpenedReport(page, errors, self.requests[before:], videos, plots)
 
     @staticmethod
     def _play_videos(page) -> list[dict]:

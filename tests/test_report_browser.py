@@ -91,8 +91,8 @@ def test_the_video_plays_and_shows_the_encoded_frames(report_browser, opened, in
     np.testing.assert_allclose(outside[:3], GROUND, atol=COLOUR_TOLERANCE)
 
 
-def test_nothing_was_fetched_and_nothing_failed(report_browser, opened):  # noqa: F811
-    assert report_browser.requests == []
+def test_nothing_was_fetched_and_nothing_failed(opened):
+    assert opened.requests == []
     assert opened.errors == []
 
 
@@ -100,7 +100,29 @@ def test_a_request_to_the_network_is_aborted_and_recorded(report_browser, tmp_pa
     """The harness can fail a report that loads anything from a network."""
     path = tmp_path / "remote.html"
     path.write_text("<!doctype html><html><body><img src='https://cdn.plot.ly/logo.png'></body></html>")
-    before = len(report_browser.requests)
     opened = report_browser.open_report(path)
-    assert report_browser.requests[before:] == ["https://cdn.plot.ly/logo.png"]
+    assert opened.requests == ["https://cdn.plot.ly/logo.png"]
     assert any("ERR_INTERNET_DISCONNECTED" in e or "Failed to load resource" in e for e in opened.errors)
+
+
+def test_the_study_reports_figures_render_offline(report_browser, tmp_path):  # noqa: F811
+    """Every figure of a study's report (subplots, a contour, bars) drawn in the browser with its axis titles."""
+    from jointplay.report.blocks import Plot
+    from jointplay.report.study import study_sections
+    from jointplay.study import load_study
+
+    from test_report_study import DATA
+
+    load_study(DATA / "throw_study.toml").run(tmp_path / "study")
+    figures = [b.figure for s in study_sections(tmp_path / "study")[1] for b in s.blocks if isinstance(b, Plot)]
+    divs = "".join(f.to_html(include_plotlyjs=k == 0, full_html=False) for k, f in enumerate(figures))
+    path = tmp_path / "figures.html"
+    path.write_text(f"<!doctype html><html><head><meta charset='utf-8'></head><body>{divs}</body></html>",
+                    encoding="utf-8")
+    opened = report_browser.open_report(path)
+    assert opened.plots == len(figures) == 6 and opened.errors == [] and opened.requests == []
+    titles = opened.page.eval_on_selector_all("svg.main-svg .g-xtitle, svg.main-svg .g-x2title, svg.main-svg "
+                                              ".g-ytitle", "nodes => nodes.map(n => n.textContent)")
+    assert {"speed [m/s]", "g [m/s^2]", "final_height [m]", "height [m]"} <= set(titles)
+    colorbar = opened.page.eval_on_selector_all(".colorbar .cbtitle", "nodes => nodes.map(n => n.textContent)")
+    assert colorbar == ["height [m]", "final_height [m]"]

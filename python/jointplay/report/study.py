@@ -15,8 +15,6 @@ import json
 import math
 from pathlib import Path
 
-import numpy as np
-
 from ..errors import ModelError, Problem
 from .blocks import Plot, Section, Table, Text
 
@@ -230,8 +228,9 @@ def optimum_section(dataset, factors, responses: list[str], optimum: dict | None
     """The optimum ``jointplay optimize`` found and verified, or the best cases of each response."""
     if optimum is not None:
         return Section("Optimum", [
-            Text(f"Found by {optimum['method']} (weighted objective {_number(optimum.get('objective'))}) and run "
-                 "once more: the surfaces' prediction beside the run."),
+            Text(f"Found by {optimum['method']} (weighted objective {_number(optimum.get('objective'))}); "
+                 + ("run once more: the surfaces' prediction beside the run." if optimum.get("predicted") else
+                    "the best run of the search, so no surface prediction.")),
             Table(["factor", "value"], [[f.name, optimum["labels"].get(f.name, f.label(optimum["values"][f.name]))]
                                         for f in factors], "Factor values at the optimum."),
             Table(["response", "predicted (surface)", "run", "difference [%]"],
