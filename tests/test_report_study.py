@@ -184,3 +184,14 @@ def test_a_missing_or_unfinished_folder_is_a_located_model_error(tmp_path, swept
         study_sections(unfinished)
     assert caught.value.problems[0].location == str(unfinished / "study.nc")
     assert "0 of 9 cases done" in caught.value.problems[0].message
+
+
+def test_an_optimum_file_of_another_study_is_a_located_model_error(tmp_path, swept):
+    import shutil
+
+    folder = tmp_path / "copy"
+    shutil.copytree(swept, folder)
+    (folder / "optimum.json").write_text(json.dumps({"method": "surface", "values": {"clearance": 1e-4}}))
+    with pytest.raises(ModelError) as caught:
+        study_sections(folder)
+    assert caught.value.problems[0].location == str(folder / "optimum.json")

@@ -73,6 +73,11 @@ def read_study_folder(folder: str | Path) -> tuple[dict, object, dict | None]:
                                              f"{manifest.get('cases')}; run the study again with --resume")])
     optimum_path = folder / OPTIMUM
     optimum = _read_json(optimum_path, "") if optimum_path.is_file() else None
+    factor_names = {f["name"] for f in json.loads(dataset.attrs["factors"])}
+    if optimum is not None and not (isinstance(optimum.get("values"), dict) and "method" in optimum
+                                    and factor_names <= set(optimum["values"])):
+        raise ModelError([Problem(str(optimum_path), "is not an optimum of this study (jointplay optimize writes "
+                                                     "its method and a value of every factor)")])
     return manifest, dataset, optimum
 
 
@@ -231,8 +236,8 @@ def optimum_section(dataset, factors, responses: list[str], optimum: dict | None
             Text(f"Found by {optimum['method']} (weighted objective {_number(optimum.get('objective'))}); "
                  + ("run once more: the surfaces' prediction beside the run." if optimum.get("predicted") else
                     "the best run of the search, so no surface prediction.")),
-            Table(["factor", "value"], [[f.name, optimum["labels"].get(f.name, f.label(optimum["values"][f.name]))]
-                                        for f in factors], "Factor values at the optimum."),
+            Table(["factor", "value"], [[f.name, _optimum_label(f, optimum)] for f in factors],
+                  "Factor values at the optimum."),
             Table(["response", "predicted (surface)", "run", "difference [%]"],
                   [_verified_row(r, units_of(dataset, r), optimum) for r in responses],
                   "Responses at the optimum: predicted by the quadratic surfaces and from the verifying run.")])
@@ -246,6 +251,11 @@ def optimum_section(dataset, factors, responses: list[str], optimum: dict | None
         blocks.append(Table(["case", *[f.name for f in factors], header(response, units_of(dataset, response))],
                             rows, f"Cases with the smallest {response}."))
     return Section("Best cases", blocks)
+
+
+def _optimum_label(factor, optimum: dict) -> str:
+    """A factor's value at the optimum as ``jointplay optimize`` named it (a level, an ISO grade), else in SI."""
+    return optimum.get("labels", {}).get(factor.name) or factor.label(float(optimum["values"][factor.name]))
 
 
 def _verified_row(response: str, units: str, optimum: dict) -> list:
