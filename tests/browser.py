@@ -33,7 +33,8 @@ PLAY_MS = 400
 #: URL schemes a self-contained report may load.
 LOCAL_SCHEMES = ("file:", "data:", "blob:", "about:")
 #: Chromium switches for a container without a sandbox or a GPU.
-CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--autoplay-policy=no-user-gesture-required"]
+CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                 "--autoplay-policy=no-user-gesture-required"]
 
 
 def find_chromium() -> str | None:
