@@ -218,9 +218,14 @@ def test_orbit_plot_draws_the_saved_eccentricity_in_mm_inside_the_clearance_circ
 def test_lubricated_run_report_has_film_plots_and_the_lubricant(lubricated, folder):
     sections = run_sections(lubricated, animation=False)
     film = next(p for p in plots_of(sections) if p.figure.layout.title.text == "Lubricant film in B")
-    names = [trace.name for trace in film.figure.data]
-    assert names == ["B.film_min", "B.fh", "B.peak_pressure"]
-    np.testing.assert_allclose(film.figure.data[0].y, lubricated["B.film_min"])
+    lines = [trace for trace in film.figure.data if trace.mode == "lines"]
+    assert [trace.name for trace in lines] == ["B.film_min", "B.fh", "B.peak_pressure"]
+    np.testing.assert_allclose(lines[0].y, lubricated["B.film_min"])
+    # the thinnest film tracked at every accepted step is marked at its value and time
+    joint = lubricated.summary()["clearance_joints"]["B"]
+    peaks = [trace for trace in film.figure.data if trace.mode == "markers"]
+    assert peaks[0].yaxis == "y" and peaks[0].y[0] == pytest.approx(joint["min_film"], rel=1e-12)
+    assert peaks[0].y[0] <= lubricated["B.film_min"].min()
     axis_titles = [film.figure.layout[f"yaxis{k}"].title.text for k in ("", "2", "3")]
     assert axis_titles == ["B.film_min [m]", "B.fh [N]", "B.peak_pressure [Pa]"]
     html = write_report(lubricated, folder / "lubricated.html", animation=False).read_text(encoding="utf-8")
@@ -449,3 +454,15 @@ def test_cli_refuses_an_output_that_is_not_html(dry):
     assert result.exit_code == 2
     assert result.stderr.strip() == f"error: {dry.path.with_suffix('.pdf')}: a report is an HTML file: its name " \
                                     "must end in .html"
+
+
+def test_report_package_and_command_help_load_no_heavy_library():
+    import subprocess
+
+    heavy = ("plotly", "jinja2", "matplotlib", "xarray", "scipy", "imageio_ffmpeg", "PIL")
+    probe = ("import sys\nsys.argv = ['jointplay', 'report', '--help']\nimport jointplay.report\n"
+             "from jointplay.cli import main\ntry:\n    main()\nexcept SystemExit:\n    pass\n"
+             f"print([m for m in {heavy!r} if m in sys.modules], file=sys.stderr)")
+    result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120)
+    assert "Usage: jointplay report" in result.stdout
+    assert result.stderr.strip().splitlines()[-1] == "[]"

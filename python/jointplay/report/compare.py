@@ -136,17 +136,20 @@ def _scaled(value: Any, factor: float) -> Any:
 def overlay_section(runs: Sequence[Results], labels: Sequence[str]) -> Section:
     """The channels the runs share overlaid, one plot per channel, a trace per run."""
     from ..compare import default_compare_channels, nothing_to_compare
-    from ..plots import sampling_note
+    from ..plots import sampling_note, stopped_note
 
     names = default_compare_channels(runs)
     if not names:
         return Section("Channels overlaid", [Text(f"Nothing to overlay: {nothing_to_compare(runs, labels)}.")])
     sampling = "; ".join(f"{label}: {sampling_note(r)}" for r, label in zip(runs, labels))
+    stopped = " ".join(f"{note[0].upper()}{note[1:]}." for note in (stopped_note(r, label) for r, label in
+                                                                      zip(runs, labels)) if note)
     blocks = []
     for name in names:
         figure, was_thinned = overlay_figure(runs, labels, name)
         missing = [label for r, label in zip(runs, labels) if name not in r]
         note = f" Runs without this channel: {', '.join(missing)}." if missing else ""
         thinning = f" {THINNING}" if was_thinned else ""
-        blocks.append(Plot(figure, f"{name} of each run against time ({sampling}).{note}{thinning}"))
+        text = f"{name} of each run against time ({sampling}).{note}{thinning}"
+        blocks.append(Plot(figure, f"{text} {stopped}" if stopped else text))
     return Section("Channels overlaid", blocks)

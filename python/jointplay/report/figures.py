@@ -83,12 +83,30 @@ def history_figure(results: Results, title: str, panels: Sequence[Sequence[str]]
             any_thinned |= was_thinned
             fig.add_scatter(x=results.time[rows] * scale, y=results[name][rows], mode="lines", name=name,
                             row=k, col=1, line={"width": 1.2})
+        _tracked_peaks(fig, results, panel, scale, k)
         units = sorted({results.unit(c) for c in panel})
         label = ", ".join(panel) if len(panel) <= 3 else "value"
         fig.update_yaxes(title_text=axis_label(label, " / ".join(units)), row=k, col=1)
     fig.update_xaxes(title_text=f"time [{unit}]", row=len(panels), col=1)
     _layout(fig, title, height=200 + 190 * len(panels))
     return fig, any_thinned
+
+
+#: The name of the markers of the peaks tracked at every accepted step.
+PEAKS_NAME = "peak over every accepted step"
+
+
+def _tracked_peaks(fig, results: Results, panel: Sequence[str], scale: float, row: int) -> None:
+    """Markers at the extrema of ``panel``'s channels tracked at every accepted step (which saved samples can
+    miss), one trace for the panel."""
+    from ..plots import tracked_peak_point
+
+    points = [p for p in (tracked_peak_point(results, name) for name in panel) if p is not None]
+    if points:
+        shown = any(trace.name == PEAKS_NAME for trace in fig.data)
+        fig.add_scatter(x=[p[0] * scale for p in points], y=[p[1] for p in points], mode="markers",
+                        name=PEAKS_NAME, legendgroup="peaks", showlegend=not shown,
+                        marker={"color": "crimson", "size": 7, "symbol": "circle-open"}, row=row, col=1)
 
 
 def orbit_figure(results: Results, joint: str, clearance: float | None):

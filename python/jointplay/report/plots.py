@@ -49,7 +49,8 @@ def caption(results: Results, what: str, was_thinned: bool) -> str:
     """``what``, the run's sampling and, for a thinned plot, the thinning rule."""
     from ..plots import sampling_note, stopped_note
 
-    parts = [what, f"Curves: the {sampling_note(results)}."]
+    parts = [what, f"Curves: the {sampling_note(results)}; open circles: peaks tracked at every accepted step "
+                   "(where the run recorded them)."]
     if was_thinned:
         parts.append(THINNING)
     stopped = stopped_note(results)
