@@ -32,9 +32,11 @@ EXAMPLES = ROOT / "examples"
 
 
 def simulate(name: str, t_end: float, folder: Path) -> Results:
-    """A short run of an example, saved as ``<name>.nc`` and read back from the file (as a report reads it)."""
+    """A short run of an example with its own options, saved as ``<name>.nc`` and read back from the file (as a
+    report reads it)."""
     path = folder / f"{name}.nc"
-    jointplay.load(EXAMPLES / f"{name}.toml").simulate(t_end).save(path)
+    model = jointplay.load(EXAMPLES / f"{name}.toml")
+    model.simulate(t_end, **{k: v for k, v in model.simulation.items() if k != "t_end"}).save(path)
     return jointplay.open_results(path)
 
 
@@ -234,6 +236,22 @@ def test_lubricated_run_report_has_film_plots_and_the_lubricant(lubricated, fold
     assert joint["lubrication.model"] == ["pinkus_sternlicht_long", ""]
 
 
+def test_beam_run_report_lists_the_section_in_units_and_plots_end_nodes_and_gauge(folder):
+    beam_run = simulate("spin_up_beam", 1e-2, folder)
+    html = write_report(beam_run, folder / "beam.html", animation=False).read_text(encoding="utf-8")
+    beam = Page(html).rows_by_first_cell("Beam beam")
+    # examples/spin_up_beam.toml: a 10 m beam, bending_stiffness = "1.4e4 N m^2", mass_per_length = "1.2 kg/m"
+    assert beam["end"] == ["(10000, 0)", "mm"]
+    assert beam["section.bending_stiffness"] == ["14000", "N m^2"]
+    assert beam["section.mass_per_length"] == ["1.2", "kg/m"]
+    plots = {p.figure.layout.title.text: p for p in plots_of(run_sections(beam_run, animation=False))}
+    ends = [t for t in plots["Beam beam"].figure.data if t.mode == "lines"]
+    assert [t.name for t in ends][:2] == ["beam.node0_x", "beam.node0_y"]
+    np.testing.assert_allclose(ends[2].y, beam_run["beam.node8_x"])  # 4 quadratic elements: nodes 0-8
+    gauge = [t.name for t in plots["Strain gauge root"].figure.data if t.mode == "lines"]
+    assert gauge == ["root.axial_strain", "root.axial_force", "root.bending_moment"]
+
+
 def test_long_runs_are_thinned_keeping_every_span_extremes():
     rng = np.random.default_rng(1)
     n = 200_001
@@ -361,7 +379,8 @@ def test_comparison_has_one_column_per_run_and_overlaid_traces(dry, ideal, folde
     assert float(cells[2]) == pytest.approx(ideal.summary()["peaks"]["slider.ax"], rel=1e-5)
     differences = page.rows_by_first_cell("Model parameters that differ")
     assert differences["joints.B.type"] == ["clearance_revolute", "revolute"]
-    assert differences["joints.B.clearance"] == ["0.0005", "–"]
+    assert differences["joints.B.clearance"] == ["0.0005", "–"]  # SI units, as the results files hold them
+    assert differences["joints.B.max_penetration"] == ["none", "–"]  # unset in one, not a key of the other
     assert "bodies.rod.mass" not in differences  # the same in both
 
 

@@ -85,6 +85,8 @@ def model_differences(runs: Sequence[Results]) -> list[list[Any]]:
 
 
 def _shown(value: Any) -> Any:
+    if value is None:
+        return "none"  # given as not set, unlike a parameter the model does not have
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(str(_shown(v)) for v in value) + "]"
     if isinstance(value, dict):
@@ -99,7 +101,8 @@ def differences_section(runs: Sequence[Results], labels: Sequence[str]) -> Secti
         return Section("Model differences", [Text("The runs' models are the same.")])
     return Section("Model differences", [
         Text("Parameters of the models that differ between the runs, as the results files hold them (SI units: "
-             "lengths in m, angles in rad); a dash where a run's model has no such parameter."),
+             "lengths in m, angles in rad); \"none\" where a run's model leaves it unset, a dash where it has no such "
+             "parameter."),
         Table(["parameter", *labels], rows, "Model parameters that differ")])
 
 

@@ -89,6 +89,7 @@ def _param_rows(param: P.Param, name: str, value: Any, value_kind: str | None) -
     if kind == "variant" and isinstance(value, dict):
         tables = P.VARIANTS.get(param.of, {})
         tag = next((t.tag for t in tables.values()), None)
+        tag = tag if tag in value else next((k for k in ("type", "kind") if k in value), tag)  # the core's key
         definition = tables.get(value.get(tag)) if tag else None
         return [[f"{name}.{tag}", value.get(tag, ""), ""],
                 *parameter_rows(definition, {k: v for k, v in value.items() if k != tag}, f"{name}.")]

@@ -3,6 +3,7 @@ companions, as plotly figures in report sections.
 
 - the key channels of ``jointplay plot`` (:func:`jointplay.plots.default_channels`);
 - per body, its position, angle (or Euler angles) and acceleration; the modal amplitudes of a modal body;
+  per beam, the positions and section angles of its end nodes;
 - the reactions of the ideal joints and the efforts of the drivers;
 - per clearance joint, the journal-centre orbit inside the clearance circle, the contact forces and, when
   lubricated, the film; per spatial clearance joint, the contact forces at its rims and flanges and its
@@ -84,6 +85,15 @@ def _bodies(results: Results) -> Section:
         blocks.append(history_plot(results, f"Body {body}", panels, f"Body {body}: centre-of-mass position (x, y), "
                                    "angle and centre-of-mass acceleration" + (", modal amplitudes" if modes else "")
                                    + "."))
+    from ..plots import beams
+
+    for beam in beams(results):
+        name = beam["name"]
+        last = sum(1 for n in results.channels if n.startswith(f"{name}.node") and n.endswith("_x")) - 1
+        panels = [[f"{name}.node0_x", f"{name}.node0_y"], [f"{name}.node{last}_x", f"{name}.node{last}_y"],
+                  [f"{name}.node0_angle", f"{name}.node{last}_angle"]]
+        blocks.append(history_plot(results, f"Beam {name}", panels, f"Beam {name}: positions of its end nodes "
+                                   f"(node 0 and node {last}) and the angles of their sections."))
     return Section("Plots: bodies", blocks)
 
 
