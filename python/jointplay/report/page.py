@@ -3,9 +3,9 @@ HTML file.
 
 Every block kind is rendered one way, by the Jinja2 templates in ``templates/`` (``page.html.j2`` and its
 style sheet ``page.css``, inlined): a :class:`Text` as a paragraph, a :class:`Table` with its numbers to six
-significant digits, a :class:`Plot` as a plotly ``<div class="jp-plot" id="plot-<k>">`` (plotly.js inlined
-once, in the first plot of the page), a :class:`Video` as ``<video class="jp-video" id="video-<k>">`` (or
-``<img>`` for a GIF) whose source is a base64 ``data:`` URI. Nothing is fetched when the file is opened: no
+significant digits, a :class:`Plot` as plotly's ``<div class="plotly-graph-div" id="plot-<k>">`` inside a
+``<div class="jp-plot-wrap">`` (plotly.js inlined once, with the first plot of the page), a :class:`Video` as
+``<video class="jp-video" id="video-<k>">`` (or ``<img>`` for a GIF) whose source is a base64 ``data:`` URI. Nothing is fetched when the file is opened: no
 script or style sheet by address, no web font, no MathJax.
 """
 
