@@ -485,3 +485,33 @@ def test_report_package_and_command_help_load_no_heavy_library():
     result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=120)
     assert "Usage: jointplay report" in result.stdout
     assert result.stderr.strip().splitlines()[-1] == "[]"
+
+
+CHROMIUM = Path("/usr/bin/chromium")
+
+
+@pytest.mark.skipif(not CHROMIUM.exists(), reason="needs the system Chromium at /usr/bin/chromium")
+def test_report_renders_offline_in_a_browser_plots_and_video(dry, tmp_path, fake_animation):
+    playwright = pytest.importorskip("playwright.sync_api")
+    page_file = dry.report(tmp_path / "browser.html")
+    n_plots = len(plots_of(run_sections(dry, animation=False)))
+    with playwright.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=str(CHROMIUM), args=["--no-sandbox"])
+        try:
+            page = browser.new_context(offline=True).new_page()
+            requests, errors = [], []
+            page.on("request", lambda request: requests.append(request.url))
+            page.on("pageerror", lambda error: errors.append(str(error)))
+            page.goto(page_file.as_uri())
+            page.wait_for_function("document.querySelectorAll('.plotly-graph-div .main-svg').length > 0")
+            page.wait_for_function("document.getElementById('video-1').readyState >= 2", timeout=10_000)
+            drawn = page.evaluate("() => Array.from(document.querySelectorAll('.plotly-graph-div'))"
+                                  ".map(d => [d.id, d.querySelectorAll('.main-svg').length])")
+            video = page.evaluate("() => { const v = document.getElementById('video-1');"
+                                  " return [v.videoWidth, v.videoHeight, v.duration]; }")
+        finally:
+            browser.close()
+    assert requests == [page_file.as_uri()] and errors == []  # nothing fetched but the file itself
+    assert [d[0] for d in drawn] == [f"plot-{k}" for k in range(1, n_plots + 1)]
+    assert all(count >= 1 for _, count in drawn)  # every plot drawn as SVG by the inlined plotly.js
+    assert video[:2] == [64, 48] and video[2] == pytest.approx(1.0, abs=0.2)  # 8 frames at 8 fps
