@@ -671,6 +671,7 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
 from . import cli_bearing  # noqa: E402,F401  (registers `jointplay bearing`; imports `app` from here)
 from . import cli_static  # noqa: E402,F401  (registers `jointplay static`)
 from . import cli_study  # noqa: E402,F401  (registers `jointplay sweep` and `jointplay optimize`)
+from . import cli_report  # noqa: E402,F401  (registers `jointplay report`)
 
 
 def main() -> None:

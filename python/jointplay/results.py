@@ -215,6 +215,15 @@ class Results:
         return save_netcdf(path, self.time, self._names, self._units, self._descriptions, self.channel_block,
                            self.file_attributes(), compress=compress)
 
+    def report(self, path, **options) -> Path:
+        """Writes the report of this run to ``path`` (an ``.html`` file, self-contained: it works offline): the
+        model with its parameters in units, the run's options and statistics, its summary, interactive plots
+        of the standard channels and the animation of the mechanism. ``options``: those of
+        :func:`jointplay.report.write_report` (``title``, ``animation``). Returns the path."""
+        from .report import write_report
+
+        return write_report(self, path, **options)
+
     def model_toml(self) -> str:
         """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table."""
         if self.spec is None:
