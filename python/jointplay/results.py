@@ -215,6 +215,13 @@ class Results:
         return save_netcdf(path, self.time, self._names, self._units, self._descriptions, self.channel_block,
                            self.file_attributes(), compress=compress)
 
+    def animate(self, path, **options) -> Path:
+        """Writes an animation of the mechanism to ``path`` (``.mp4``, ``.webm``, ``.gif`` or a ``.png``
+        still); ``options`` as :func:`jointplay.animation.animate` takes them."""
+        from .animation import animate
+
+        return animate(self, path, **options)
+
     def model_toml(self) -> str:
         """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table."""
         if self.spec is None:
