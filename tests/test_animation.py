@@ -89,6 +89,33 @@ def test_the_journal_centre_is_the_bearing_point_plus_the_magnified_eccentricity
     np.testing.assert_allclose(tip - start, 2e-6 * f, rtol=0, atol=1e-12)
 
 
+def test_a_one_point_body_is_a_square_around_its_point_turned_with_it(dry):
+    scene = Scene(dry, fps=10, duration=1.0)
+    k = 4
+    square = scene.frame(k).bodies["slider"]
+    t = scene.times[k]
+    corners = square[:-1]
+    np.testing.assert_allclose(square[0], square[-1])  # closed
+    np.testing.assert_allclose(corners.mean(axis=0), [at(dry, "slider.x", t), at(dry, "slider.y", t)], atol=1e-15)
+    sides = np.linalg.norm(np.diff(square, axis=0), axis=1)
+    np.testing.assert_allclose(sides, scene.scales["block"], rtol=1e-12)
+    turn = np.arctan2(*(corners[1] - corners[0])[::-1])
+    assert turn == pytest.approx(at(dry, "slider.angle", t), abs=1e-12)
+
+
+def test_outlines_are_the_points_or_their_closed_convex_hull():
+    from jointplay.animation.frame import convex_outline
+
+    two = np.array([[1.0, 0.0], [0.0, 0.0]])
+    np.testing.assert_array_equal(convex_outline(two), two)  # in the given order
+    collinear = np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 0.0]])
+    np.testing.assert_array_equal(convex_outline(collinear), [[0.0, 0.0], [2.0, 0.0]])
+    square_and_inside = np.array([[0.0, 0.0], [1.0, 1.0], [0.5, 0.5], [1.0, 0.0], [0.0, 1.0]])
+    np.testing.assert_array_equal(convex_outline(square_and_inside),
+                                  [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.0, 0.0]])
+    assert len(convex_outline(np.zeros((3, 2)))) == 1  # coinciding points: drawn as a square instead
+
+
 def test_the_bore_keeps_its_radius_while_the_magnified_gap_is_at_most_half_of_it(dry):
     scene = Scene(dry, fps=2, duration=1.0, clearance_scale=10.0)
     g = scene.frame(1)

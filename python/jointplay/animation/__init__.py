@@ -33,6 +33,14 @@ def animate(results, path, *, start: float | None = None, end: float | None = No
     VP9), GIF (``.gif``) or one still PNG frame at ``start`` (``.png``, drawn with the scales the
     whole video would have); returns the path.
 
+    Drawn from the results alone (``results.spec``, the channels, ``results.geometry``): a rigid body
+    as the line through its points (two points), their convex hull (three or more) or a small square
+    (one), at its pose channels; beams through their nodes; modal bodies as their mesh; ground points
+    as triangles; joints as small circles at their first point, a translational joint as a dashed
+    guide along its axis; force elements between two points as lines; each clearance joint as its
+    bore and its journal (planar) or the bore's and the journal's axes (spatial), with its force as
+    an arrow. The frames of a GIF are held in memory (one byte a pixel) until it is written.
+
     - ``start``, ``end`` [s]: the part of the run shown (default: all of it).
     - ``fps`` [1/s] and ``duration`` [s] of the video: ``round(fps * duration)`` frames at times spread
       evenly over [start, end], both included. Default duration: the run at real speed when that
@@ -47,7 +55,9 @@ def animate(results, path, *, start: float | None = None, end: float | None = No
       of the journal's axis, projected). None: chosen automatically as
       round numbers (see :mod:`jointplay.animation.scene`); every scale in use is stated in the picture.
     - ``channels``: channel names drawn over time beside the mechanism with a cursor at the frame's
-      time (default: the force of the first clearance joint, else the first body's angle).
+      time (default: the force of the first clearance joint on its journal, ``<joint>.f``, else the
+      first body's angle; of a spatial model without clearance joints, the coordinate of the first
+      body's centre that moves most).
     - ``projection``: ``"xy"``, ``"xz"``, ``"yz"`` or ``"iso"`` (isometric, from (1, 1, 1), z up) for a
       spatial model; a planar model is drawn in its plane, ``"xy"``.
     - ``size``: (width, height) of the frames in pixels, each rounded up to an even number (H.264 in
