@@ -170,6 +170,15 @@ def test_modal_body_nodes_at_scale_one_follow_the_files_geometry_and_modal_ampli
     np.testing.assert_allclose(np.array(segments[0]) / renderer.per_metre, expected[[i, j]], rtol=0, atol=1e-12)
 
 
+def test_results_without_the_mesh_of_a_modal_body_are_refused_by_name():
+    import four_bar_flexible_coupler as example
+
+    results = example.build_model(True).simulate(0.002, output_step=1e-3)
+    results.geometry = {"modal_bodies": {}}  # as in a file written before the meshes were saved
+    with pytest.raises(ModelError, match="modal_bodies.coupler: the results carry no mesh of it"):
+        Scene(results)
+
+
 def test_spatial_bodies_are_posed_by_their_quaternions_and_projected():
     from scipy.spatial.transform import Rotation
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import ModelError
 from .frame import FrameGeometry, block, convex_outline, rotation
 from .sampling import Sampled
 
@@ -29,6 +30,11 @@ class PlanarModel:
                                for name, g in (geometry or {}).get("modal_bodies", {}).items() if name in self.modal}
         self.edges = {name: np.asarray(g.get("edges", []), dtype=int).reshape(-1, 2)
                       for name, g in (geometry or {}).get("modal_bodies", {}).items() if name in self.modal}
+        missing = [name for name in self.modal if name not in self.modal_geometry]
+        if missing:
+            raise ModelError([(f"modal_bodies.{name}", "the results carry no mesh of it (geometry_json; files "
+                                                       "written before it existed): run the model again to "
+                                                       "animate it") for name in missing])
         self.beam_nodes = {name: _node_count(sampled, name) for name in self.beams}
         self.clearance = [j for j in spec.get("joints", []) if j["type"] == "clearance_revolute"]
 
