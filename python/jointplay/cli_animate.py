@@ -32,8 +32,9 @@ def animate(
                                                   "(seconds) [default: the run's start].")] = None,
         end: Annotated[str | None, typer.Option("--end", help="Last time shown [default: the run's end].")] = None,
         fps: Annotated[float, typer.Option("--fps", help="Frames per second of the video.")] = 25.0,
-        duration: Annotated[str | None, typer.Option("--duration", help='Length of the video, e.g. "8 s" '
-                                                     "[default: the run at real speed, kept within 5 to 10 s].")] = None,
+        duration: Annotated[str | None, typer.Option(
+            "--duration", help='Length of the video, e.g. "8 s" [default: the run at real speed, kept within '
+                               "5 to 10 s].")] = None,
         clearance_scale: Annotated[float | None, typer.Option(
             "--clearance-scale", help="Magnification of the clearance joints' eccentricity [default: a round "
                                       "number making the gap about 30 % of the bore radius].")] = None,
@@ -44,9 +45,9 @@ def animate(
             "--force-scale", help='Length of a force arrow per newton, e.g. "1 mm/N" or 0.001 (m per N) '
                                   "[default: a round number making the largest arrow about 15 % of the "
                                   "mechanism].")] = None,
-        channel: Annotated[list[str], typer.Option("--channel", "-c", help="Channel drawn over time beside the "
-                                                   "mechanism (repeatable) [default: the force of the first "
-                                                   "clearance joint, else the first body's angle].")] = [],  # noqa: B006
+        channel: Annotated[list[str], typer.Option(
+            "--channel", "-c", help="Channel drawn over time beside the mechanism (repeatable) [default: the force "
+                                    "of the first clearance joint, else the first body's angle].")] = [],  # noqa: B006
         projection: Annotated[str, typer.Option("--projection", help="Plane a spatial model is drawn on: xy, xz, "
                                                 "yz or iso.")] = "xy",
         size: Annotated[str, typer.Option("--size", help="Frame size in pixels, WIDTHxHEIGHT.")] = "1280x720",

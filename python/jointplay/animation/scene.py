@@ -189,13 +189,12 @@ class Scene:
         each magnification in use."""
         from ..display import format_time
 
-        span = self.end - self.start
-        speed = "real time" if math.isclose(self.time_scale, 1.0, rel_tol=1e-6) else (
-            f"{'slowed' if self.time_scale > 1 else 'sped up'} x {_number(self.time_scale if self.time_scale > 1 else 1 / self.time_scale)}")
-        lines = [f"the mechanism at t = {format_time(self.start)}, scales chosen for "
-                 f"{format_time(self.start)} to {format_time(self.end)}"] if still else \
-            [f"{format_time(span)} of run in {len(self)} frames at {_number(self.fps)} fps ({speed}), "
-                 "channels interpolated linearly between samples"]
+        if still:
+            lines = [f"the mechanism at t = {format_time(self.start)}, scales chosen for "
+                     f"{format_time(self.start)} to {format_time(self.end)}"]
+        else:
+            lines = [f"{format_time(self.end - self.start) or '0 s'} of run in {len(self)} frames at "
+                     f"{_number(self.fps)} fps ({self._speed()}), channels interpolated linearly between samples"]
         scales = []
         if self._clearance_joints():
             scales.append(f"clearance x {_number(self.scales['clearance'])}")
@@ -207,6 +206,16 @@ class Scene:
         if scales:
             lines.append(", ".join(scales))
         return lines
+
+
+    def _speed(self) -> str:
+        """``real time``, ``slowed x 500`` or ``sped up x 10``: the video's pace against the run's."""
+        scale = self.time_scale
+        if not math.isfinite(scale):
+            return "one instant"
+        if math.isclose(scale, 1.0, rel_tol=1e-6):
+            return "real time"
+        return f"slowed x {_number(scale)}" if scale > 1 else f"sped up x {_number(1 / scale)}"
 
 
 def _size(points: np.ndarray) -> float:
