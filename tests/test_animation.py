@@ -170,6 +170,25 @@ def test_modal_body_nodes_at_scale_one_follow_the_files_geometry_and_modal_ampli
     np.testing.assert_allclose(np.array(segments[0]) / renderer.per_metre, expected[[i, j]], rtol=0, atol=1e-12)
 
 
+def test_a_hand_made_modal_body_is_drawn_at_numbers_worked_by_hand():
+    from jointplay.results import Results
+
+    # a plate of two nodes, (0, 0) and (1, 0) m in its frame; one mode moving node 1 along its y by 1 m per unit
+    names = ["plate.x", "plate.y", "plate.angle", "plate.eta1"]
+    values = np.array([[1.0, 1.0], [2.0, 2.0], [np.pi / 2, np.pi / 2], [0.1, 0.1]])
+    results = Results([0.0, 1.0], names, ["m", "m", "rad", "1"], [""] * 4, values, {}, {},
+                      spec={"name": "plate", "ground_points": [], "bodies": [], "beams": [], "joints": [],
+                            "forces": [], "modal_bodies": [{"name": "plate", "interface": [], "points": []}]})
+    results.geometry = {"modal_bodies": {"plate": {"nodes": [[0.0, 0.0], [1.0, 0.0]],
+                                                   "shapes": [[[0.0], [0.0]], [[0.0], [1.0]]], "edges": [[0, 1]]}}}
+    scene = Scene(results, fps=2, duration=1.0, deformation_scale=3.0)
+    # node 1: (1, 0) + 3 x 0.1 x (0, 1) = (1, 0.3) in the frame; turned a quarter: (-0.3, 1); moved by (1, 2)
+    np.testing.assert_allclose(scene.frame(1).meshes["plate"], [[1.0, 2.0], [0.7, 3.0]], rtol=0, atol=1e-15)
+    assert "deformation x 3" in " ".join(scene.notes())
+    # automatic: 5 % of the 1 m the plate spans is less than its 0.1 m of deformation, which is not shrunk
+    assert Scene(results, fps=2, duration=1.0).scales["deformation"] == 1.0
+
+
 def test_results_without_the_mesh_of_a_modal_body_are_refused_by_name():
     import four_bar_flexible_coupler as example
 
