@@ -274,6 +274,18 @@ def test_default_duration_slows_a_short_run_to_five_seconds(dry):
     assert Scene(dry).times.size == 125  # 25 fps x 5 s
 
 
+def test_a_long_channel_is_drawn_as_an_envelope_that_keeps_every_peak():
+    from jointplay.animation.render import envelope
+
+    t = np.linspace(0.0, 1.0, 100_001)
+    values = np.sin(200 * np.pi * t)
+    values[12_345], values[67_890] = 7.0, -3.0  # two spikes one sample wide
+    drawn_t, drawn_values = envelope(t, values, columns=500)
+    assert drawn_t.size == 1000 and np.all(np.diff(drawn_t) > 0)
+    assert 7.0 in drawn_values and -3.0 in drawn_values
+    assert envelope(t[:900], values[:900], columns=500)[0].size == 900  # short: every sample
+
+
 # files ---------------------------------------------------------------------
 
 def test_mp4_webm_and_gif_have_their_frames_and_size_and_png_is_one_still(dry, tmp_path):

@@ -101,7 +101,8 @@ class Renderer:
         cursors = []
         for row, name in enumerate(scene.channels):
             ax = self.figure.add_axes((left, 0.17 + (n - 1 - row) * height + 0.04, 0.97 - left, height - 0.07))
-            ax.plot(results.time[window] / seconds, results[name][window], lw=1, color="tab:blue")
+            t, values = envelope(results.time[window], results[name][window])
+            ax.plot(t / seconds, values, lw=1, color="tab:blue")
             ax.set_ylabel(f"{name} [{results.unit(name)}]", fontsize=8)
             ax.tick_params(labelsize=7)
             ax.grid(alpha=0.25)
@@ -150,6 +151,24 @@ class Renderer:
 
     def close(self) -> None:
         self.figure.clear()
+
+
+#: Columns of a channel's plot beyond which its samples are drawn as the envelope of each column.
+ENVELOPE_COLUMNS = 2000
+
+
+def envelope(time: np.ndarray, values: np.ndarray, columns: int = ENVELOPE_COLUMNS) -> tuple[np.ndarray, np.ndarray]:
+    """The samples to draw of a channel: all of them up to ``2 * columns``, else the smallest and the largest
+    value of each of ``columns`` runs of consecutive samples, in time order (every peak kept, redrawn fast)."""
+    if time.size <= 2 * columns:
+        return time, values
+    runs = np.array_split(np.arange(time.size), columns)
+    picked = []
+    for run in runs:
+        low, high = run[np.argmin(values[run])], run[np.argmax(values[run])]
+        picked += sorted((low, high))
+    picked = np.array(picked)
+    return time[picked], values[picked]
 
 
 def _line_collection(ax):
