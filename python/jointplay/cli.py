@@ -668,6 +668,7 @@ def compare(results: Annotated[list[Path], typer.Argument(help="Results files to
         out.print(f"wrote {path}")
 
 
+from . import cli_animate  # noqa: E402,F401  (registers `jointplay animate`)
 from . import cli_bearing  # noqa: E402,F401  (registers `jointplay bearing`; imports `app` from here)
 from . import cli_static  # noqa: E402,F401  (registers `jointplay static`)
 from . import cli_study  # noqa: E402,F401  (registers `jointplay sweep` and `jointplay optimize`)

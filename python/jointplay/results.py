@@ -224,6 +224,13 @@ class Results:
 
         return write_report(self, path, **options)
 
+    def animate(self, path, **options) -> Path:
+        """Writes an animation of the mechanism to ``path`` (``.mp4``, ``.webm``, ``.gif`` or a ``.png``
+        still); ``options`` as :func:`jointplay.animation.animate` takes them."""
+        from .animation import animate
+
+        return animate(self, path, **options)
+
     def model_toml(self) -> str:
         """The simulated model as model-file TOML, with the run's options as its ``[simulation]`` table."""
         if self.spec is None:
