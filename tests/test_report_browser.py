@@ -126,3 +126,49 @@ def test_the_study_reports_figures_render_offline(report_browser, tmp_path):  # 
     assert {"speed [m/s]", "g [m/s^2]", "final_height [m]", "height [m]"} <= set(titles)
     colorbar = opened.page.eval_on_selector_all(".colorbar .cbtitle", "nodes => nodes.map(n => n.textContent)")
     assert colorbar == ["height [m]", "final_height [m]"]
+
+
+# the reports jointplay writes -----------------------------------------------------------------------------
+
+#: The embedded animations of these tests: small and short, so that the tests stay fast.
+SMALL_ANIMATION = {"fps": 10, "duration": 1.0, "size": (640, 360)}
+
+
+@pytest.fixture(scope="module")
+def written_reports(tmp_path_factory):
+    """A run's report and a comparison's (dry and ideal Flores slider-crank, 5 ms, their real animations) and a
+    study's report (the suite's small throw study), as `write_report` writes them."""
+    from jointplay.report import write_report
+    from jointplay.study import load_study
+
+    from test_report import simulate
+    from test_report_study import DATA
+
+    folder = tmp_path_factory.mktemp("written")
+    dry, ideal = (simulate(name, 5e-3, folder) for name in ("flores_slider_crank_dry", "flores_slider_crank_ideal"))
+    load_study(DATA / "throw_study.toml").run(folder / "study")
+    return {"run": write_report(dry.path, folder / "run.html", animation=SMALL_ANIMATION),
+            "comparison": write_report([dry.path, ideal.path], folder / "comparison.html", animation=SMALL_ANIMATION),
+            "study": write_report(folder / "study", folder / "study.html")}
+
+
+#: Videos each report embeds: the run's animation, one per run compared, none in a study's report.
+VIDEOS = {"run": 1, "comparison": 2, "study": 0}
+
+
+@pytest.mark.parametrize("kind", list(VIDEOS))
+def test_a_written_report_draws_every_plot_and_plays_its_videos_offline(report_browser, written_reports, kind):  # noqa: F811
+    path = written_reports[kind]
+    opened = report_browser.open_report(path)
+    html = path.read_text(encoding="utf-8")
+    assert opened.plots == html.count('class="plotly-graph-div"') > 0  # (the browser waited for each to draw)
+    drawn = opened.page.eval_on_selector_all(".plotly-graph-div", "divs => divs.map(d => d.querySelectorAll("
+                                             "'.scatterlayer .trace path, .barlayer path, .contourlayer path, "
+                                             ".heatmaplayer image').length)")
+    assert all(count > 0 for count in drawn)  # every plot has drawn marks, not only its axes
+    assert len(opened.videos) == VIDEOS[kind]
+    for state in opened.videos:
+        assert state["error"] == 0 and state["readyState"] >= 2
+        assert (state["videoWidth"], state["videoHeight"]) == SMALL_ANIMATION["size"]
+        assert "playError" not in state and state["end"] > state["start"] + 0.1  # it played
+    assert opened.requests == [] and opened.errors == []

@@ -129,6 +129,11 @@ class Scene:
         scales["force"] = force if force is not None else self._auto_force()
         return scales
 
+    @property
+    def has_clearance_joints(self) -> bool:
+        """Whether the model has a clearance joint (drawn magnified, with its force)."""
+        return bool(self._clearance_joints())
+
     def _auto_clearance(self) -> float:
         shares = [CLEARANCE_SHARE * j.get("bearing_radius", j.get("bore_radius")) / j["clearance"]
                   for j in self._clearance_joints()]

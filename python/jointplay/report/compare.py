@@ -9,10 +9,11 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from ..errors import ModelError
 from ..results import Results
 from .blocks import Plot, Section, Table, Text
 from .figures import THINNING, overlay_figure
-from .run import JOINT_UNITS, OPTION_UNITS, run_label
+from .run import JOINT_UNITS, OPTION_UNITS, animation_block, animation_options, run_label
 
 #: Marks a value a run does not have in the comparison tables.
 ABSENT = "–"
@@ -24,11 +25,40 @@ def run_labels(runs: Sequence[Results]) -> list[str]:
     return [f"{label} ({k + 1})" if labels.count(label) > 1 else label for k, label in enumerate(labels)]
 
 
-def compare_sections(runs: Sequence[Results]) -> list[Section]:
-    """Every section of the comparison of ``runs``."""
+def compare_sections(runs: Sequence[Results], *, animation: bool | dict = False) -> list[Section]:
+    """Every section of the comparison of ``runs``; with ``animation`` (True, or a dict of
+    :func:`jointplay.animation.animate`'s options) the runs' animations side by side."""
     labels = run_labels(runs)
-    return [runs_section(runs, labels), differences_section(runs, labels), summary_section(runs, labels),
-            overlay_section(runs, labels)]
+    sections = [runs_section(runs, labels), differences_section(runs, labels), summary_section(runs, labels)]
+    if animation:
+        sections.append(animations_section(runs, labels, animation_options(animation)))
+    return sections + [overlay_section(runs, labels)]
+
+
+def animations_section(runs: Sequence[Results], labels: Sequence[str], options: dict) -> Section:
+    """Each run's animation, side by side, labelled, drawn at one clearance magnification and one force scale
+    (:func:`common_scales`) so that the pictures compare."""
+    options = common_scales(runs, options)
+    return Section("Animations", [animation_block(run, options, label) for run, label in zip(runs, labels)])
+
+
+def common_scales(runs: Sequence[Results], options: dict) -> dict:
+    """``options`` with the clearance and force scales the runs' animations share where ``options`` leave them
+    unset: the smallest of the runs' own automatic scales (of the runs with clearance joints), so that every
+    run's journals and arrows fit. Deformation scales stay each run's own (stated in each picture)."""
+    from ..animation.scene import Scene
+
+    scene_options = {k: v for k, v in options.items() if k not in ("size", "progress")}
+    try:
+        scenes = [Scene(run, **scene_options) for run in runs]
+    except ModelError:
+        return dict(options)  # each animation then says what is wrong with it
+    shared = dict(options)
+    for key in ("clearance", "force"):
+        own = [scene.scales[key] for scene in scenes if scene.has_clearance_joints]
+        if options.get(f"{key}_scale") is None and own:
+            shared[f"{key}_scale"] = min(own)
+    return shared
 
 
 def runs_section(runs: Sequence[Results], labels: Sequence[str]) -> Section:

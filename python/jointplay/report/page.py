@@ -48,7 +48,8 @@ def render_page(title: str, sections: list[Section], path, *, subtitle: str = ""
     environment = Environment(loader=PackageLoader("jointplay.report", "templates"),
                               autoescape=select_autoescape(["html", "j2"]), trim_blocks=True, lstrip_blocks=True)
     counter = _Counter()
-    rendered = [{"title": s.title, "anchor": f"section-{k + 1}", "blocks": [_block(b, counter) for b in s.blocks]}
+    rendered = [{"title": s.title, "anchor": f"section-{k + 1}", "blocks": [_block(b, counter) for b in s.blocks],
+                 "side_by_side": sum(isinstance(b, Video) for b in s.blocks) > 1}
                 for k, s in enumerate(sections)]
     from .. import __version__
 

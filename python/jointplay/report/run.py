@@ -11,7 +11,7 @@ each clearance joint, and so on. The plots draw the saved samples (thinned for t
 from __future__ import annotations
 
 from ..results import Results
-from .blocks import Section, Table, Text
+from .blocks import Section, Table, Text, Video
 from .model import model_sections
 from .plots import plot_sections
 
@@ -33,14 +33,15 @@ def run_label(results: Results) -> str:
     return (results.spec or {}).get("name") or "run"
 
 
-def run_sections(results: Results, *, animation: bool = True, progress=None) -> list[Section]:
-    """Every section of the report of one run; ``animation`` False leaves the animation out. ``progress``
-    (a function of a message) hears of the slow steps."""
+def run_sections(results: Results, *, animation: bool | dict = True, progress=None) -> list[Section]:
+    """Every section of the report of one run; ``animation`` False leaves the animation out, a dict gives
+    its options (:func:`jointplay.animation.animate`'s). ``progress`` (a function of a message) hears of
+    the slow steps."""
     sections = [*model_sections(results.spec, results.geometry), options_section(results), summary_section(results)]
     if animation:
         if progress:
             progress("rendering the animation")
-        sections.append(animation_section(results))
+        sections.append(animation_section(results, animation_options(animation)))
     if progress:
         progress("drawing the plots")
     return sections + plot_sections(results)
@@ -118,16 +119,26 @@ def _scaled(value, factor: float):
     return float(value) * factor
 
 
-def animation_section(results: Results) -> Section:
-    """The animation of the mechanism (:func:`jointplay.animation.video_bytes`, MP4), or why there is none."""
+def animation_options(animation: bool | dict) -> dict:
+    """The options of a report's animation: ``animation`` itself when it is a dict, else the defaults."""
+    return dict(animation) if isinstance(animation, dict) else {}
+
+
+def animation_section(results: Results, options: dict | None = None) -> Section:
+    """The animation of the mechanism (:func:`jointplay.animation.video_bytes`, MP4, with ``options``), or
+    why there is none."""
+    return Section("Animation", [animation_block(results, options)])
+
+
+def animation_block(results: Results, options: dict | None = None, label: str = "") -> Video | Text:
+    """One run's animation as a video block captioned with ``label``, or a text saying why there is none."""
     from ..animation import video_bytes
     from ..errors import ModelError
-    from .blocks import Video
 
     try:
-        data = video_bytes(results, mime="video/mp4")
+        data = video_bytes(results, mime="video/mp4", **(options or {}))
     except ModelError as exc:
-        return Section("Animation", [Text(f"No animation: {exc}")])
-    return Section("Animation", [Video(data, "video/mp4", "The mechanism drawn from the results file at its saved "
-                                       "samples; the magnification of the clearances and deformations and the "
-                                       "scale of the force arrows are stated in the picture.")])
+        return Text(f"No animation{f' of {label}' if label else ''}: {exc}")
+    return Video(data, "video/mp4", f"{label + ': ' if label else ''}the mechanism drawn from the results "
+                 "file at its saved samples; the magnification of the clearances and deformations and the scale "
+                 "of the force arrows are stated in the picture.")

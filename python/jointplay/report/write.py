@@ -17,13 +17,14 @@ from ..errors import ModelError, Problem
 STUDY_FILE = "study.json"
 
 
-def write_report(sources: Any, path, *, title: str | None = None, animation: bool = True,
+def write_report(sources: Any, path, *, title: str | None = None, animation: bool | dict = True,
                  progress: Callable[[str], None] | None = None) -> Path:
     """Writes the report of ``sources`` to ``path`` (an ``.html`` file) and returns its path.
 
     ``sources``: one :class:`~jointplay.Results` or results-file path (a run report), several (a comparison,
     one column per run), or a study folder holding ``study.json`` (a study report). ``title`` replaces the
-    report's title; ``animation`` False leaves the animation of a run out. ``progress`` (a function of a
+    report's title; ``animation`` False leaves the animations of the runs out, a dict gives their options
+    (:func:`jointplay.animation.animate`'s, e.g. ``{"size": (640, 360), "fps": 15}``). ``progress`` (a function of a
     message) hears of the slow steps."""
     items = _as_list(sources)
     out = Path(path)
@@ -98,7 +99,7 @@ def _open(source: Any, say: Callable[[str], None]):
     return open_results(source)
 
 
-def _run_or_comparison(runs: Sequence, animation: bool, say: Callable[[str], None]) -> tuple[str, str, list]:
+def _run_or_comparison(runs: Sequence, animation: bool | dict, say: Callable[[str], None]) -> tuple[str, str, list]:
     """(title, subtitle, sections) of the report of one run or of the comparison of several."""
     if len(runs) == 1:
         from .run import run_label, run_sections
@@ -109,5 +110,5 @@ def _run_or_comparison(runs: Sequence, animation: bool, say: Callable[[str], Non
         return f"Run report: {run_label(run)}", subtitle, run_sections(run, animation=animation, progress=say)
     from .compare import compare_sections, run_labels
 
-    say("comparing the runs")
-    return f"Comparison of {len(runs)} runs", ", ".join(run_labels(runs)), compare_sections(runs)
+    say("comparing the runs" + (" and rendering their animations" if animation else ""))
+    return f"Comparison of {len(runs)} runs", ", ".join(run_labels(runs)), compare_sections(runs, animation=animation)
