@@ -1,6 +1,6 @@
 """Animations: what a frame draws equals the channels at its time (rigid bodies, beam nodes, modal-body
 nodes, journal centres, spatial bodies and spatial clearance joints, each recomputed here from the
-channels and the model), the files read back with their frame count and size, every example animates,
+channels and the model), the files read back with their frame count and size, every example animates (tests/test_examples_reports.py),
 and `jointplay animate` refuses bad input with one line and exit code 2."""
 
 from __future__ import annotations
@@ -330,49 +330,6 @@ def test_bad_options_are_model_errors_naming_each(dry, tmp_path):
     with pytest.raises(ModelError, match="unknown animation format '.avi'"):
         animate(dry, tmp_path / "x.avi")
     assert not list(tmp_path.iterdir())
-
-
-# every example ---------------------------------------------------------------
-
-#: Simulated time of each example's short run [s] (long enough to move, short enough to be quick).
-SHORT_RUNS = {"spin_up_beam": 0.05, "paper002_cylinder_rig": 0.004, "hydraulic_boom": 0.2,
-              "double_parallelogram": 0.2, "parallelogram_four_bar": 0.2, "spatial_slider_crank": 0.2}
-#: Models only the Python examples build, and how.
-PYTHON_MODELS = {"four_bar_flexible_coupler": lambda m: m.build_model(True),
-                 "flores_flexible_rod": lambda m: m.build_model(elements=2),
-                 "paper000_joint_models": lambda m: m.build_model()}
-#: Python examples whose models are those of a TOML example or of PYTHON_MODELS.
-SAME_MODELS = {"paper001_parametric_study", "paper002_cylinder_study"}
-
-
-def example_models():
-    models = [pytest.param(path.stem, id=path.stem) for path in sorted(EXAMPLES.glob("*.toml"))]
-    return models + [pytest.param(name, id=name) for name in PYTHON_MODELS]
-
-
-def test_every_example_model_is_animated_here():
-    tomls = {p.stem for p in EXAMPLES.glob("*.toml")}
-    assert {p.stem for p in EXAMPLES.glob("*.py")} - tomls <= set(PYTHON_MODELS) | SAME_MODELS
-
-
-@pytest.mark.parametrize("name", example_models())
-def test_every_example_animates(name, tmp_path):
-    import importlib
-
-    if name in PYTHON_MODELS:
-        model = PYTHON_MODELS[name](importlib.import_module(name))
-    else:
-        model = jp.load(EXAMPLES / f"{name}.toml")
-    end = SHORT_RUNS.get(name, 0.002)
-    beams = bool(model.to_spec().get("beams"))  # they vibrate fast: the implicit method
-    stiff = {"method": "bdf", "max_order": 2, "stabilization": "baumgarte"} if beams else {}
-    results = model.simulate(end, output_step=end / 10, **stiff)
-    projection = "iso" if results.spec.get("spatial_bodies") else "xy"
-    path = animate(results, tmp_path / f"{name}.mp4", fps=3, duration=1.0, size=SMALL, projection=projection)
-    import imageio_ffmpeg
-
-    reader = imageio_ffmpeg.read_frames(str(path))
-    assert next(reader)["size"] == SMALL and len(list(reader)) == 3
 
 
 # the command ---------------------------------------------------------------------

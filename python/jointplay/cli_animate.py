@@ -144,9 +144,9 @@ def _quantity(text: str | None, option: str, kind: str) -> float | None:
         raise _bad_input(f"{option}: {exc}", []) from None
 
 
-def _size(text: str) -> tuple[int, int]:
+def _size(text: str, option: str = "--size") -> tuple[int, int]:
     """``WIDTHxHEIGHT`` in pixels."""
     width, sep, height = text.lower().partition("x")
     if not (sep and width.strip().isdigit() and height.strip().isdigit()):
-        raise _bad_input(f"--size: must be WIDTHxHEIGHT in pixels, e.g. 1280x720, got {text!r}", [])
+        raise _bad_input(f"{option}: must be WIDTHxHEIGHT in pixels, e.g. 1280x720, got {text!r}", [])
     return int(width), int(height)

@@ -28,7 +28,14 @@ def report(sources: Annotated[list[Path], typer.Argument(help="Results files (on
                                                        "in the study folder].", show_default=False)] = None,
            title: Annotated[str | None, typer.Option("--title", help="Title of the report.")] = None,
            no_animation: Annotated[bool, typer.Option("--no-animation", help="Leave the animation of the "
-                                                      "mechanism out (faster).")] = False) -> None:
+                                                      "mechanism out (faster).")] = False,
+           video_size: Annotated[str | None, typer.Option("--video-size", help="Frame size of the embedded "
+                                                          "animation, WIDTHxHEIGHT [default: 1280x720].")] = None,
+           video_fps: Annotated[float | None, typer.Option("--video-fps", help="Frames per second of the "
+                                                           "embedded animation [default: 25].")] = None,
+           video_duration: Annotated[str | None, typer.Option(
+               "--video-duration", help='Length of the embedded animation, e.g. "5 s" [default: the run at real '
+                                        "speed, kept within 5 to 10 s].")] = None) -> None:
     """Write a self-contained HTML report of a run, a comparison or a study.
 
     One results file gives the report of the run: the model with its
@@ -38,11 +45,15 @@ def report(sources: Annotated[list[Path], typer.Argument(help="Results files (on
     a study folder (from jointplay sweep) the study's report. The file
     works offline: nothing is fetched when it is opened.
     """
+    from .cli_animate import _seconds, _size
     from .report import write_report
 
+    video = {"size": _size(video_size, "--video-size") if video_size else None, "fps": video_fps,
+             "duration": _seconds(video_duration, "--video-duration")}
+    animation = not no_animation and ({k: v for k, v in video.items() if v is not None} or True)
     target = output if output is not None else default_output(sources[0])
     try:
-        written = write_report(sources, target, title=title, animation=not no_animation,
+        written = write_report(sources, target, title=title, animation=animation,
                                progress=lambda message: err.print(f"{message} ...", markup=False, highlight=False))
     except ModelError as exc:  # one line per problem, located at its path
         problems = exc.problems
