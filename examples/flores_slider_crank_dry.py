@@ -10,6 +10,7 @@ m/s, v1 1e-3 m/s. Crank and rod start along x with the journal centred and
 the velocities of the ideal mechanism. Two crank revolutions.
 
 Run: python examples/flores_slider_crank_dry.py [--out DIR] [--revolutions N]
+(with --out: the standard figures, the results file, an animation of the mechanism and its report)
 """
 
 from __future__ import annotations
@@ -87,6 +88,9 @@ def main(argv: list[str] | None = None) -> jp.Results:
         results.save(args.out / "flores_dry.nc")
         for path in plots.standard_figures(results, args.out, crank="crank"):
             print(f"wrote {path}")
+        # the mechanism in motion, and the whole run in one page to hand on (docs/reports.md)
+        print(f"wrote {results.animate(args.out / 'flores_dry.mp4')}")
+        print(f"wrote {results.report(args.out / 'flores_dry.html')}")
     return results
 
 

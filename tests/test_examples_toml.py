@@ -67,10 +67,11 @@ def test_clearance_raises_the_peak_slider_acceleration_over_the_ideal_joint():
     assert peaks["dry"] > 5 * peaks["ideal"]
 
 
-def test_python_example_writes_its_figures(tmp_path):
+def test_python_example_writes_its_figures_animation_and_report(tmp_path):
     spec = importlib.util.spec_from_file_location("flores_dry", ROOT / "examples" / "flores_slider_crank_dry.py")
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     module.main(["--out", str(tmp_path), "--revolutions", "0.5"])
     written = sorted(p.name for p in tmp_path.iterdir())
-    assert written == ["contact_force_B.png", "flores_dry.nc", "orbit_B.png", "time_histories.png"]
+    assert written == ["contact_force_B.png", "flores_dry.html", "flores_dry.mp4", "flores_dry.nc", "orbit_B.png",
+                       "time_histories.png"]

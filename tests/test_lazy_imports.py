@@ -1,5 +1,6 @@
 """`import jointplay` and `jointplay --help` load no heavy library: the unit registry and the
-schemas (pint, pydantic), plots (matplotlib), results files (xarray) and SciPy load on first use.
+schemas (pint, pydantic), plots (matplotlib), results files (xarray), SciPy, and the reports' and
+animations' libraries (plotly, Jinja2, imageio-ffmpeg, Pillow) load on first use.
 
 Each check runs in a fresh interpreter, since this test session has imported everything already.
 """
@@ -12,7 +13,7 @@ import sys
 
 import pytest
 
-HEAVY = ("pint", "pydantic", "matplotlib", "xarray", "scipy")
+HEAVY = ("pint", "pydantic", "matplotlib", "xarray", "scipy", "plotly", "jinja2", "imageio_ffmpeg", "PIL")
 
 
 def loaded_after(code: str) -> list[str]:
@@ -34,7 +35,7 @@ def test_main_help_loads_no_heavy_library():
     assert loaded_after(help_of()) == []
 
 
-@pytest.mark.parametrize("command", ["run", "check", "plot", "compare", "bearing"])
+@pytest.mark.parametrize("command", ["run", "check", "plot", "compare", "bearing", "animate", "report"])
 def test_command_help_loads_only_what_the_option_parser_needs(command):
     # typer coerces option values through pydantic, so a command's help loads it; nothing else
     assert set(loaded_after(help_of(command))) <= {"pydantic"}
