@@ -86,7 +86,9 @@ def indices_of_sample(coded, response, factor_names, source: str = "design", see
         raise ModelError([Problem("sensitivity", f"{int(np.count_nonzero(~np.isfinite(y)))} cases have no "
                                                  "response (failed): the estimator needs every case")])
     problem = {"num_vars": len(names), "names": list(names), "bounds": [[-1.0, 1.0]] * len(names)}
-    found = salib_sobol.analyze(problem, y, calc_second_order=False, num_resamples=RESAMPLES, seed=seed)
+    # (SALib seeds its bootstrap only when `seed` is true, `if seed:`: a seed of 0 would leave the confidence
+    # intervals to numpy's global generator and change them from call to call, hence seed + 1)
+    found = salib_sobol.analyze(problem, y, calc_second_order=False, num_resamples=RESAMPLES, seed=seed + 1)
     return SobolIndices(names, np.asarray(found["S1"]), np.asarray(found["ST"]), np.asarray(found["S1_conf"]),
                         np.asarray(found["ST_conf"]), source, n_base, note)
 
