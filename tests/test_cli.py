@@ -197,3 +197,14 @@ def test_run_with_the_implicit_method_reports_its_jacobians(tmp_path):
     assert "jacobian evaluations" in result.output and "factorizations" in result.output
     dry = invoke("run", DRY, *SHORT, "-o", str(tmp_path / "d.nc"))
     assert dry.exit_code == 0 and "jacobian evaluations" not in dry.output
+
+
+@pytest.mark.parametrize("module", ["jointplay", "jointplay.cli"])
+def test_python_dash_m_knows_the_commands_registered_in_their_own_files(module):
+    import subprocess
+    import sys
+
+    for command in ("report", "animate", "static", "sweep", "bearing"):
+        done = subprocess.run([sys.executable, "-m", module, command, "--help"], capture_output=True, text=True,
+                              timeout=120)
+        assert done.returncode == 0 and f"Usage: python -m {module} {command}" in done.stdout, done.stderr

@@ -681,4 +681,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    # run as `python -m jointplay.cli`, this file is a second module: the command files above registered their
+    # commands on the package's `jointplay.cli.app`, so run that one
+    from jointplay.cli import main as package_main
+
+    package_main()

@@ -1,0 +1,5 @@
+"""``python -m jointplay``: the ``jointplay`` command."""
+
+from jointplay.cli import main
+
+main()
