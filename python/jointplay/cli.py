@@ -23,7 +23,8 @@ from .errors import JointplayWarning, ModelError, SimulationError
 
 EXIT_OK, EXIT_FAILED, EXIT_BAD_INPUT = 0, 1, 2
 
-HELP = """Simulate planar mechanisms with imperfect joints (clearance, contact-impact, friction).
+HELP = """Simulate planar and spatial mechanisms with imperfect joints (clearance, contact-impact, friction,
+lubrication).
 
 A mechanism is described in a TOML model file with units ("0.5 mm", "5000 rpm");
 see docs/model-files.md and the examples/ folder. A typical session:
@@ -34,6 +35,8 @@ see docs/model-files.md and the examples/ folder. A typical session:
     jointplay plot dry.nc -o figures
     jointplay run examples/flores_slider_crank_dry.toml -o small.nc --set joints.B.clearance="0.1 mm"
     jointplay compare dry.nc small.nc -o comparison
+    jointplay animate dry.nc -o dry.mp4
+    jointplay report dry.nc small.nc -o comparison.html
 
 Exit codes: 0 success, 2 bad input (model file, missing file, bad option),
 1 simulation failure (the results computed so far are still saved)."""
