@@ -248,6 +248,20 @@ def test_a_spatial_clearance_joint_shows_the_journal_axis_offset_in_the_bearing_
         offset = np.array([at(results, f"rod_end.e_{rim}_x", t), at(results, f"rod_end.e_{rim}_y", t), 0.0])
         ends.append(centre + rotation @ (np.array([0.0, 0.0, s * joint["bearing_length"]]) + 30.0 * offset))
     np.testing.assert_allclose(drawn(renderer, "journal_axis:rod_end"), np.array(ends)[:, [0, 2]], rtol=0, atol=1e-12)
+    # the circles at both rims: the bore's about the rims' centres, the journal's about the axis' ends; the
+    # largest drawn radius of a circle seen in the xz plane is its radius times the largest singular value of
+    # the plane's view of the bore's cross-section
+    rims = [centre + rotation @ np.array([0.0, 0.0, s * joint["bearing_length"]]) for s in (-0.5, 0.5)]
+    seen = np.linalg.svd(rotation[[0, 2], :2], compute_uv=False)[0]
+    radii = {}
+    for kind, centres in (("bore_rims", rims), ("journal_rims", ends)):
+        rings = np.split(drawn(renderer, f"{kind}:rod_end"), [49, 50])  # two closed rings of 49 points, a NaN row
+        for ring, expected in zip((rings[0], rings[2]), centres, strict=True):
+            np.testing.assert_allclose(ring[:-1].mean(axis=0), expected[[0, 2]], rtol=0, atol=1e-12)
+            radii.setdefault(kind, []).append(np.max(np.linalg.norm(ring - expected[[0, 2]], axis=1)))
+    gap = np.array(radii["bore_rims"]) - np.array(radii["journal_rims"])
+    # (48 points a ring: the sampled largest radius is within 1 - cos(pi / 48) = 2.1e-3 of the ellipse's)
+    np.testing.assert_allclose(gap, 30.0 * joint["clearance"] * seen, rtol=2.2e-3)
 
 
 # scales --------------------------------------------------------------------

@@ -38,8 +38,8 @@ def animate(results, path, *, start: float | None = None, end: float | None = No
     (one), at its pose channels; beams through their nodes; modal bodies as their mesh; ground points
     as triangles; joints as small circles at their first point, a translational joint as a dashed
     guide along its axis; force elements between two points as lines; each clearance joint as its
-    bore and its journal (planar) or the bore's and the journal's axes (spatial), with its force as
-    an arrow. The frames of a GIF are held in memory (one byte a pixel) until it is written.
+    bore and its journal (planar) or the bore's and the journal's axes and their circles at both rims
+    (spatial), with its force as an arrow. The frames of a GIF are held in memory (one byte a pixel) until it is written.
 
     - ``start``, ``end`` [s]: the part of the run shown (default: all of it).
     - ``fps`` [1/s] and ``duration`` [s] of the video: ``round(fps * duration)`` frames at times spread

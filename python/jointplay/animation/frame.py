@@ -39,6 +39,12 @@ class FrameGeometry:
     bore_axes: dict[str, np.ndarray] = field(default_factory=dict)
     #: axis of the journal of each spatial clearance joint at rims A and B, offsets magnified
     journal_axes: dict[str, np.ndarray] = field(default_factory=dict)
+    #: the bore's circles at rims A and B of each spatial clearance joint, projected: two closed polylines
+    #: separated by a row of NaN (the drawn radius, as a planar joint's bore)
+    bore_rims: dict[str, np.ndarray] = field(default_factory=dict)
+    #: the journal's circles at rims A and B, centred on :attr:`journal_axes`' ends, drawn gap
+    #: ``clearance_scale * clearance`` (two closed polylines separated by a row of NaN)
+    journal_rims: dict[str, np.ndarray] = field(default_factory=dict)
     #: force of each clearance joint on its journal: (start (2,), drawn vector (2,) = force_scale * f); planar:
     #: the tip at the contact point on the drawn bore, spatial: the start at the middle of the journal's axis
     arrows: dict[str, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
@@ -46,13 +52,15 @@ class FrameGeometry:
     def points(self) -> np.ndarray:
         """Every drawn point of the frame, (n, 2): what the view must hold."""
         parts = [*self.bodies.values(), *self.beams.values(), *self.meshes.values(), self.ground, self.pins,
-                 *self.guides.values(), *self.forces.values(), *self.bore_axes.values(), *self.journal_axes.values()]
+                 *self.guides.values(), *self.forces.values(), *self.bore_axes.values(), *self.journal_axes.values(),
+                 *self.bore_rims.values(), *self.journal_rims.values()]
         for centre, radius in [*self.bores.values(), *self.journals.values()]:
             parts.append(centre + radius * np.array([[1.0, 1.0], [-1.0, -1.0]]))
         for start, vector in self.arrows.values():
             parts.append(np.vstack([start, start + vector]))
         parts = [np.reshape(p, (-1, 2)) for p in parts if np.size(p)]
-        return np.vstack(parts) if parts else np.zeros((0, 2))
+        points = np.vstack(parts) if parts else np.zeros((0, 2))
+        return points[~np.isnan(points).any(axis=1)]  # (the NaN rows that separate two polylines)
 
 
 def convex_outline(points: np.ndarray) -> np.ndarray:

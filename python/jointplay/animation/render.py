@@ -3,7 +3,8 @@
 The artists are made once and their data replaced at each frame; ``Renderer.artists`` names them
 (``"body:crank"``, ``"beam:rod"``, ``"mesh:coupler"`` (nodes, markers only), ``"bore:B"``,
 ``"journal:B"``, ``"arrow:B"``, ``"force:lift"``, ``"guide:guide"``, ``"pins"``, ``"ground"``,
-``"bore_axis:B"``, ``"journal_axis:B"``), so what is drawn can be read back.
+``"bore_axis:B"``, ``"journal_axis:B"``, ``"bore_rims:B"``, ``"journal_rims:B"``), so what is drawn can be read
+back.
 """
 
 from __future__ import annotations
@@ -84,6 +85,8 @@ class Renderer:
         for name in g.bore_axes:
             a[f"bore_axis:{name}"], = ax.plot([], [], "-", color="0.3", lw=7, alpha=0.35, solid_capstyle="butt")
             a[f"journal_axis:{name}"], = ax.plot([], [], "-", color="tab:red", lw=2)
+            a[f"bore_rims:{name}"], = ax.plot([], [], "-", color="black", lw=1.2)
+            a[f"journal_rims:{name}"], = ax.plot([], [], "-", color="darkred", lw=1.2)
         for name in g.arrows:
             a[f"arrow:{name}"] = ax.add_patch(FancyArrowPatch((0, 0), (0, 0), arrowstyle="-|>", mutation_scale=14,
                                                               color="tab:purple", lw=2, zorder=5))
@@ -124,7 +127,8 @@ class Renderer:
 
         g, a, s = self.scene.frame(k), self.artists, self.per_metre
         for kind, shapes in (("body", g.bodies), ("beam", g.beams), ("mesh", g.meshes), ("force", g.forces),
-                             ("guide", g.guides), ("bore_axis", g.bore_axes), ("journal_axis", g.journal_axes)):
+                             ("guide", g.guides), ("bore_axis", g.bore_axes), ("journal_axis", g.journal_axes),
+                             ("bore_rims", g.bore_rims), ("journal_rims", g.journal_rims)):
             for name, points in shapes.items():
                 a[f"{kind}:{name}"].set_data(points[:, 0] * s, points[:, 1] * s)
         for name, nodes in g.meshes.items():

@@ -12,7 +12,11 @@ from __future__ import annotations
 import numpy as np
 
 from .frame import FrameGeometry, block, convex_outline
+from .planar import drawn_radii
 from .sampling import Sampled
+
+#: Points of a drawn circle (the first repeated at the end).
+CIRCLE_POINTS = 48
 
 #: Rows: the drawing plane's horizontal and vertical axes in global coordinates, per projection.
 #: ``iso`` looks from (1, 1, 1) towards the origin with z up.
@@ -98,8 +102,9 @@ class SpatialModel:
         g.pins = np.array(pins).reshape(-1, 2)
 
     def _clearance(self, k: int, joint: dict, g: FrameGeometry, scales: dict) -> None:
-        """The bore's axis from rim A to rim B, the journal's axis through the rims' offset centres with
-        the offsets magnified by the clearance scale, and the joint's force at the journal's middle."""
+        """The bore's axis from rim A to rim B and its circles there, the journal's axis through the rims'
+        offset centres with the offsets magnified by the clearance scale and its circles there (the drawn gap
+        the clearance times the same scale), and the joint's force at the journal's middle."""
         name, at = joint["name"], self.sampled.at
         centre, axes = self.marker(k, joint["bearing"])
         half = 0.5 * joint["bearing_length"] * axes[:, 2]
@@ -108,5 +113,16 @@ class SpatialModel:
         journal = rims + scales["clearance"] * offsets @ axes[:, :2].T
         g.bore_axes[name] = self.project(rims)
         g.journal_axes[name] = self.project(journal)
+        bore, journal_radius = drawn_radii(joint["bore_radius"], joint["clearance"], scales["clearance"])
+        g.bore_rims[name] = self._circles(rims, bore, axes)
+        g.journal_rims[name] = self._circles(journal, journal_radius, axes)
         force = np.array([at(k, f"{name}.f{c}") for c in "xyz"])
         g.arrows[name] = (self.project(journal.mean(axis=0)), scales["force"] * self.project(force))
+
+    def _circles(self, centres: np.ndarray, radius: float, axes: np.ndarray) -> np.ndarray:
+        """Circles of ``radius`` [m] about each of ``centres`` (global), in the plane of the bearing marker's x
+        and y ``axes`` (columns), projected; one closed polyline each, separated by a row of NaN."""
+        angles = np.linspace(0.0, 2.0 * np.pi, CIRCLE_POINTS + 1)
+        ring = radius * (np.outer(np.cos(angles), axes[:, 0]) + np.outer(np.sin(angles), axes[:, 1]))
+        gap = np.full((1, 2), np.nan)
+        return np.vstack([part for centre in centres for part in (self.project(centre + ring), gap)][:-1])
