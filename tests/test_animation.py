@@ -346,6 +346,19 @@ def test_bad_options_are_model_errors_naming_each(dry, tmp_path):
     assert not list(tmp_path.iterdir())
 
 
+def test_requests_that_would_run_for_hours_or_exhaust_memory_are_refused_at_once(dry, tmp_path):
+    from jointplay.animation.scene import MAX_FRAMES
+
+    with pytest.raises(ModelError, match=f"3600000 frames; at most {MAX_FRAMES}") as caught:
+        animate(dry, tmp_path / "x.mp4", fps=1000, duration=3600.0)
+    assert [p.location for p in caught.value.problems] == ["duration"]
+    with pytest.raises(ModelError, match="GIF of 25000 frames of 1920 x 1080 is held in memory") as caught:
+        animate(dry, tmp_path / "x.gif", fps=25, duration=1000.0, size=(1920, 1080))
+    with pytest.raises(ModelError, match="at most 7680 x 4320 pixels, got 100000 x 1000"):
+        animate(dry, tmp_path / "x.mp4", size=(100_000, 1000))
+    assert not list(tmp_path.iterdir())
+
+
 # the command ---------------------------------------------------------------------
 
 def invoke(*args: str):

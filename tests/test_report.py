@@ -487,6 +487,14 @@ def test_cli_bad_input_is_one_line_with_exit_2(arguments, message, tmp_path, mon
     assert "Traceback" not in result.output
 
 
+def test_cli_refuses_a_bad_video_option_by_its_name_and_writes_nothing(dry, tmp_path):
+    out = tmp_path / "long.html"
+    result = invoke("report", str(dry.path), "-o", str(out), "--video-fps", "1000", "--video-duration", "1 h")
+    assert result.exit_code == 2 and "Traceback" not in result.output
+    assert "error: --video-duration: 1000 frames a second for 3600 s make 3600000 frames" in result.stderr
+    assert not out.exists()
+
+
 def test_cli_refuses_an_output_that_is_not_html(dry):
     result = invoke("report", str(dry.path), "-o", str(dry.path.with_suffix(".pdf")), "--no-animation")
     assert result.exit_code == 2

@@ -16,6 +16,8 @@ import typer
 from .cli import _bad_input, app, err, out
 from .errors import ModelError
 
+#: The options of the embedded animation, by the name the animation's problems give them.
+_VIDEO_OPTIONS = {"size": "--video-size", "fps": "--video-fps", "duration": "--video-duration"}
 #: The report's file name when ``-o`` is not given.
 DEFAULT_NAME = "report.html"
 
@@ -55,8 +57,9 @@ def report(sources: Annotated[list[Path], typer.Argument(help="Results files (on
     try:
         written = write_report(sources, target, title=title, animation=animation,
                                progress=lambda message: err.print(f"{message} ...", markup=False, highlight=False))
-    except ModelError as exc:  # one line per problem, located at its path
-        problems = exc.problems
+    except ModelError as exc:  # one line per problem, located at its path or the option
+        problems = [f"{_VIDEO_OPTIONS[p.location]}: {p.message}" if p.location in _VIDEO_OPTIONS else p
+                    for p in exc.problems]
         if len(problems) == 1:
             raise _bad_input(str(problems[0]), []) from None
         raise _bad_input(f"{len(problems)} problems", problems) from None

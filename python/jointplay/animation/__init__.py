@@ -22,6 +22,10 @@ __all__ = ["animate", "video_bytes", "FORMATS"]
 
 #: Smallest frame, pixels (width, height): below it the text does not fit.
 SMALLEST_SIZE = (160, 120)
+#: Largest frame, pixels (width, height): 8K UHD.
+LARGEST_SIZE = (7680, 4320)
+#: Most memory the frames of a GIF may take before it is written [bytes] (one byte a pixel).
+GIF_MAX_BYTES = 2**30
 
 
 def animate(results, path, *, start: float | None = None, end: float | None = None, fps: float = 25,
@@ -76,6 +80,10 @@ def animate(results, path, *, start: float | None = None, end: float | None = No
     scene = Scene(results, start=start, end=end, fps=fps, duration=duration, clearance_scale=clearance_scale,
                   deformation_scale=deformation_scale, force_scale=force_scale, channels=channels,
                   projection=projection)
+    if path.suffix.lower() == ".gif" and len(scene) * size[0] * size[1] > GIF_MAX_BYTES:
+        raise ModelError([("size", f"a GIF of {len(scene)} frames of {size[0]} x {size[1]} is held in memory until "
+                                   f"written, {len(scene) * size[0] * size[1] / 2**30:.1f} GiB, more than "
+                                   f"{GIF_MAX_BYTES / 2**30:g} GiB: write .mp4, or fewer or smaller frames")])
     renderer = Renderer(scene, size, still=path.suffix.lower() == ".png")
     try:
         from .encode import write_frames
@@ -114,5 +122,8 @@ def _even_size(size) -> tuple[int, int]:
         raise ModelError([("size", f"must be (width, height) in pixels, got {size!r}")]) from None
     if width < SMALLEST_SIZE[0] or height < SMALLEST_SIZE[1]:
         raise ModelError([("size", f"must be at least {SMALLEST_SIZE[0]} x {SMALLEST_SIZE[1]} pixels, "
+                                   f"got {width} x {height}")])
+    if width > LARGEST_SIZE[0] or height > LARGEST_SIZE[1]:
+        raise ModelError([("size", f"must be at most {LARGEST_SIZE[0]} x {LARGEST_SIZE[1]} pixels, "
                                    f"got {width} x {height}")])
     return width + width % 2, height + height % 2

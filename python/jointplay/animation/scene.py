@@ -247,13 +247,21 @@ def _length(metres: float) -> str:
     return f"{metres * 1e3:.3g} mm"
 
 
+#: Most frames of one animation: 24 minutes at 25 frames a second (each frame is drawn, about 50 ms).
+MAX_FRAMES = 36_000
+
+
 def _check_options(spatial: bool, fps: float, duration: float | None, projection: str, scales: dict) -> None:
     """A ModelError listing every bad option value."""
     problems = []
-    if not (isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0):
+    fps_ok = isinstance(fps, (int, float)) and math.isfinite(fps) and fps > 0
+    if not fps_ok:
         problems.append(("fps", f"must be a number of frames per second > 0, got {fps!r}"))
     if duration is not None and not (math.isfinite(duration) and duration > 0):
         problems.append(("duration", f"must be a video length > 0 s, got {duration!r}"))
+    elif duration is not None and fps_ok and fps * duration > MAX_FRAMES:
+        problems.append(("duration", f"{fps:g} frames a second for {duration:g} s make {fps * duration:.0f} "
+                                     f"frames; at most {MAX_FRAMES} (shorten the video or lower the rate)"))
     for key, value in scales.items():
         if value is not None and not (math.isfinite(value) and value > 0):
             problems.append((key, f"must be > 0, got {value!r}"))

@@ -138,6 +138,8 @@ def animation_block(results: Results, options: dict | None = None, label: str = 
     try:
         data = video_bytes(results, mime="video/mp4", **(options or {}))
     except ModelError as exc:
+        if any(problem.location in (options or {}) for problem in exc.problems):
+            raise  # a bad option of the caller's: said, not written into the report
         return Text(f"No animation{f' of {label}' if label else ''}: {exc}")
     return Video(data, "video/mp4", f"{label + ': ' if label else ''}the mechanism drawn from the results "
                  "file at its saved samples; the magnification of the clearances and deformations and the scale "
