@@ -346,6 +346,30 @@ def test_bad_options_are_model_errors_naming_each(dry, tmp_path):
     assert not list(tmp_path.iterdir())
 
 
+def test_the_encoded_video_shows_the_crank_where_its_channels_put_it(dry, tmp_path):
+    """Past the artists: in each decoded frame of the MP4, the pixel where the crank's centre of mass falls (from
+    its channels, through the axes' data-to-pixel transform) has the bodies' colour, and the pixel well off the
+    mechanism, the background's."""
+    import imageio_ffmpeg
+
+    path = animate(dry, tmp_path / "crank.mp4", fps=5, duration=1.0, size=SMALL)
+    reader = imageio_ffmpeg.read_frames(str(path))
+    width, height = next(reader)["size"]
+    frames = [np.frombuffer(f, np.uint8).reshape(height, width, 3) for f in reader]
+    renderer = Renderer(Scene(dry, fps=5, duration=1.0), SMALL)
+    body = 0.85 * np.array([31, 119, 180]) + 0.15 * 255  # tab:blue at alpha 0.85 on white
+    assert len(frames) == 5
+    for k, image in enumerate(frames):
+        renderer.draw(k)
+        renderer.canvas.draw()
+        t = renderer.scene.times[k]
+        centre = np.array([at(dry, "crank.x", t), at(dry, "crank.y", t)]) * renderer.per_metre
+        column, row = renderer.ax.transData.transform(centre)
+        np.testing.assert_allclose(image[int(round(height - row)), int(round(column))], body, atol=30)
+        corner = renderer.ax.transAxes.transform((0.02, 0.98))  # the mechanism's axes, top left: empty
+        np.testing.assert_allclose(image[int(round(height - corner[1])), int(round(corner[0]))], 255, atol=12)
+
+
 def test_requests_that_would_run_for_hours_or_exhaust_memory_are_refused_at_once(dry, tmp_path):
     from jointplay.animation.scene import MAX_FRAMES
 
