@@ -6,7 +6,7 @@
 //! what the Flores papers use, not a line-contact result.
 //! Theory page: `docs/theory/stiffness-hertz-cylinder.md`.
 
-use super::power_law::PowerLaw;
+use super::power_law::{PowerLaw, PowerLawStiffness};
 use super::material::{effective_modulus, radial_clearance, Material};
 
 /// Power-law contact stiffness `F = K δ^n`.
@@ -36,27 +36,11 @@ impl HertzCylinder {
         let stiffness = 4.0 / 3.0 * effective_modulus(&bearing, &journal) * radius.sqrt();
         Ok(Self { law: PowerLaw { stiffness, exponent } })
     }
+}
 
-    /// Generalised stiffness K [N/m^n].
-    pub fn stiffness(&self) -> f64 {
-        self.law.stiffness
-    }
-
-    /// Exponent n [-].
-    pub fn exponent(&self) -> f64 {
-        self.law.exponent
-    }
-
-    /// Elastic force K δ^n [N] for penetration δ [m] (0 for δ <= 0).
-    #[inline]
-    pub fn elastic_force(&self, penetration: f64) -> f64 {
-        self.law.elastic_force(penetration)
-    }
-
-    /// Stored energy K δ^(n+1)/(n+1) [J] for penetration δ [m] (0 for δ <= 0).
-    #[inline]
-    pub fn elastic_energy(&self, penetration: f64) -> f64 {
-        self.law.elastic_energy(penetration)
+impl PowerLawStiffness for HertzCylinder {
+    fn power_law(&self) -> &PowerLaw {
+        &self.law
     }
 }
 

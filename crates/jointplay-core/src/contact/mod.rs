@@ -31,6 +31,7 @@ pub use johnson_line::JohnsonLine;
 pub use material::Material;
 pub(crate) use material::effective_modulus;
 pub use pereira_ramalho_ambrosio::PereiraRamalhoAmbrosio;
+pub use power_law::{PowerLaw, PowerLawStiffness};
 pub use rogers_andrews::RogersAndrews;
 
 use crate::spec::{ranges, Range};

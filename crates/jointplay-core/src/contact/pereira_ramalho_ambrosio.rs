@@ -22,7 +22,7 @@
 //! in both (the test checks it), which fixes the units.
 //! Theory page: `docs/theory/stiffness-pereira-ramalho-ambrosio.md`.
 
-use super::power_law::PowerLaw;
+use super::power_law::{PowerLaw, PowerLawStiffness};
 use super::material::{checked_length, effective_modulus, radial_clearance, Material};
 
 /// Millimetres per metre: the fit's length unit.
@@ -56,7 +56,8 @@ fn exponent(clearance_mm: f64) -> f64 {
     exponent_coefficient(clearance_mm) * clearance_mm.powf(CLEARANCE_EXPONENT)
 }
 
-/// Pereira-Ramalho-Ambrósio (2011) internal cylinder contact: `F = K δ^n`.
+/// Pereira-Ramalho-Ambrósio (2011) internal cylinder contact: `F = K δ^n`,
+/// the exponent n between 1.15 and 1.45 over the fit's range.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PereiraRamalhoAmbrosio {
     law: PowerLaw,
@@ -89,27 +90,11 @@ impl PereiraRamalhoAmbrosio {
         let stiffness_mm = (SLOPE * clearance_mm + OFFSET_MM) / clearance_mm * length_mm * modulus_mpa;
         Ok(Self { law: PowerLaw { stiffness: stiffness_mm * MM_PER_M.powf(exponent), exponent } })
     }
+}
 
-    /// Generalised stiffness K [N/m^n].
-    pub fn stiffness(&self) -> f64 {
-        self.law.stiffness
-    }
-
-    /// Exponent n [-], between 1.15 and 1.45 over the fit's range.
-    pub fn exponent(&self) -> f64 {
-        self.law.exponent
-    }
-
-    /// Elastic force K δ^n [N] for penetration δ [m] (0 for δ <= 0).
-    #[inline]
-    pub fn elastic_force(&self, penetration: f64) -> f64 {
-        self.law.elastic_force(penetration)
-    }
-
-    /// Stored energy K δ^(n+1)/(n+1) [J] for penetration δ [m] (0 for δ <= 0).
-    #[inline]
-    pub fn elastic_energy(&self, penetration: f64) -> f64 {
-        self.law.elastic_energy(penetration)
+impl PowerLawStiffness for PereiraRamalhoAmbrosio {
+    fn power_law(&self) -> &PowerLaw {
+        &self.law
     }
 }
 

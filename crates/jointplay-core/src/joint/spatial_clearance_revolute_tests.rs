@@ -1,5 +1,5 @@
 use super::*;
-use crate::contact::{HertzCylinder, Material};
+use crate::contact::{HertzCylinder, Material, PowerLawStiffness};
 use crate::friction::StictionFriction;
 use crate::joint::{JointDimensions, ModeThresholds};
 use crate::kinematics::marker::{BodyIndex, Site};
